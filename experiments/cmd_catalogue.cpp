@@ -1,0 +1,48 @@
+// `scalcal catalogue [--json]`: every named program with its source and criteria.
+#include <cstdio>
+#include <iostream>
+
+#include "experiments/command.hpp"
+#include "experiments/evaluation_report.hpp"
+#include "numeric/catalogue.hpp"
+
+namespace scalcal::cli {
+namespace {
+
+int run(Args& args) {
+  const bool json = args.flag("json");
+  if (!args.positionals().empty()) throw UsageError("catalogue takes no positional arguments");
+  const auto entries = catalogue();
+  if (json) {
+    Json all = Json::array();
+    for (const auto& e : entries) {
+      Json j = Json::object();
+      j.set("name", e.name).set("description", e.description).set("source", e.source);
+      Json ev = evaluation_json(evaluate(e.program));
+      j.set("evaluation", ev);
+      all.push(j);
+    }
+    all.dump(std::cout);
+    std::cout << "\n";
+    return 0;
+  }
+  std::printf("%-16s %3s %4s %14s %9s %9s %9s %7s %7s %7s  %s\n", "program", "N", "rank", "D=N^9detK", "A", "E",
+              "S", "th_b", "th_dk", "th_g", "source");
+  for (const auto& e : entries) {
+    const Evaluation ev = evaluate(e.program);
+    if (!ev.full_rank()) {
+      std::printf("%-16s %3d %4d  %s  %s\n", e.name.c_str(), ev.positions, ev.rank, rank_deficiency(ev).c_str(),
+                  e.source.c_str());
+      continue;
+    }
+    std::printf("%-16s %3d %4d %14.6g %9.4f %9.4f %9.4f %7.4f %7.4f %7.4f  %s\n", e.name.c_str(), ev.positions,
+                ev.rank, ev.D, ev.A, ev.E, ev.S, ev.theta_bias, ev.theta_scale, ev.theta_nonorth, e.source.c_str());
+  }
+  return 0;
+}
+
+const Registration reg({"catalogue", "catalogue [--json]",
+                        "every named program of the paper with its source and criteria", 5, run});
+
+}  // namespace
+}  // namespace scalcal::cli

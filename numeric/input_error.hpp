@@ -1,0 +1,31 @@
+// Errors in user input (files, options): they carry the file and line so the CLI can print
+// "file:line: reason" and exit 2. Bugs are assertions, not InputErrors.
+#pragma once
+#include <stdexcept>
+#include <string>
+
+namespace scalcal {
+
+class InputError : public std::runtime_error {
+ public:
+  InputError(std::string file, int line, std::string reason)
+      : std::runtime_error(format(file, line, reason)),
+        file_(std::move(file)), line_(line), reason_(std::move(reason)) {}
+
+  const std::string& file() const { return file_; }
+  int line() const { return line_; }  // 0 when the error is not tied to one line
+  const std::string& reason() const { return reason_; }
+
+ private:
+  static std::string format(const std::string& file, int line, const std::string& reason) {
+    std::string s = file.empty() ? std::string("input") : file;
+    if (line > 0) s.append(":").append(std::to_string(line));
+    s.append(": ").append(reason);
+    return s;
+  }
+  std::string file_;
+  int line_;
+  std::string reason_;
+};
+
+}  // namespace scalcal
