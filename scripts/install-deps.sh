@@ -1,0 +1,20 @@
+#!/usr/bin/env bash
+# Installs the Debian packages scalcal needs, only those missing (as root; no other network).
+set -euo pipefail
+packages=(cmake g++ make pkg-config libeigen3-dev libboost-dev libboost-iostreams-dev
+  libboost-system-dev libboost-filesystem-dev libginac-dev libcln-dev coinor-libipopt-dev
+  libgnuplot-iostream-dev gnuplot-nox libgtest-dev libbenchmark-dev libmpfr-dev libgmp-dev
+  python3-numpy python3-scipy)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then exit 0; fi
+echo "scalcal: installing missing packages: ${missing[*]}" >&2
+if [ "$(id -u)" -ne 0 ]; then
+  echo "scalcal: run as root (or install these packages first): ${missing[*]}" >&2
+  exit 2
+fi
+export DEBIAN_FRONTEND=noninteractive
+apt-get update -qq
+apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null

@@ -1,0 +1,54 @@
+// Runs the scalcal binary as a user would, capturing exit status, stdout and stderr.
+#pragma once
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace scalcal::testing {
+
+struct CliResult {
+  int status = -1;
+  std::string out, err;
+};
+
+inline std::string slurp(const std::string& path) {
+  std::ifstream in(path);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+inline std::filesystem::path scratch_dir() {
+  static const std::filesystem::path dir = [] {
+    auto d = std::filesystem::temp_directory_path() / ("scalcal_cli_test_" + std::to_string(getpid()));
+    std::filesystem::create_directories(d);
+    return d;
+  }();
+  return dir;
+}
+
+inline std::string write_file(const std::string& name, const std::string& content) {
+  const auto path = scratch_dir() / name;
+  std::ofstream(path, std::ios::binary) << content;
+  return path.string();
+}
+
+inline CliResult run_cli(const std::string& args) {
+  static int counter = 0;
+  const auto base = scratch_dir() / ("run" + std::to_string(counter++));
+  const std::string cmd = std::string(SCALCAL_CLI) + " " + args + " >" + base.string() + ".out 2>" +
+                          base.string() + ".err </dev/null";
+  const int raw = std::system(cmd.c_str());
+  CliResult r;
+  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  r.out = slurp(base.string() + ".out");
+  r.err = slurp(base.string() + ".err");
+  return r;
+}
+
+}  // namespace scalcal::testing
