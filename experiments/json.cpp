@@ -57,14 +57,6 @@ void newline(std::ostream& out, int indent, int depth) {
   out << '\n' << std::string(static_cast<std::size_t>(indent * depth), ' ');
 }
 
-// An array of plain numbers stays on one line: programs print as rows of [x, y, z].
-bool is_flat(const Json::Array& a, const std::vector<bool>& scalar) {
-  (void)a;
-  for (bool s : scalar)
-    if (!s) return false;
-  return true;
-}
-
 }  // namespace
 
 void Json::write(std::ostream& out, int indent, int depth) const {
@@ -85,10 +77,10 @@ void Json::write(std::ostream& out, int indent, int depth) const {
   } else if (auto s = std::get_if<std::string>(&v_)) {
     write_string(out, *s);
   } else if (auto a = std::get_if<Array>(&v_)) {
-    std::vector<bool> scalar;
+    // An array of scalars stays on one line: programs print as rows of [x, y, z].
+    bool flat = true;
     for (const auto& e : *a)
-      scalar.push_back(!std::holds_alternative<Array>(e.v_) && !std::holds_alternative<Object>(e.v_));
-    const bool flat = is_flat(*a, scalar);
+      if (std::holds_alternative<Array>(e.v_) || std::holds_alternative<Object>(e.v_)) flat = false;
     out << '[';
     for (std::size_t k = 0; k < a->size(); ++k) {
       if (k) out << (flat ? ", " : ",");

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "run_cli.hpp"
 
@@ -75,6 +76,20 @@ TEST(EvaluateCli, RankDeficientMessageNamesTheParameters) {
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("rank 6 of 9"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("nonorth_xy, nonorth_yz, nonorth_zx"), std::string::npos) << r.err;
+}
+
+// Nearly planar: z = +-1e-3 makes the z^2 column ~1e-6, so H^T H has condition ~1e12. The program
+// is still evaluated, with a warning naming the poorly determined parameters.
+TEST(EvaluateCli, IllConditionedProgramIsExplained) {
+  std::string rows = "x,y,z\n";
+  for (int j = 0; j < 12; ++j)
+    rows += std::to_string(std::cos(0.5 * j)) + "," + std::to_string(std::sin(0.5 * j)) + "," +
+            (j % 3 == 0 ? "0.001" : j % 3 == 1 ? "-0.001" : "0.0005") + "\n";
+  const auto path = write_file("flat.csv", rows);
+  const auto r = run_cli("evaluate " + path);
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("ill-conditioned"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("scale_z"), std::string::npos) << r.err;
 }
 
 TEST(EvaluateCli, MissingFileAndUsageErrors) {
