@@ -65,6 +65,20 @@ double json_number(const std::string& json, const std::string& key) {
 
 constexpr double kG = 9.80665;
 
+// Leaves no files behind in the temporary folder.
+class RemoveTemporaries : public ::testing::Environment {
+ public:
+  void TearDown() override {
+    const std::string prefix = "scalcal_calibration_";
+    const std::string pid = std::to_string(::getpid());
+    for (const auto& e : fs::directory_iterator(fs::temp_directory_path())) {
+      const std::string name = e.path().filename().string();
+      if (name.rfind(prefix, 0) == 0 && name.find(pid) != std::string::npos) fs::remove_all(e.path());
+    }
+  }
+};
+const auto* const kCleanup = ::testing::AddGlobalTestEnvironment(new RemoveTemporaries);
+
 // 18 positions x `samples` rows, position ids deliberately interleaved (row order round-robin),
 // so that grouping by the `position` column is really exercised.
 std::string bench_csv(const TrueMeter& m, double sigma, int samples, std::uint64_t seed) {
