@@ -38,6 +38,9 @@ Json result_json(const MonteCarloResult& r, Modulus m) {
     p.set("mean", r.mean(k));
     p.set("bias", r.mean(k) - r.truth(k));
     p.set("bias_in_std_errors", (r.mean(k) - r.truth(k)) / se_mean);
+    p.set("noise_free", r.noise_free(k));
+    p.set("linearisation_error", r.noise_free(k) - r.truth(k));
+    p.set("noise_bias_in_std_errors", (r.mean(k) - r.noise_free(k)) / se_mean);
     p.set("empirical_std", std::sqrt(r.empirical_cov(k, k)));
     p.set("theoretical_std", th);
     p.set("std_ratio", std::sqrt(r.empirical_cov(k, k)) / th);
@@ -60,14 +63,15 @@ Json result_json(const MonteCarloResult& r, Modulus m) {
 void print_result(std::ostream& out, const MonteCarloResult& r, Modulus m) {
   out << "\nmodulus " << modulus_name(m) << ": " << r.converged << " converged trials, "
       << std::setprecision(3) << r.mean_iterations << " iterations on average\n";
-  out << "  parameter        truth         bias   bias/se   emp. std  theor. std   ratio\n";
+  out << "  parameter        truth         bias   bias/se  lin. error   emp. std  theor. std   ratio\n";
   for (int k = 0; k < 9; ++k) {
     const double th = std::sqrt(r.theoretical_cov(k, k));
     const double emp = std::sqrt(r.empirical_cov(k, k));
     const double se_mean = emp / std::sqrt(std::max(1, r.converged));
     out << "  " << std::left << std::setw(11) << kParameterNames[k] << std::right << std::setprecision(4)
         << std::setw(12) << r.truth(k) << std::setw(13) << r.mean(k) - r.truth(k) << std::setw(10)
-        << std::setprecision(2) << (r.mean(k) - r.truth(k)) / se_mean << std::setprecision(4) << std::setw(11) << emp
+        << std::setprecision(2) << (r.mean(k) - r.truth(k)) / se_mean << std::setprecision(4) << std::setw(12)
+        << r.noise_free(k) - r.truth(k) << std::setw(11) << emp
         << std::setw(12) << th << std::setw(8) << std::setprecision(3) << emp / th << "\n";
   }
   out << "  theta (sqrt(N max var)/sigma)  empirical / theoretical:";

@@ -52,6 +52,10 @@ MonteCarloResult run_monte_carlo(const MonteCarloOptions& o, const std::function
   GaussianSource rng(o.seed);
   CalibrationOptions co;
   co.modulus = o.modulus;
+  {
+    GaussianSource unused(0);
+    r.noise_free = calibrate(simulate_measurements(meter, o.program, 0.0, 0.0, 1, unused), co).X;
+  }
   std::vector<Vec9> estimates;
   double noise_ratio = 0, iterations = 0;
   for (int t = 0; t < o.trials; ++t) {

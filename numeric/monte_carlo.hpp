@@ -25,6 +25,9 @@ struct MonteCarloOptions {
 struct MonteCarloResult {
   Vec9 truth;                 // X of the simulated meter (gamma = phi_kj + phi_jk)
   Vec9 mean;                  // mean estimate over the converged trials
+  // The estimate from noise-free data without bench errors: truth + the error of the first-order
+  // model itself (second order in the meter's errors), the value the noisy estimates scatter about.
+  Vec9 noise_free;
   Mat9 empirical_cov;         // covariance of the estimates about their mean
   Mat9 theoretical_cov;       // sigma^2 K / samples
   Vec3 theta_empirical;       // sqrt(N max_r var_r) / sigma per group (bias, scale, nonorth)
