@@ -1,0 +1,38 @@
+// Exact criteria of a moment matrix M = H^T H (or sum w h h^T) of N positions: N^9 det K,
+// N trace K, N lambda_max K, N max K(r,r) and the thetas, with K = M^-1 inverted block by
+// block (the connected components of M's sparsity pattern), so symmetric programs stay cheap.
+#pragma once
+#include <string>
+#include <vector>
+
+#include <ginac/ginac.h>
+
+namespace scalcal::symbolic {
+
+// A criterion that is the largest of a few closed forms. When the closed forms hold free
+// parameters, their order is unknown and the value is reported as max(c1, c2, ...).
+struct ExactValue {
+  std::vector<GiNaC::ex> candidates;
+  bool exact = true;  // false: the candidates are floating-point values (an eigenvalue had no closed form)
+
+  bool resolved() const;           // every candidate evaluates to a real number
+  GiNaC::ex value() const;         // the largest candidate; requires resolved()
+  double number() const;           // value() as a double; NaN when not resolved
+  std::string str() const;         // "c" or "max(c1, c2, ...)"
+};
+
+struct ExactCriteria {
+  GiNaC::ex N;
+  ExactValue D, A, E, S;
+  ExactValue theta_bias, theta_scale, theta_nonorth;
+  std::vector<GiNaC::ex> eigenvalues;  // of M (one per eigenvalue with multiplicity) when exact
+  std::vector<GiNaC::ex> K_diagonal;    // K(r, r), r = 0..8
+};
+
+// Throws std::invalid_argument when M is singular (a block has zero determinant).
+ExactCriteria exact_criteria(const GiNaC::matrix& M, const GiNaC::ex& N);
+
+// The components of M's sparsity pattern (index sets, each ascending).
+std::vector<std::vector<int>> blocks(const GiNaC::matrix& M);
+
+}  // namespace scalcal::symbolic

@@ -1,0 +1,81 @@
+// Exact moment matrices. Rationalising denominators matters because jig coordinates such as
+// 1/sqrt(1 + phi^2) leave sqrt(5) in denominators, where normal() alone cannot see that two
+// forms are equal.
+#include "symbolic/exact.hpp"
+
+namespace scalcal::symbolic {
+
+using GiNaC::ex;
+using GiNaC::matrix;
+
+matrix design_row(const Point& eta) {
+  const ex& x = eta[0];
+  const ex& y = eta[1];
+  const ex& z = eta[2];
+  return matrix(9, 1, GiNaC::lst{x, y, z, x * x, y * y, z * z, x * y, y * z, z * x});
+}
+
+namespace {
+
+// The first square root of a number (power(p, 1/2) or power(p, -1/2) with p a positive
+// rational, or such a power of a sum) found in e, or 0 when there is none.
+ex find_radical(const ex& e) {
+  if (GiNaC::is_a<GiNaC::power>(e)) {
+    const ex expo = e.op(1);
+    if (GiNaC::is_a<GiNaC::numeric>(expo) && !GiNaC::ex_to<GiNaC::numeric>(expo).is_integer() &&
+        (GiNaC::ex_to<GiNaC::numeric>(expo) * 2).is_integer() && GiNaC::is_a<GiNaC::numeric>(e.op(0)))
+      return GiNaC::sqrt(e.op(0));
+  }
+  for (std::size_t i = 0; i < e.nops(); ++i) {
+    ex r = find_radical(e.op(i));
+    if (!r.is_zero()) return r;
+  }
+  return 0;
+}
+
+}  // namespace
+
+ex canonical(const ex& e) {
+  // sin^2 = 1 - cos^2 makes polynomials in the cosine and sine of one angle canonical (the
+  // rotation family's ring sums hold cos(n phase) and sin(n phase)).
+  const ex w0 = GiNaC::wild(0);
+  const ex reduced = GiNaC::expand(e).subs(GiNaC::pow(GiNaC::sin(w0), 2) == 1 - GiNaC::pow(GiNaC::cos(w0), 2),
+                                           GiNaC::subs_options::algebraic);
+  ex nd = GiNaC::normal(GiNaC::expand(reduced)).numer_denom();
+  ex num = GiNaC::expand(nd.op(0));
+  ex den = GiNaC::expand(nd.op(1));
+  // Multiply by conjugates until the denominator holds no square root of a number; each pass
+  // removes one radical r (den = A + B r with A, B free of r, as r^2 is rational).
+  for (int pass = 0; pass < 16; ++pass) {
+    const ex r = find_radical(den);
+    if (r.is_zero()) break;
+    const GiNaC::symbol s("r");
+    const ex d = GiNaC::expand(den.subs(r == s).subs(GiNaC::pow(s, -1) == s / GiNaC::pow(r, 2)));
+    const ex A = d.coeff(s, 0), B = d.coeff(s, 1);
+    if (d.degree(s) > 1 || d.ldegree(s) < 0) break;  // not linear in r: leave it
+    const ex conj = A - B * r;
+    num = GiNaC::expand(num * conj);
+    den = GiNaC::expand(den * conj);
+  }
+  if (den.is_equal(ex(1))) return num;
+  if (GiNaC::is_a<GiNaC::numeric>(den)) return GiNaC::expand(num / den);
+  return num / den;
+}
+
+matrix moment_matrix(const std::vector<WeightedPoint>& points) {
+  matrix M(9, 9);
+  std::vector<matrix> rows;
+  rows.reserve(points.size());
+  for (const auto& p : points) rows.push_back(design_row(p.eta));
+  for (int r = 0; r < 9; ++r)
+    for (int c = r; c < 9; ++c) {
+      ex sum = 0;
+      for (std::size_t i = 0; i < points.size(); ++i) sum += points[i].weight * rows[i](r, 0) * rows[i](c, 0);
+      const ex v = canonical(sum);
+      M(r, c) = v;
+      M(c, r) = v;
+    }
+  return M;
+}
+
+}  // namespace scalcal::symbolic

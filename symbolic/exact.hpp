@@ -1,0 +1,36 @@
+// Exact linear algebra of the scalar model with GiNaC: the design row h(eta), the moment matrix
+// sum_i w_i h_i h_i^T of a weighted point set with exact coordinates (rationals, square roots,
+// symbols), and a canonical form that rationalises square roots out of denominators.
+#pragma once
+#include <array>
+#include <vector>
+
+#include <ginac/ginac.h>
+
+namespace scalcal::symbolic {
+
+using Point = std::array<GiNaC::ex, 3>;
+
+// A position (or an orbit member) with its multiplicity; weights may be symbols.
+struct WeightedPoint {
+  GiNaC::ex weight;
+  Point eta;
+};
+
+// h(eta) = (x, y, z, x^2, y^2, z^2, xy, yz, zx) as a 9x1 matrix.
+GiNaC::matrix design_row(const Point& eta);
+
+// sum_i w_i h(eta_i) h(eta_i)^T with every entry in canonical form (see canonical()).
+GiNaC::matrix moment_matrix(const std::vector<WeightedPoint>& points);
+
+// Expanded numerator over a denominator free of square roots of numbers: two equal elements of
+// Q(sqrt p, sqrt q, ...)(symbols) then print alike, and a zero test is `canonical(x).is_zero()`.
+GiNaC::ex canonical(const GiNaC::ex& e);
+
+// True when e is provably zero after canonical().
+inline bool is_zero_exact(const GiNaC::ex& e) { return canonical(e).is_zero(); }
+
+// Degree of the monomial h_r in the coordinates: 1 for bias rows, 2 for the others.
+inline int row_degree(int r) { return r < 3 ? 1 : 2; }
+
+}  // namespace scalcal::symbolic
