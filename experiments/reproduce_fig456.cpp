@@ -1,0 +1,157 @@
+// Figs. 4-6 of the paper: the generalized variance det K against N for the program classes (4),
+// the same normalised by N^9 (5), and its lower part with the analytic limit 61509375/4 and the
+// N whose optimum misses it (6). Data: fig4_programs.csv, fig4_random.csv.
+#include <algorithm>
+#include <cmath>
+
+#include "experiments/reproduce.hpp"
+#include "numeric/limits.hpp"
+#include "plots/csv_writer.hpp"
+#include "plots/figure.hpp"
+
+namespace scalcal::reproduce {
+
+using plots::CsvWriter;
+
+std::vector<std::string> entry_header() {
+  return {"family", "name", "source", "N", "det_K", "D", "A", "E", "S", "theta_bias", "theta_scale", "theta_nonorth"};
+}
+
+std::vector<std::string> entry_cells(const Entry& e) {
+  const auto& v = e.ev;
+  return {e.family,          CsvWriter::text(e.name), CsvWriter::text(e.source), std::to_string(v.positions),
+          CsvWriter::num(v.det_K), CsvWriter::num(v.D), CsvWriter::num(v.A), CsvWriter::num(v.E), CsvWriter::num(v.S),
+          CsvWriter::num(v.theta_bias), CsvWriter::num(v.theta_scale), CsvWriter::num(v.theta_nonorth)};
+}
+
+void render_figure(Context& ctx, const std::string& name, const std::string& comment, const std::string& body, int width,
+                   int height) {
+  ctx.progress.stage("rendering " + name);
+  plots::FigureSpec spec;
+  spec.name = name;
+  spec.comment = comment;
+  spec.body = body;
+  spec.width = width;
+  spec.height = height;
+  plots::render(ctx.options.out, spec);
+}
+
+namespace {
+
+// Relative distance above which an optimum counts as missing the limit.
+constexpr double kLimitTolerance = 1e-5;
+
+std::string series(const std::string& family_test, int column, const std::string& how, const std::string& title) {
+  return "'fig4_programs.csv' skip 1 using 4:(" + family_test + " ? $" + std::to_string(column) + " : NaN) " + how +
+         " title " + plots::gp_quote(title);
+}
+
+std::string class_plot(int column, const Context& ctx, bool with_limit) {
+  using namespace plots::style;
+  std::vector<std::string> parts = {
+      series("strcol(1) eq 'uniform'", column,
+             std::string("with points pt 5 ps 1.3 lc rgb '") + uniform + "'", "uniform projections (1, √2/2, √3/3)"),
+      series("strcol(1) eq 'rotation'", column, std::string("with points pt 3 ps 1.8 lw 2 lc rgb '") + rotation + "'",
+             "rotation about each axis [12]"),
+  };
+  if (ctx.optimiser)
+    parts.push_back(series("strcol(1) eq 'optimised'", column,
+                           std::string("with points pt 9 ps 1.5 lc rgb '") + optimised + "'",
+                           "optimised, D-criterion (scalcal)"));
+  parts.push_back(series("strcol(2) eq 'dodecahedral-12'", column,
+                         std::string("with points pt 7 ps 2.2 lc rgb '") + jig + "'", "dodecahedral jig (12)"));
+  parts.push_back(series("strcol(2) eq 'icosahedral-20'", column,
+                         std::string("with points pt 13 ps 2.4 lc rgb '") + jig + "'", "icosahedral jig (20)"));
+  parts.push_back("'fig4_random.csv' skip 1 using 1:" + std::to_string(column == 5 ? 4 : 5) +
+                  " with lines dt 2 lw 2 lc rgb '" + random + "' title " +
+                  plots::gp_quote("best of " + std::to_string(ctx.random_count) + " random programs"));
+  if (with_limit)
+    parts.push_back(std::string("LIMIT with lines lw 2 lc rgb '") + limit + "' title 'limit 61509375/4 ≈ 1.5377·10^7'");
+  std::string plot = "plot ";
+  for (std::size_t i = 0; i < parts.size(); ++i) plot += (i ? ", \\\n     " : "") + parts[i];
+  return plot + "\n";
+}
+
+}  // namespace
+
+void figures_4_5_6(Context& ctx) {
+  const double limit = criterion_limit(CriterionKind::D).value;
+  std::vector<const Entry*> drawn;
+  for (const auto* group : {&ctx.uniform, &ctx.rotation, &ctx.jigs})
+    for (const auto& e : *group) drawn.push_back(&e);
+  for (int n : ctx.optimised_sizes(CriterionKind::D)) drawn.push_back(ctx.optimum(CriterionKind::D, n));
+  {
+    auto header = entry_header();
+    header.push_back("misses_limit");
+    CsvWriter csv(ctx.file("fig4_programs.csv"), header);
+    for (const auto* e : drawn) {
+      auto cells = entry_cells(*e);
+      cells.push_back(e->family == "optimised" ? (e->ev.D > limit * (1 + kLimitTolerance) ? "1" : "0") : "");
+      csv.row(cells);
+    }
+  }
+  {
+    CsvWriter csv(ctx.file("fig4_random.csv"), {"N", "count", "seed_of_best", "det_K", "D"});
+    for (const auto& [n, e] : ctx.random_best)
+      csv.row({std::to_string(n), std::to_string(ctx.random_count), e.name.substr(e.name.rfind("-s") + 2),
+               CsvWriter::num(e.ev.det_K), CsvWriter::num(e.ev.D)});
+  }
+  const std::string common =
+      "set grid\nset xlabel 'number of measurement positions N'\nset xrange [8:49]\nset xtics 4\nset mxtics 4\n";
+  render_figure(ctx, "fig4", "generalized variance det K against N (the paper's Fig. 4)",
+                common +
+                    "set logscale y\nset format y '10^{%L}'\nset ylabel 'det K   (K in units of σ_ω^2)'\n"
+                    "set key top right box opaque\n" +
+                    class_plot(5, ctx, false));
+  render_figure(ctx, "fig5", "N^9 det K against N (the paper's Fig. 5)",
+                common +
+                    "set logscale y\nset ylabel 'N^9 det K'\nset format y '%.0e'\nset key top right box opaque\n"
+                    "LIMIT = " + CsvWriter::num(limit) + "\n" + class_plot(6, ctx, true));
+
+  // Fig. 6: the lower part, linear, with the N whose optimum misses the limit circled.
+  double top = 2.4e7;
+  for (int n : ctx.optimised_sizes(CriterionKind::D)) top = std::max(top, 1.05 * ctx.optimum(CriterionKind::D, n)->ev.D);
+  top = std::min(top, 3.2e7);
+  std::string body = common + "set ylabel 'N^9 det K'\nset format y '%.2t·10^{%T}'\nset yrange [1.45e7:" +
+                     CsvWriter::num(top) + "]\nset key outside below horizontal maxrows 3 box\nLIMIT = " + CsvWriter::num(limit) + "\n";
+  body += "set label 1 'limit 61509375/4' at 45, LIMIT offset 0,-0.9 right tc rgb '" + std::string(plots::style::limit) +
+          "'\n";
+  std::string plot = class_plot(6, ctx, true);
+  if (ctx.optimiser) {
+    plot.pop_back();
+    plot += ", \\\n     'fig4_programs.csv' skip 1 using 4:(strcol(13) eq '1' ? $6 : NaN) with points pt 6 ps 3.2 lw 2 "
+            "lc rgb '" + std::string(plots::style::limit) + "' title 'optimum misses the limit', \\\n"
+            "     '' skip 1 using 4:(strcol(13) eq '1' ? $6 : NaN):(sprintf('%d', $4)) with labels offset 0,1.6 notitle\n";
+  }
+  render_figure(ctx, "fig6", "lower part of N^9 det K with the analytic limit (the paper's Fig. 6)", body + plot);
+
+  auto& r = ctx.report;
+  r.heading(2, "Figs. 4-6: generalized variance");
+  r.figure("fig4", "Fig. 4: det K against N for each class of programs");
+  r.figure("fig5", "Fig. 5: det K normalised by N^9");
+  r.figure("fig6", "Fig. 6: lower part of N^9 det K, with the analytic limit 61509375/4");
+  r.paragraph("Data: [fig4_programs.csv](fig4_programs.csv) (every program drawn, with all criteria) and "
+              "[fig4_random.csv](fig4_random.csv) (the best of " + std::to_string(ctx.random_count) +
+              " programs uniform on the sphere per N, with the seed that regenerates it: `scalcal evaluate "
+              "random-N-sSEED`).");
+  if (!ctx.optimiser) r.missing("optimised D-criterion programs (triangles) and the N that miss the limit: " + ctx.optimiser_note);
+  if (ctx.optimiser) {
+    std::vector<std::vector<std::string>> rows;
+    std::string missed;
+    for (int n : ctx.optimised_sizes(CriterionKind::D)) {
+      const Entry& e = *ctx.optimum(CriterionKind::D, n);
+      const bool misses = e.ev.D > limit * (1 + kLimitTolerance);
+      if (misses) missed += (missed.empty() ? "" : ", ") + std::to_string(n);
+      rows.push_back({std::to_string(n), fmt(e.ev.D, 8), fmt(e.ev.D / limit - 1, 3), misses ? "misses" : "reaches",
+                      std::to_string(e.hits) + "/" + std::to_string(e.starts), fmt(e.seconds, 3)});
+    }
+    r.paragraph("The optimised D-criterion programs (scalcal's multistart; `hits` = starts that reached the best value):");
+    r.table({"N", "N^9 det K", "relative excess over the limit", "limit", "hits/starts", "seconds"}, rows);
+    r.claim("N whose optimum misses the limit (Fig. 6)", "9, 10, 11, 13, 15", missed.empty() ? "none" : missed,
+            missed == "9, 10, 11, 13, 15" ? "same" : "differs (see Fig. 6 table)");
+  } else {
+    r.claim("N whose optimum misses the limit (Fig. 6)", "9, 10, 11, 13, 15", "MISSING (no optimiser)", "n/a");
+  }
+}
+
+}  // namespace scalcal::reproduce

@@ -1,0 +1,231 @@
+// The programs every figure draws from: the analytic classes of the paper's Fig. 4 (uniform
+// projections, rotations, the jigs), the paper's Tables 1-3, the best of many random programs per
+// N, and the optimised programs of each criterion (numeric/synthesis.hpp, issue 3).
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <thread>
+
+#include <Eigen/Cholesky>
+
+#include "experiments/reproduce.hpp"
+#include "numeric/catalogue.hpp"
+#include "numeric/design.hpp"
+
+#if 0 && __has_include("numeric/synthesis.cpp")
+#define SCALCAL_REPRODUCE_HAS_OPTIMISER 1
+#include "numeric/synthesis.hpp"
+#else
+#define SCALCAL_REPRODUCE_HAS_OPTIMISER 0
+#endif
+
+namespace scalcal::reproduce {
+
+Entry make_entry(std::string family, std::string name, std::string source, Program program) {
+  Entry e{std::move(family), std::move(name), std::move(source), std::move(program), {}, 0, 0, 0.0};
+  e.ev = evaluate(e.program);
+  return e;
+}
+
+void Progress::stage(const std::string& what) {
+  stage_ = what;
+  if (enabled_) std::cerr << "\r\033[K[reproduce] " << stage_ << std::flush;
+}
+
+void Progress::step(long long done, long long total) {
+  if (!enabled_) return;
+  const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  std::cerr << "\r\033[K[reproduce] " << stage_ << "  " << done << "/" << total << "  (" << static_cast<int>(s)
+            << " s)" << std::flush;
+}
+
+void Progress::done() {
+  if (enabled_) std::cerr << "\r\033[K" << std::flush;
+}
+
+const Entry* Context::optimum(CriterionKind c, int n) const {
+  const auto it = optimised.find({c, n});
+  return it == optimised.end() ? nullptr : &it->second;
+}
+
+std::vector<int> Context::optimised_sizes(CriterionKind c) const {
+  std::vector<int> out;
+  for (const auto& [key, e] : optimised)
+    if (key.first == c) out.push_back(key.second);
+  return out;
+}
+
+int Context::threads() const {
+  if (options.threads > 0) return options.threads;
+  const unsigned hw = std::thread::hardware_concurrency();
+  return hw == 0 ? 1 : static_cast<int>(hw);
+}
+
+std::string fmt(double x, int significant) {
+  if (std::isnan(x)) return "n/a";
+  if (std::isinf(x)) return x > 0 ? "inf" : "-inf";
+  char buf[48];
+  std::snprintf(buf, sizeof buf, "%.*g", significant, x);
+  return buf;
+}
+
+std::string pct(double ours, double theirs) {
+  if (!std::isfinite(ours) || !std::isfinite(theirs) || theirs == 0) return "n/a";
+  char buf[48];
+  std::snprintf(buf, sizeof buf, "%+.3g %%", 100.0 * (ours - theirs) / theirs);
+  return buf;
+}
+
+void compute_analytic(Context& ctx) {
+  ctx.progress.stage("analytic programs");
+  // Green squares of Fig. 4: orbits of the octahedral group with projections 1, sqrt2/2, sqrt3/3.
+  for (int a = 0; a <= 8; ++a)
+    for (int e = 0; e <= 4; ++e)
+      for (int d = 0; d <= 6; ++d) {
+        const int n = 6 * a + 12 * e + 8 * d;
+        if (n < 9 || n > 48) continue;
+        const std::string name =
+            "octahedral-" + std::to_string(a) + "-" + std::to_string(e) + "-" + std::to_string(d);
+        Entry en = make_entry("uniform", name, "Fig. 4 (squares)", Program::octahedral(a, e, d));
+        if (en.ev.full_rank()) ctx.uniform.push_back(std::move(en));
+      }
+  // Stars of Fig. 4: k positions per ring about each axis (Fig. 2 is k = 6), N = 3k.
+  for (int k = 3; k <= 16; ++k) {
+    Entry en = make_entry("rotation", "rotation-" + std::to_string(k), k == 6 ? "Fig. 2, ref. [12]" : "Fig. 4 (stars)",
+                          Program::rotation(k));
+    if (en.ev.full_rank()) ctx.rotation.push_back(std::move(en));
+  }
+  ctx.rotation.push_back(make_entry("rotation", "rotation-4-p45", "Fig. 4 (stars)", Program::rotation(4, 45.0)));
+  std::sort(ctx.rotation.begin(), ctx.rotation.end(),
+            [](const Entry& x, const Entry& y) { return x.ev.positions < y.ev.positions; });
+  ctx.jigs.push_back(make_entry("jig", "dodecahedral-12", "Fig. 4, ref. [25]", Program::dodecahedral()));
+  ctx.jigs.push_back(make_entry("jig", "icosahedral-20", "Fig. 4, ref. [25]", Program::icosahedral()));
+  ctx.paper.push_back(make_entry("paper", "table1-A", "Table 1", *named_program("table1-A")));
+  ctx.paper.push_back(make_entry("paper", "table2-E", "Table 2", *named_program("table2-E")));
+  ctx.paper.push_back(make_entry("paper", "table3-S", "Table 3", *named_program("table3-S")));
+  ctx.analytic9.push_back(make_entry("analytic", "nine-3axes", "ref. [13]", Program::nine_three_axes()));
+  ctx.analytic9.push_back(make_entry("analytic", "nine-2axes", "refs. [8, 14]", Program::nine_two_axes()));
+}
+
+namespace {
+
+// splitmix64: decorrelates the per-program seeds derived from (seed, N, index).
+std::uint64_t mix(std::uint64_t x) {
+  x += 0x9e3779b97f4a7c15ULL;
+  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
+  return x ^ (x >> 31);
+}
+
+// N^9 det K from the Cholesky factor of H^T H; +infinity when H^T H is singular.
+double normalised_det_k(const Program& p) {
+  const Mat9 m = information_matrix(p.positions);
+  Eigen::LLT<Mat9> llt(m);
+  if (llt.info() != Eigen::Success) return std::numeric_limits<double>::infinity();
+  double log_det = 0;
+  for (int i = 0; i < 9; ++i) log_det += 2.0 * std::log(llt.matrixL()(i, i));
+  const double v = std::exp(9.0 * std::log(static_cast<double>(p.size())) - log_det);
+  return v > 0 && std::isfinite(v) ? v : std::numeric_limits<double>::infinity();
+}
+
+}  // namespace
+
+void compute_random(Context& ctx) {
+  const auto t0 = std::chrono::steady_clock::now();
+  ctx.random_count = ctx.options.quick ? 2000 : 100000;
+  const int n_lo = 9, n_hi = 36;
+  ctx.progress.stage("best of " + std::to_string(ctx.random_count) + " random programs, N = 9..36");
+  // One task per N; program i of size N has seed mix(seed, N, i), so the result does not depend
+  // on the number of threads.
+  std::vector<double> best(static_cast<std::size_t>(n_hi + 1), std::numeric_limits<double>::infinity());
+  std::vector<std::uint64_t> best_seed(best.size(), 0);
+  std::atomic<int> next{n_lo}, finished{0};
+  auto worker = [&] {
+    for (int n; (n = next.fetch_add(1)) <= n_hi;) {
+      for (long long i = 0; i < ctx.random_count; ++i) {
+        const std::uint64_t s = mix(mix(ctx.options.seed ^ (static_cast<std::uint64_t>(n) << 40)) + static_cast<std::uint64_t>(i));
+        const double d = normalised_det_k(Program::random(n, s));
+        if (d < best[static_cast<std::size_t>(n)]) {
+          best[static_cast<std::size_t>(n)] = d;
+          best_seed[static_cast<std::size_t>(n)] = s;
+        }
+      }
+      finished.fetch_add(1);
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int t = 0; t < std::min(ctx.threads(), n_hi - n_lo + 1); ++t) pool.emplace_back(worker);
+  while (finished.load() < n_hi - n_lo + 1) {
+    ctx.progress.step(finished.load(), n_hi - n_lo + 1);
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  }
+  for (auto& t : pool) t.join();
+  for (int n = n_lo; n <= n_hi; ++n) {
+    const std::uint64_t s = best_seed[static_cast<std::size_t>(n)];
+    ctx.random_best.emplace(n, make_entry("random", "random-" + std::to_string(n) + "-s" + std::to_string(s),
+                                          "Fig. 4 (dashed)", Program::random(n, s)));
+  }
+  ctx.timings.emplace_back("random programs", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+}
+
+void compute_optimised(Context& ctx) {
+#if SCALCAL_REPRODUCE_HAS_OPTIMISER
+  ctx.optimiser = true;
+  const auto t0 = std::chrono::steady_clock::now();
+  struct Plan {
+    CriterionKind criterion;
+    std::vector<int> sizes;
+  };
+  std::vector<Plan> plans;
+  auto range = [](int lo, int hi) {
+    std::vector<int> v;
+    for (int n = lo; n <= hi; ++n) v.push_back(n);
+    return v;
+  };
+  if (ctx.options.quick) {
+    plans = {{CriterionKind::D, {9, 12, 18, 20}},
+             {CriterionKind::A, {9, 18}},
+             {CriterionKind::E, {9, 18}},
+             {CriterionKind::S, {9, 18}}};
+  } else {
+    plans = {{CriterionKind::D, range(9, 30)},
+             {CriterionKind::A, range(9, 24)},
+             {CriterionKind::E, range(9, 24)},
+             {CriterionKind::S, range(9, 24)}};
+  }
+  const int starts = ctx.options.quick ? 4 : 0;
+  int total = 0, done = 0;
+  for (const auto& p : plans) total += static_cast<int>(p.sizes.size());
+  for (const auto& plan : plans)
+    for (int n : plan.sizes) {
+      ctx.progress.stage("optimising " + std::string(criterion_name(plan.criterion)) + ", N = " + std::to_string(n) +
+                         " (" + std::to_string(done + 1) + "/" + std::to_string(total) + ")");
+      SynthesisOptions so;
+      so.positions = n;
+      so.criterion = plan.criterion;
+      so.starts = starts;
+      so.seed = ctx.options.seed;
+      so.threads = 1;  // TEMP: MUMPS inside Ipopt crashed when run on two threads at once
+      so.progress = [&ctx](int d, int t) { ctx.progress.step(d, t); };
+      const SynthesisResult r = synthesize(so);
+      Entry e = make_entry("optimised",
+                           "optimised-" + std::string(criterion_name(plan.criterion)) + "-" + std::to_string(n),
+                           "scalcal synthesize", r.program);
+      e.starts = r.starts;
+      e.hits = r.hits;
+      e.seconds = r.seconds;
+      ctx.optimised.emplace(std::make_pair(plan.criterion, n), std::move(e));
+      ++done;
+    }
+  ctx.timings.emplace_back("optimised programs", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+#else
+  ctx.optimiser = false;
+  ctx.optimiser_note =
+      "the optimiser (numeric/synthesis.cpp, issue 3) was not in the tree when this scalcal was built, so every "
+      "optimised program, curve and comparison below is missing (not estimated).";
+#endif
+}
+
+}  // namespace scalcal::reproduce
