@@ -3,6 +3,7 @@
 // By the 48-element symmetry of the axes an optimal measure is symmetric, so its moments up to
 // order four are fixed by b = E[x^2 y^2] (with E[x^4] = 1/3 - 2b, odd moments zero).
 #pragma once
+#include <cmath>
 #include <string_view>
 
 #include "numeric/criterion_kind.hpp"
