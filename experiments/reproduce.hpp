@@ -99,6 +99,10 @@ namespace scalcal::reproduce {
 std::vector<std::string> entry_header();
 std::vector<std::string> entry_cells(const Entry& e);
 
+// The gnuplot `plot` command drawing column `column` of fig4_programs.csv for each program class of
+// Fig. 4, and the random programs' dashed line (their D column when column is 6, else det K).
+std::string class_plot(int column, const Context& ctx, bool with_limit);
+
 // Paths are relative to the output folder; the figure scripts run there.
 void render_figure(Context& ctx, const std::string& name, const std::string& comment, const std::string& body,
                    int width = 1100, int height = 750);

@@ -46,6 +46,8 @@ std::string series(const std::string& family_test, int column, const std::string
          " title " + plots::gp_quote(title);
 }
 
+}  // namespace
+
 std::string class_plot(int column, const Context& ctx, bool with_limit) {
   using namespace plots::style;
   std::vector<std::string> parts = {
@@ -71,8 +73,6 @@ std::string class_plot(int column, const Context& ctx, bool with_limit) {
   for (std::size_t i = 0; i < parts.size(); ++i) plot += (i ? ", \\\n     " : "") + parts[i];
   return plot + "\n";
 }
-
-}  // namespace
 
 void figures_4_5_6(Context& ctx) {
   const double limit = criterion_limit(CriterionKind::D).value;
