@@ -1,0 +1,59 @@
+// `scalcal family` and `scalcal limits` through the real binary: documented JSON keys, numbers
+// that agree with hand-derived values, exit 2 on bad input.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdio>
+#include <string>
+
+namespace {
+
+struct Run {
+  int status;
+  std::string out;
+};
+
+Run run(const std::string& args) {
+  const std::string cmd = std::string(SCALCAL_CLI) + " " + args + " 2>/dev/null";
+  std::array<char, 4096> buf{};
+  std::string out;
+  FILE* p = popen(cmd.c_str(), "r");
+  while (fgets(buf.data(), buf.size(), p)) out += buf.data();
+  const int st = pclose(p);
+  return {WEXITSTATUS(st), out};
+}
+
+TEST(FamilyCli, JsonKeys) {
+  const auto r = run("family icosahedral --json");
+  ASSERT_EQ(r.status, 0);
+  for (const char* key : {"\"family\": \"icosahedral\"", "\"positions\": 20", "\"D\": 15377343.75", "\"A\": 72",
+                          "\"E\": 15", "\"S\": 15", "\"exact\"", "\"D\": \"61509375/4\""})
+    EXPECT_NE(r.out.find(key), std::string::npos) << key << "\n" << r.out;
+}
+
+TEST(FamilyCli, SymbolicParameters) {
+  const auto r = run("family octahedral --param axes=a --param edges=e --param diagonals=d --json");
+  ASSERT_EQ(r.status, 0);
+  EXPECT_NE(r.out.find("\"D\": null"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\"positions\": \""), std::string::npos) << r.out;
+}
+
+TEST(FamilyCli, BadInputExits2) {
+  EXPECT_EQ(run("family cuboctahedral").status, 2);
+  EXPECT_EQ(run("family rotation --param k=2").status, 2);
+  EXPECT_EQ(run("family rotation --param q=2").status, 2);
+  EXPECT_EQ(run("family octahedral --param edges=0").status, 2);
+  EXPECT_EQ(run("family").status, 2);
+  EXPECT_EQ(run("limits extra").status, 2);
+}
+
+TEST(LimitsCli, JsonKeys) {
+  const auto r = run("limits --json");
+  ASSERT_EQ(r.status, 0);
+  for (const char* key : {"\"D\": {", "\"exact\": \"61509375/4\"", "\"value\": 15377343.75", "\"A\": {",
+                          "\"exact\": \"45+18*sqrt(2)\"", "\"E\": {", "\"exact\": \"12\"", "\"S\": {",
+                          "\"exact\": \"6+3*sqrt(3)\"", "\"moments\"", "\"E[x^2 y^2]\": \"1/15\""})
+    EXPECT_NE(r.out.find(key), std::string::npos) << key;
+}
+
+}  // namespace
