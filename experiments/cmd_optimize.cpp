@@ -1,0 +1,54 @@
+// `scalcal optimize --positions N --criterion D|A|E|S [--starts K] [--seed S] [--digits P]
+// [--out FILE] [--json]`: the optimal program by an Ipopt multistart, optionally polished to P digits.
+#include <iomanip>
+#include <iostream>
+
+#include "experiments/command.hpp"
+#include "experiments/json.hpp"
+#include "experiments/synthesis_cli.hpp"
+#include "numeric/synthesis.hpp"
+
+namespace scalcal::cli {
+namespace {
+
+int run(Args& args) {
+  SynthesisOptions opt;
+  opt.positions = static_cast<int>(args.integer("positions", -1, 9, 1000));
+  if (opt.positions < 0) throw UsageError("--positions N is required");
+  opt.criterion = criterion_option(args, "D");
+  opt.starts = static_cast<int>(args.integer("starts", 0, 1, 1000000));
+  opt.seed = static_cast<std::uint64_t>(args.integer("seed", 1, 0, (1LL << 62)));
+  opt.threads = static_cast<int>(args.integer("threads", 0, 0, 256));
+  const auto out_file = args.value("out");
+  const bool json = args.flag("json");
+  if (!args.positionals().empty()) throw UsageError("unexpected positional argument");
+  if (progress_enabled())
+    opt.progress = [](int done, int total) { std::cerr << "\rstart " << done << "/" << total << std::flush; };
+  const SynthesisResult r = synthesize(opt);
+  if (opt.progress) std::cerr << "\n";
+  if (out_file) write_program_file(*out_file, r.program);
+  if (json) {
+    Json j = Json::object();
+    j.set("criterion", std::string(criterion_name(opt.criterion)));
+    j.set("positions", opt.positions);
+    j.set("value", r.value);
+    j.set("program", program_json(r.program));
+    j.set("starts", r.starts);
+    j.set("hits", r.hits);
+    j.set("seconds", r.seconds);
+    j.dump(std::cout);
+    std::cout << "\n";
+  } else {
+    std::cout << criterion_name(opt.criterion) << " = " << std::setprecision(15) << r.value << "  (N = " << opt.positions
+              << ", " << r.hits << " of " << r.starts << " starts reached it, " << std::setprecision(3) << r.seconds
+              << " s)\n";
+  }
+  return 0;
+}
+
+const Registration reg({"optimize",
+                        "optimize --positions N --criterion D|A|E|S [--starts K] [--seed S] [--digits P] [--out FILE] [--json]",
+                        "the optimal program for a criterion (Ipopt multistart, optional high-precision polish)", 40, run});
+
+}  // namespace
+}  // namespace scalcal::cli

@@ -1,0 +1,168 @@
+// The multistart: start k is the uniform random program of seed splitmix(seed, k), optimised by
+// Ipopt; starts are dealt round-robin to worker processes and their results stored by index, so the
+// best program (lowest value, then lowest start index) never depends on scheduling.
+#include "numeric/synthesis.hpp"
+
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <limits>
+#include <stdexcept>
+#include <thread>
+
+#include <poll.h>
+#include <sys/wait.h>
+#include <unistd.h>
+#include <vector>
+
+#include "numeric/synthesis_local.hpp"
+#include "numeric/synthesis_seeds.hpp"
+
+namespace scalcal {
+
+int default_starts(CriterionKind criterion, int positions) {
+  const int base = criterion == CriterionKind::D ? 16 : 32;
+  return positions <= 12 ? base : base + (positions - 12);
+}
+
+int thread_count(int requested) {
+  if (requested > 0) return requested;
+  const unsigned hw = std::thread::hardware_concurrency();
+  return hw == 0 ? 1 : static_cast<int>(hw);
+}
+
+namespace {
+
+// Ipopt's linear solver (sequential MUMPS) is not thread-safe, so starts run in forked worker
+// processes; each sends back (start index, value, status, iterations, coordinates) through a pipe.
+constexpr int kHeader = 4;
+
+void write_all(int fd, const void* data, std::size_t bytes) {
+  const char* p = static_cast<const char*>(data);
+  while (bytes > 0) {
+    const ssize_t w = ::write(fd, p, bytes);
+    if (w < 0 && errno == EINTR) continue;
+    if (w <= 0) ::_exit(3);
+    p += w;
+    bytes -= static_cast<std::size_t>(w);
+  }
+}
+
+bool read_all(int fd, void* data, std::size_t bytes) {
+  char* p = static_cast<char*>(data);
+  while (bytes > 0) {
+    const ssize_t r = ::read(fd, p, bytes);
+    if (r < 0 && errno == EINTR) continue;
+    if (r <= 0) return false;
+    p += r;
+    bytes -= static_cast<std::size_t>(r);
+  }
+  return true;
+}
+
+LocalResult run_start(const SynthesisOptions& options, int k) {
+  const Program start = Program::random(options.positions, start_seed(options.seed, static_cast<std::uint64_t>(k)));
+  return optimize_locally(start, options.criterion);
+}
+
+std::vector<LocalResult> run_starts(const SynthesisOptions& options, int starts) {
+  std::vector<LocalResult> results(static_cast<std::size_t>(starts));
+  const int workers = std::min(thread_count(options.threads), starts);
+  int done = 0;
+  if (workers <= 1) {
+    for (int k = 0; k < starts; ++k) {
+      results[static_cast<std::size_t>(k)] = run_start(options, k);
+      ++done;
+      if (options.progress) options.progress(done, starts);
+    }
+    return results;
+  }
+  const std::size_t record = static_cast<std::size_t>(kHeader + 3 * options.positions);
+  std::vector<pollfd> fds;
+  std::vector<pid_t> pids;
+  for (int w = 0; w < workers; ++w) {
+    int fd[2];
+    if (::pipe(fd) != 0) throw std::runtime_error("synthesize: pipe failed");
+    const pid_t pid = ::fork();
+    if (pid < 0) throw std::runtime_error("synthesize: fork failed");
+    if (pid == 0) {
+      ::close(fd[0]);
+      std::vector<double> buf(record);
+      for (int k = w; k < starts; k += workers) {
+        const LocalResult r = run_start(options, k);
+        buf[0] = k;
+        buf[1] = r.value;
+        buf[2] = r.status;
+        buf[3] = r.iterations + (r.converged ? 0.5 : 0.0);
+        for (int i = 0; i < options.positions; ++i)
+          for (int c = 0; c < 3; ++c) buf[static_cast<std::size_t>(kHeader + 3 * i + c)] = r.program.positions[static_cast<std::size_t>(i)](c);
+        write_all(fd[1], buf.data(), record * sizeof(double));
+      }
+      ::close(fd[1]);
+      ::_exit(0);
+    }
+    ::close(fd[1]);
+    fds.push_back({fd[0], POLLIN, 0});
+    pids.push_back(pid);
+  }
+  std::vector<double> buf(record);
+  int open = workers;
+  bool failed = false;
+  while (open > 0) {
+    if (::poll(fds.data(), fds.size(), -1) < 0) {
+      if (errno == EINTR) continue;
+      failed = true;
+      break;
+    }
+    for (auto& p : fds) {
+      if (p.fd < 0 || !(p.revents & (POLLIN | POLLHUP | POLLERR))) continue;
+      if (!read_all(p.fd, buf.data(), record * sizeof(double))) {
+        ::close(p.fd);
+        p.fd = -1;
+        --open;
+        continue;
+      }
+      LocalResult& r = results[static_cast<std::size_t>(buf[0])];
+      r.value = buf[1];
+      r.status = static_cast<int>(buf[2]);
+      r.iterations = static_cast<int>(buf[3]);
+      r.converged = buf[3] - r.iterations > 0.25;
+      r.program.positions.clear();
+      for (int i = 0; i < options.positions; ++i)
+        r.program.positions.emplace_back(buf[static_cast<std::size_t>(kHeader + 3 * i)], buf[static_cast<std::size_t>(kHeader + 3 * i + 1)],
+                                         buf[static_cast<std::size_t>(kHeader + 3 * i + 2)]);
+      ++done;
+      if (options.progress) options.progress(done, starts);
+    }
+  }
+  for (const pid_t pid : pids) {
+    int status = 0;
+    ::waitpid(pid, &status, 0);
+    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) failed = true;
+  }
+  if (failed || done != starts)
+    throw std::runtime_error("synthesize: a worker process failed (" + std::to_string(done) + " of " + std::to_string(starts) + " starts returned)");
+  return results;
+}
+
+}  // namespace
+
+SynthesisResult synthesize(const SynthesisOptions& options) {
+  if (options.positions < 9) throw std::invalid_argument("synthesize: at least 9 positions are needed");
+  const auto t0 = std::chrono::steady_clock::now();
+  const int starts = options.starts > 0 ? options.starts : default_starts(options.criterion, options.positions);
+  std::vector<LocalResult> results = run_starts(options, starts);
+  SynthesisResult out;
+  std::size_t best = 0;
+  for (std::size_t k = 1; k < results.size(); ++k)
+    if (results[k].value < results[best].value) best = k;
+  out.program = results[best].program;
+  out.value = results[best].value;
+  out.starts = starts;
+  for (const auto& r : results)
+    if (r.value <= out.value * (1 + kHitTolerance)) ++out.hits;
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return out;
+}
+
+}  // namespace scalcal

@@ -1,0 +1,156 @@
+// Ipopt TNLP over x = (eta_1, ..., eta_N, extra...), with N norm constraints |eta_i|^2 = 1
+// followed by the criterion's own constraints (dense rows). The criterion is a SmoothProblem:
+// the adapter never knows which one it runs.
+#include "numeric/synthesis_local.hpp"
+
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <vector>
+
+#include <Eigen/Eigenvalues>
+#include <IpIpoptApplication.hpp>
+#include <IpSolveStatistics.hpp>
+#include <IpTNLP.hpp>
+
+#include "numeric/criteria.hpp"
+#include "numeric/evaluation.hpp"
+#include "numeric/synthesis_problems.hpp"
+
+namespace scalcal {
+
+namespace {
+
+using Ipopt::Index;
+using Ipopt::Number;
+
+class ProgramNlp : public Ipopt::TNLP {
+ public:
+  ProgramNlp(const SmoothProblem& problem, std::vector<double> start)
+      : p_(problem), x0_(std::move(start)), n_(static_cast<int>(x0_.size())) {}
+
+  const std::vector<double>& solution() const { return xs_; }
+
+  bool get_nlp_info(Index& n, Index& m, Index& nnz_jac, Index& nnz_h, IndexStyleEnum& style) override {
+    n = n_;
+    m = p_.positions() + p_.constraints();
+    nnz_jac = 3 * p_.positions() + p_.constraints() * n_;
+    nnz_h = 0;
+    style = TNLP::C_STYLE;
+    return true;
+  }
+
+  bool get_bounds_info(Index n, Number* x_l, Number* x_u, Index m, Number* g_l, Number* g_u) override {
+    for (Index i = 0; i < n; ++i) {
+      x_l[i] = -2e19;
+      x_u[i] = 2e19;
+    }
+    for (int i = 0; i < p_.positions(); ++i) g_l[i] = g_u[i] = 1.0;
+    p_.constraint_bounds(g_l + p_.positions(), g_u + p_.positions());
+    (void)m;
+    return true;
+  }
+
+  bool get_starting_point(Index n, bool init_x, Number* x, bool init_z, Number*, Number*, Index, bool init_lambda,
+                          Number*) override {
+    if (!init_x || init_z || init_lambda) return false;
+    for (Index i = 0; i < n; ++i) x[i] = x0_[static_cast<std::size_t>(i)];
+    return true;
+  }
+
+  bool eval_f(Index, const Number* x, bool, Number& f) override { return p_.objective(x, f, nullptr); }
+
+  bool eval_grad_f(Index n, const Number* x, bool, Number* g) override {
+    double f;
+    std::fill(g, g + n, 0.0);
+    return p_.objective(x, f, g);
+  }
+
+  bool eval_g(Index, const Number* x, bool, Index, Number* g) override {
+    for (int i = 0; i < p_.positions(); ++i)
+      g[i] = x[3 * i] * x[3 * i] + x[3 * i + 1] * x[3 * i + 1] + x[3 * i + 2] * x[3 * i + 2];
+    return p_.constraints() == 0 || p_.constraint_values(x, g + p_.positions(), nullptr);
+  }
+
+  bool eval_jac_g(Index, const Number* x, bool, Index, Index, Index* rows, Index* cols, Number* values) override {
+    const int N = p_.positions(), mc = p_.constraints();
+    if (values == nullptr) {
+      Index k = 0;
+      for (int i = 0; i < N; ++i)
+        for (int c = 0; c < 3; ++c, ++k) {
+          rows[k] = i;
+          cols[k] = 3 * i + c;
+        }
+      for (int r = 0; r < mc; ++r)
+        for (int j = 0; j < n_; ++j, ++k) {
+          rows[k] = N + r;
+          cols[k] = j;
+        }
+      return true;
+    }
+    for (int i = 0; i < 3 * N; ++i) values[i] = 2.0 * x[i];
+    if (mc == 0) return true;
+    std::vector<double> g(static_cast<std::size_t>(mc));
+    std::fill(values + 3 * N, values + 3 * N + mc * n_, 0.0);
+    return p_.constraint_values(x, g.data(), values + 3 * N);
+  }
+
+  void finalize_solution(Ipopt::SolverReturn, Index n, const Number* x, const Number*, const Number*, Index,
+                         const Number*, const Number*, Number, const Ipopt::IpoptData*,
+                         Ipopt::IpoptCalculatedQuantities*) override {
+    xs_.assign(x, x + n);
+  }
+
+ private:
+  const SmoothProblem& p_;
+  std::vector<double> x0_;
+  std::vector<double> xs_;
+  int n_;
+};
+
+}  // namespace
+
+double criterion_value(const Program& program, CriterionKind criterion) {
+  const Evaluation ev = evaluate(program);
+  switch (criterion) {
+    case CriterionKind::D: return ev.D;
+    case CriterionKind::A: return ev.A;
+    case CriterionKind::E: return ev.E;
+    case CriterionKind::S: return ev.S;
+  }
+  return std::numeric_limits<double>::infinity();
+}
+
+LocalResult optimize_locally(const Program& start, CriterionKind criterion, const LocalOptions& options) {
+  const std::unique_ptr<SmoothProblem> problem = make_problem(criterion, start.size());
+  LocalResult out;
+  out.program = start;
+  out.value = criterion_value(start, criterion);
+  if (!std::isfinite(out.value)) return out;  // a rank-deficient start cannot be optimised
+
+  Ipopt::SmartPtr<ProgramNlp> nlp = new ProgramNlp(*problem, problem->start(start));
+  Ipopt::SmartPtr<Ipopt::IpoptApplication> app = IpoptApplicationFactory();
+  app->Options()->SetIntegerValue("print_level", 0);
+  app->Options()->SetStringValue("sb", "yes");
+  app->Options()->SetStringValue("hessian_approximation", "limited-memory");
+  app->Options()->SetNumericValue("tol", options.tolerance);
+  app->Options()->SetIntegerValue("max_iter", options.max_iterations);
+  app->Options()->SetStringValue("mu_strategy", "adaptive");
+  if (app->Initialize() != Ipopt::Solve_Succeeded) return out;
+  const Ipopt::ApplicationReturnStatus status = app->OptimizeTNLP(Ipopt::SmartPtr<Ipopt::TNLP>(GetRawPtr(nlp)));
+  out.status = static_cast<int>(status);
+  out.converged = status == Ipopt::Solve_Succeeded || status == Ipopt::Solved_To_Acceptable_Level;
+  if (Ipopt::IsValid(app->Statistics())) out.iterations = app->Statistics()->IterationCount();
+  const std::vector<double>& x = nlp->solution();
+  if (x.empty()) return out;
+  Program result;
+  for (int i = 0; i < start.size(); ++i) result.positions.push_back(Vec3(x[3 * i], x[3 * i + 1], x[3 * i + 2]).normalized());
+  const double value = criterion_value(result, criterion);
+  if (std::isfinite(value)) {
+    out.program = std::move(result);
+    out.value = value;
+  }
+  return out;
+}
+
+}  // namespace scalcal

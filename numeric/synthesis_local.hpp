@@ -1,0 +1,28 @@
+// One local optimisation of a program for one criterion by Ipopt (the building block of the
+// multistart in synthesis.cpp). Positions are unit vectors held by norm constraints, so there are
+// no angle poles; S and E use exact smooth reformulations (epigraph; M/N - sI = L L^T).
+#pragma once
+#include "numeric/criterion_kind.hpp"
+#include "numeric/program.hpp"
+
+namespace scalcal {
+
+struct LocalOptions {
+  double tolerance = 1e-10;  // Ipopt's tol
+  int max_iterations = 3000;
+};
+
+struct LocalResult {
+  Program program;     // unit vectors (renormalised after Ipopt)
+  double value = 0;    // normalised criterion of `program`, from evaluate()
+  bool converged = false;
+  int status = 0;      // Ipopt's ApplicationReturnStatus
+  int iterations = 0;
+};
+
+LocalResult optimize_locally(const Program& start, CriterionKind criterion, const LocalOptions& options = {});
+
+// The normalised criterion of a program (evaluate(), one field); +infinity when rank < 9.
+double criterion_value(const Program& program, CriterionKind criterion);
+
+}  // namespace scalcal
