@@ -29,6 +29,8 @@ void figure_limits(Context& ctx) {
   paper.row({"A", "18", CsvWriter::num(ctx.paper[0].ev.A)});
   paper.row({"E", "18", CsvWriter::num(ctx.paper[1].ev.E)});
   paper.row({"S", "18", CsvWriter::num(ctx.paper[2].ev.S)});
+  csv.close();
+  paper.close();
   std::string body = "set multiplot layout 2,2 title 'optimum of each normalised criterion against N (scalcal), with its "
                      "limit N → ∞'\nset grid\nset xrange [8:31]\nset xlabel 'N'\nset key top right\n";
   const char* labels[] = {"D = N^9 det K", "A = N trace K", "E = N λ_{max}(K)", "S = N max_r K(r,r)"};
@@ -36,7 +38,7 @@ void figure_limits(Context& ctx) {
     const auto lim = criterion_limit(c);
     const std::string cn(criterion_name(c));
     body += "set title '" + cn + "-criterion'\nset ylabel '" + labels[static_cast<int>(c)] + "'\n" +
-            (c == CriterionKind::D ? "set format y '%.2t·10^{%T}'\n" : "set format y '%g'\n") +
+            (c == CriterionKind::D ? "set format y '%.4t·10^{%T}'\n" : "set format y '%g'\n") +
             "plot 'fig10.csv' skip 1 using 2:(strcol(1) eq '" + cn + "' ? $3 : NaN) with linespoints pt 9 ps 1.3 lc rgb '" +
             plots::style::optimised + "' title 'scalcal optimum', \\\n     " + CsvWriter::num(lim.value) +
             " with lines lw 2 lc rgb '" + plots::style::limit + "' title " + plots::gp_quote("limit " + std::string(lim.exact)) +

@@ -24,10 +24,11 @@ void figure_sphere(Context& ctx) {
       csv.row({std::to_string(e->ev.positions), std::to_string(i + 1), CsvWriter::num(v(0)), CsvWriter::num(v(1)),
                CsvWriter::num(v(2))});
     }
+  csv.close();
   std::string body =
       "set multiplot layout 1,2 title 'D-optimal programs (scalcal): positions η on the unit sphere, meter axes X Y Z'\n"
       "set parametric\nset urange [0:2*pi]\nset vrange [-pi/2:pi/2]\nset isosamples 13,9\nset view equal xyz\n"
-      "set view 62,35,1.35\nunset border\nunset tics\nset hidden3d front offset 0\nset xrange [-1.3:1.3]\n"
+      "set view 62,35,1.35\nunset border\nunset tics\nset xrange [-1.3:1.3]\n"
       "set yrange [-1.3:1.3]\nset zrange [-1.3:1.3]\nunset key\n"
       "set arrow 1 from 0,0,0 to 1.3,0,0 lw 2 lc rgb 'black' front\nset arrow 2 from 0,0,0 to 0,1.3,0 lw 2 lc rgb 'black' front\n"
       "set arrow 3 from 0,0,0 to 0,0,1.3 lw 2 lc rgb 'black' front\nset label 1 'X' at 1.42,0,0 front\n"

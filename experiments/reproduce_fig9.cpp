@@ -58,6 +58,8 @@ void figure_9(Context& ctx) {
             " ? $4 : NaN):5 with lines lw 2.5 dt " + it.dash + " lc rgb '" + it.colour + "' title " +
             plots::gp_quote(it.label);
   }
+  pts.close();
+  cov.close();
   const std::string body =
       "set grid\nset size ratio -1\nset xlabel 'scale-factor deviation error  √N σ_{δk} / σ_ω'\n"
       "set ylabel 'non-orthogonality error  √N σ_γ / σ_ω'\nset key outside right top\nset xzeroaxis\nset yzeroaxis\n"

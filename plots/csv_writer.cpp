@@ -23,6 +23,12 @@ void CsvWriter::row(const std::vector<std::string>& cells) {
   if (!out_) throw std::runtime_error("cannot write " + path_.string());
 }
 
+void CsvWriter::close() {
+  if (!out_.is_open()) return;
+  out_.close();
+  if (!out_) throw std::runtime_error("cannot write " + path_.string());
+}
+
 std::string CsvWriter::num(double x) {
   if (!std::isfinite(x)) return "";
   char buf[40];

@@ -17,6 +17,9 @@ class CsvWriter {
   // One row; it must have as many cells as the header.
   void row(const std::vector<std::string>& cells);
 
+  // Flushes and closes the file (the destructor does too): call it before gnuplot reads the file.
+  void close();
+
   const std::filesystem::path& path() const { return path_; }
 
   static std::string num(double x);  // %.17g, empty when not finite
