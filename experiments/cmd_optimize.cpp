@@ -6,6 +6,9 @@
 #include "experiments/command.hpp"
 #include "experiments/json.hpp"
 #include "experiments/synthesis_cli.hpp"
+#include <optional>
+
+#include "numeric/polish.hpp"
 #include "numeric/synthesis.hpp"
 
 namespace scalcal::cli {
@@ -19,6 +22,7 @@ int run(Args& args) {
   opt.starts = static_cast<int>(args.integer("starts", 0, 1, 1000000));
   opt.seed = static_cast<std::uint64_t>(args.integer("seed", 1, 0, (1LL << 62)));
   opt.threads = static_cast<int>(args.integer("threads", 0, 0, 256));
+  const int digits = static_cast<int>(args.integer("digits", 0, 1, 1000));
   const auto out_file = args.value("out");
   const bool json = args.flag("json");
   if (!args.positionals().empty()) throw UsageError("unexpected positional argument");
@@ -26,6 +30,16 @@ int run(Args& args) {
     opt.progress = [](int done, int total) { std::cerr << "\rstart " << done << "/" << total << std::flush; };
   const SynthesisResult r = synthesize(opt);
   if (opt.progress) std::cerr << "\n";
+  std::optional<PolishResult> polished;
+  if (digits > 0) {
+    if (opt.progress) std::cerr << "polishing at " << digits << " digits\n";
+    polished = polish(r.program, opt.criterion, PolishOptions{digits, 40});
+    if (!polished->supported)
+      std::cerr << "scalcal optimize: warning: no high-precision polish for criterion E yet; value_digits is the double optimum\n";
+    else if (!polished->converged)
+      std::cerr << "scalcal optimize: warning: the polish did not converge (residual " << polished->residual << "); value_digits keeps "
+                << polished->digits << " digits\n";
+  }
   if (out_file) write_program_file(*out_file, r.program);
   if (json) {
     Json j = Json::object();
@@ -36,12 +50,20 @@ int run(Args& args) {
     j.set("starts", r.starts);
     j.set("hits", r.hits);
     j.set("seconds", r.seconds);
+    if (polished) {
+      j.set("value_digits", polished->value_digits);
+      j.set("residual", polished->residual);
+    }
     j.dump(std::cout);
     std::cout << "\n";
   } else {
     std::cout << criterion_name(opt.criterion) << " = " << std::setprecision(15) << r.value << "  (N = " << opt.positions
               << ", " << r.hits << " of " << r.starts << " starts reached it, " << std::setprecision(3) << r.seconds
               << " s)\n";
+    if (polished)
+      std::cout << criterion_name(opt.criterion) << " = " << polished->value_digits << "  (" << polished->digits
+                << " digits, residual " << std::setprecision(3) << polished->residual << ", " << polished->iterations
+                << " Newton steps)\n";
   }
   return 0;
 }

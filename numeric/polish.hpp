@@ -1,0 +1,32 @@
+// High-precision confirmation of an optimum: Newton's method on the first-order (KKT) conditions
+// in MPFR arithmetic, with least-squares (minimum-norm) steps because symmetries (rotations for D,
+// manifolds of 4-designs for N >= 16) make the Jacobian singular. D, A and S; not yet E.
+#pragma once
+#include <string>
+
+#include "numeric/criterion_kind.hpp"
+#include "numeric/program.hpp"
+
+namespace scalcal {
+
+struct PolishOptions {
+  int digits = 50;          // significant digits wanted in value_digits
+  int max_iterations = 40;
+};
+
+struct PolishResult {
+  bool supported = false;   // false for E: value_digits is then the double optimum at 15 digits
+  bool converged = false;   // residual small enough that every printed digit is true
+  int iterations = 0;
+  double residual = 0;      // 2-norm of the first-order conditions at the polished program
+  int digits = 0;           // significant digits in value_digits (fewer than asked when not converged)
+  std::string value_digits; // the normalised criterion, decimal
+  Program program;          // the polished program, rounded to double
+  int active = 0;           // S: number of active diagonal elements K(r,r) at the optimum
+};
+
+// Starts from `program` (a double optimum, e.g. from synthesize). Uses the process-wide MPFR
+// default precision while it runs (restored afterwards): call it from one thread at a time.
+PolishResult polish(const Program& program, CriterionKind criterion, const PolishOptions& options = {});
+
+}  // namespace scalcal
