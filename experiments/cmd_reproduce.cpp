@@ -59,6 +59,12 @@ int run(Args& args) {
     preamble += "\n> **--quick run:** small sweeps (few random programs, few optimiser starts, few N); numbers "
                 "are indicative only. Run `scalcal reproduce` without --quick for the full results.\n";
   if (!ctx.optimiser) preamble += "\n> **MISSING:** " + ctx.optimiser_note + "\n";
+  if (!ctx.optimiser_failures.empty()) {
+    preamble += "\n> **MISSING (optimiser failures):** these optimised programs were rejected because scalcal's own "
+                "evaluation contradicts them (a near-singular or non-positive-definite information matrix); they "
+                "are left out of every figure and table:\n";
+    for (const auto& f : ctx.optimiser_failures) preamble += ">\n> - " + f + "\n";
+  }
   std::string epilogue = "\n## Run\n\n| stage | seconds |\n| --- | ---: |\n";
   for (const auto& [name, s] : ctx.timings) epilogue += "| " + name + " | " + reproduce::fmt(s, 3) + " |\n";
   epilogue += "| **total** | " + reproduce::fmt(total, 3) + " |\n\nSeed " + std::to_string(options.seed) + ", " +

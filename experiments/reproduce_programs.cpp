@@ -220,7 +220,20 @@ void compute_optimised(Context& ctx) {
       e.starts = r.starts;
       e.hits = r.hits;
       e.seconds = r.seconds;
-      ctx.optimised.emplace(std::make_pair(plan.criterion, n), std::move(e));
+      // A result is kept only if scalcal's own evaluation confirms it: full rank and a positive,
+      // finite criterion. Anything else is reported as a failed optimisation, never plotted.
+      const double values[] = {e.ev.D, e.ev.A, e.ev.E, e.ev.S};
+      const double v = values[static_cast<int>(plan.criterion)];
+      if (!e.ev.full_rank() || !std::isfinite(v) || v <= 0 || e.ev.lambda_max_K <= 0) {
+        ctx.optimiser_note = "the optimiser's result was rejected (see the list of optimiser failures at the top).";
+        ctx.optimiser_failures.push_back(std::string(criterion_name(plan.criterion)) + ", N = " + std::to_string(n) +
+                                         ": synthesize() returned value " + fmt(r.value) +
+                                         "; scalcal's evaluation of its program gives " +
+                                         std::string(criterion_name(plan.criterion)) + " = " + fmt(v) + ", rank " +
+                                         std::to_string(e.ev.rank) + ", condition " + fmt(e.ev.condition, 3));
+      } else {
+        ctx.optimised.emplace(std::make_pair(plan.criterion, n), std::move(e));
+      }
       ++done;
     }
   ctx.timings.emplace_back("optimised programs", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
