@@ -105,7 +105,7 @@ void figures_4_5_6(Context& ctx) {
                     class_plot(5, ctx, false));
   render_figure(ctx, "fig5", "N^9 det K against N (the paper's Fig. 5)",
                 common +
-                    "set logscale y\nset ylabel 'N^9 det K'\nset format y '%.0e'\nset key top right box opaque\n"
+                    "set logscale y\nset ylabel 'N^9 det K'\nset format y '10^{%L}'\nset key top right box opaque\n"
                     "LIMIT = " + CsvWriter::num(limit) + "\n" + class_plot(6, ctx, true));
 
   // Fig. 6: the lower part, linear, with the N whose optimum misses the limit circled.
@@ -113,7 +113,7 @@ void figures_4_5_6(Context& ctx) {
   for (int n : ctx.optimised_sizes(CriterionKind::D)) top = std::max(top, 1.05 * ctx.optimum(CriterionKind::D, n)->ev.D);
   top = std::min(top, 3.2e7);
   std::string body = common + "set ylabel 'N^9 det K'\nset format y '%.2t·10^{%T}'\nset yrange [1.45e7:" +
-                     CsvWriter::num(top) + "]\nset key outside below horizontal maxrows 3 box\nLIMIT = " + CsvWriter::num(limit) + "\n";
+                     CsvWriter::num(top) + "]\nset key outside below center horizontal maxcols 2 box spacing 1.1\nLIMIT = " + CsvWriter::num(limit) + "\n";
   body += "set label 1 'limit 61509375/4' at 45, LIMIT offset 0,-0.9 right tc rgb '" + std::string(plots::style::limit) +
           "'\n";
   std::string plot = class_plot(6, ctx, true);
@@ -123,7 +123,8 @@ void figures_4_5_6(Context& ctx) {
             "lc rgb '" + std::string(plots::style::limit) + "' title 'optimum misses the limit', \\\n"
             "     '' skip 1 using 4:(strcol(13) eq '1' ? $6 : NaN):(sprintf('%d', $4)) with labels offset 0,1.6 notitle\n";
   }
-  render_figure(ctx, "fig6", "lower part of N^9 det K with the analytic limit (the paper's Fig. 6)", body + plot);
+  render_figure(ctx, "fig6", "lower part of N^9 det K with the analytic limit (the paper's Fig. 6)", body + plot, 1200,
+                900);
 
   auto& r = ctx.report;
   r.heading(2, "Figs. 4-6: generalized variance");
