@@ -56,7 +56,7 @@ int run(Args& args) {
       "theta_q = sqrt(N max K(r,r)) over each group of three parameters (bias, scale-factor deviation, "
       "non-orthogonality), in units of the noise RMS sigma_omega.\n";
   if (options.quick)
-    preamble += "\n> **--quick run:** small sweeps (few random programs, few optimiser starts, few N); numbers "
+    preamble += "\n> **--quick run:** small sweeps (2-4 optimiser starts, few N); numbers "
                 "are indicative only. Run `scalcal reproduce` without --quick for the full results.\n";
   if (!ctx.optimiser) preamble += "\n> **MISSING:** " + ctx.optimiser_note + "\n";
   if (!ctx.optimiser_failures.empty()) {

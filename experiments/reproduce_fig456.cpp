@@ -91,9 +91,9 @@ void figures_4_5_6(Context& ctx) {
     }
   }
   {
-    CsvWriter csv(ctx.file("fig4_random.csv"), {"N", "count", "seed_of_best", "det_K", "D"});
+    CsvWriter csv(ctx.file("fig4_random.csv"), {"N", "count", "seed", "det_K", "D"});
     for (const auto& [n, e] : ctx.random_best)
-      csv.row({std::to_string(n), std::to_string(ctx.random_count), e.name.substr(e.name.rfind("-s") + 2),
+      csv.row({std::to_string(n), std::to_string(ctx.random_count), std::to_string(ctx.options.seed),
                CsvWriter::num(e.ev.det_K), CsvWriter::num(e.ev.D)});
   }
   const std::string common =
@@ -133,8 +133,8 @@ void figures_4_5_6(Context& ctx) {
   r.figure("fig6", "Fig. 6: lower part of N^9 det K, with the analytic limit 61509375/4");
   r.paragraph("Data: [fig4_programs.csv](fig4_programs.csv) (every program drawn, with all criteria) and "
               "[fig4_random.csv](fig4_random.csv) (the best of " + std::to_string(ctx.random_count) +
-              " programs uniform on the sphere per N, with the seed that regenerates it: `scalcal evaluate "
-              "random-N-sSEED`).");
+              " programs uniform on the sphere per N; `scalcal random --positions N --count " +
+              std::to_string(ctx.random_count) + " --seed " + std::to_string(ctx.options.seed) + "` regenerates each).");
   if (!ctx.optimiser) r.missing("optimised D-criterion programs (triangles) and the N that miss the limit: " + ctx.optimiser_note);
   if (ctx.optimiser) {
     std::vector<std::vector<std::string>> rows;
