@@ -23,6 +23,13 @@ std::string read_all(const std::filesystem::path& p) {
   return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
 
+// A POSIX shell word in single quotes ('\'' for a quote).
+std::string shell_quote(const std::string& s) {
+  std::string q = "'";
+  for (char c : s) q += (c == '\'') ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
 bool non_empty(const std::filesystem::path& p) {
   std::error_code ec;
   return std::filesystem::exists(p, ec) && std::filesystem::file_size(p, ec) > 0;
@@ -58,7 +65,7 @@ RenderedFigure render(const std::filesystem::path& dir, const FigureSpec& spec) 
   {
     // gnuplot runs in the output folder so the script's relative data paths hold; its messages
     // go to a log that is kept only when it is not empty.
-    Gnuplot gp(std::string(SCALCAL_GNUPLOT) + " 2> " + gp_quote(log.string()));
+    Gnuplot gp(std::string(SCALCAL_GNUPLOT) + " 2> " + shell_quote(log.string()));
     gp << "cd " << gp_quote(fs::absolute(dir).string()) << "\nload " << gp_quote(spec.name + ".gp") << "\n";
   }  // the destructor waits for gnuplot to finish
   const std::string messages = read_all(log);
