@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cstdio>
+#include <iostream>
 #include <chrono>
 #include <limits>
 #include <stdexcept>
@@ -78,6 +80,9 @@ std::vector<LocalResult> run_starts(const SynthesisOptions& options, int starts)
     return results;
   }
   const std::size_t record = static_cast<std::size_t>(kHeader + 3 * options.positions);
+  std::cout.flush();  // a forked worker must not inherit (and later repeat) buffered output
+  std::cerr.flush();
+  std::fflush(nullptr);
   std::vector<pollfd> fds;
   std::vector<pid_t> pids;
   for (int w = 0; w < workers; ++w) {

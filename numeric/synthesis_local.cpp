@@ -129,14 +129,23 @@ LocalResult optimize_locally(const Program& start, CriterionKind criterion, cons
   if (!std::isfinite(out.value)) return out;  // a rank-deficient start cannot be optimised
 
   Ipopt::SmartPtr<ProgramNlp> nlp = new ProgramNlp(*problem, problem->start(start));
-  Ipopt::SmartPtr<Ipopt::IpoptApplication> app = IpoptApplicationFactory();
-  app->Options()->SetIntegerValue("print_level", 0);
-  app->Options()->SetStringValue("sb", "yes");
-  app->Options()->SetStringValue("hessian_approximation", "limited-memory");
+  // One application per thread, reused: creating and initialising Ipopt costs more than a whole
+  // D optimisation at N = 18. (Sequential MUMPS is not thread-safe: synthesize() forks instead.)
+  thread_local Ipopt::SmartPtr<Ipopt::IpoptApplication> app;
+  if (Ipopt::IsNull(app)) {
+    app = IpoptApplicationFactory();
+    app->Options()->SetIntegerValue("print_level", 0);
+    app->Options()->SetStringValue("sb", "yes");
+    app->Options()->SetStringValue("hessian_approximation", "limited-memory");
+    app->Options()->SetStringValue("mu_strategy", "adaptive");
+    if (app->Initialize() != Ipopt::Solve_Succeeded) {
+      app = nullptr;
+      return out;
+    }
+  }
   app->Options()->SetNumericValue("tol", options.tolerance);
-  app->Options()->SetIntegerValue("max_iter", options.max_iterations);
-  app->Options()->SetStringValue("mu_strategy", "adaptive");
-  if (app->Initialize() != Ipopt::Solve_Succeeded) return out;
+  app->Options()->SetIntegerValue("max_iter", options.max_iterations > 0 ? options.max_iterations
+                                                   : criterion == CriterionKind::E ? 800 : 3000);
   const Ipopt::ApplicationReturnStatus status = app->OptimizeTNLP(Ipopt::SmartPtr<Ipopt::TNLP>(GetRawPtr(nlp)));
   out.status = static_cast<int>(status);
   out.converged = status == Ipopt::Solve_Succeeded || status == Ipopt::Solved_To_Acceptable_Level;

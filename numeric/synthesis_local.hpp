@@ -9,7 +9,7 @@ namespace scalcal {
 
 struct LocalOptions {
   double tolerance = 1e-10;  // Ipopt's tol
-  int max_iterations = 3000;
+  int max_iterations = 0;  // 0: 3000, or 800 for E (a start that needs more is abandoned)
 };
 
 struct LocalResult {

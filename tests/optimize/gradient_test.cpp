@@ -1,0 +1,65 @@
+// Every derivative the optimiser is given is checked against central differences of the values.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "numeric/synthesis_problems.hpp"
+
+namespace scalcal {
+namespace {
+
+class Gradients : public ::testing::TestWithParam<CriterionKind> {};
+
+TEST_P(Gradients, MatchCentralDifferences) {
+  const int n = 11;
+  const auto problem = make_problem(GetParam(), n);
+  std::vector<double> x = problem->start(Program::random(n, 7));
+  for (std::size_t i = 0; i < 3 * static_cast<std::size_t>(n); ++i) x[i] *= 1.0 + 0.01 * std::sin(double(i));  // off the sphere too
+  const int nv = problem->variables(), m = problem->constraints();
+  double f;
+  std::vector<double> grad(static_cast<std::size_t>(nv), 0.0), jac(static_cast<std::size_t>(m * nv), 0.0),
+      g(static_cast<std::size_t>(m));
+  ASSERT_TRUE(problem->objective(x.data(), f, grad.data()));
+  if (m > 0) ASSERT_TRUE(problem->constraint_values(x.data(), g.data(), jac.data()));
+  const double h = 1e-6;
+  for (int j = 0; j < nv; ++j) {
+    std::vector<double> xp = x, xm = x;
+    xp[static_cast<std::size_t>(j)] += h;
+    xm[static_cast<std::size_t>(j)] -= h;
+    double fp, fm;
+    ASSERT_TRUE(problem->objective(xp.data(), fp, nullptr));
+    ASSERT_TRUE(problem->objective(xm.data(), fm, nullptr));
+    const double fd = (fp - fm) / (2 * h);
+    EXPECT_NEAR(grad[static_cast<std::size_t>(j)], fd, 1e-6 * (1 + std::abs(fd))) << "objective, variable " << j;
+    if (m == 0) continue;
+    std::vector<double> gp(static_cast<std::size_t>(m)), gm(static_cast<std::size_t>(m));
+    ASSERT_TRUE(problem->constraint_values(xp.data(), gp.data(), nullptr));
+    ASSERT_TRUE(problem->constraint_values(xm.data(), gm.data(), nullptr));
+    for (int r = 0; r < m; ++r) {
+      const double fdr = (gp[static_cast<std::size_t>(r)] - gm[static_cast<std::size_t>(r)]) / (2 * h);
+      EXPECT_NEAR(jac[static_cast<std::size_t>(r * nv + j)], fdr, 1e-6 * (1 + std::abs(fdr)))
+          << "constraint " << r << ", variable " << j;
+    }
+  }
+}
+
+TEST(Gradients, StartsAreFeasibleForTheReformulations) {
+  // E: M/N - s I = L L^T must hold at the start; S: every N K(r,r) <= t.
+  for (CriterionKind c : {CriterionKind::E, CriterionKind::S}) {
+    const auto problem = make_problem(c, 14);
+    const std::vector<double> x = problem->start(Program::random(14, 3));
+    std::vector<double> g(static_cast<std::size_t>(problem->constraints()));
+    ASSERT_TRUE(problem->constraint_values(x.data(), g.data(), nullptr));
+    for (double v : g) {
+      if (c == CriterionKind::E) EXPECT_NEAR(v, 0.0, 1e-12);
+      else EXPECT_LE(v, 0.0);
+    }
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(AllCriteria, Gradients,
+                         ::testing::Values(CriterionKind::D, CriterionKind::A, CriterionKind::E, CriterionKind::S));
+
+}  // namespace
+}  // namespace scalcal

@@ -1,0 +1,87 @@
+// Known answers: the D-optimum reaches 61509375/4 exactly when a spherical 4-design exists (N = 12
+// yes, N = 9 no; Hardin & Sloane 1996); A and S reach 45 + 18 sqrt2 and 6 + 3 sqrt3 at N = 18, below
+// the paper's Tables 1 and 3; the polish confirms the limits to 45 digits.
+#include <gtest/gtest.h>
+
+#include <boost/multiprecision/cpp_bin_float.hpp>
+
+#include "numeric/catalogue.hpp"
+#include "numeric/evaluation.hpp"
+#include "numeric/polish.hpp"
+#include "numeric/synthesis.hpp"
+
+namespace scalcal {
+namespace {
+
+using mp60 = boost::multiprecision::number<boost::multiprecision::cpp_bin_float<60>, boost::multiprecision::et_off>;
+
+SynthesisResult run(int n, CriterionKind c, int starts) {
+  SynthesisOptions o;
+  o.positions = n;
+  o.criterion = c;
+  o.starts = starts;
+  o.seed = 3;
+  return synthesize(o);
+}
+
+TEST(Synthesis, DReachesTheLimitAtTwelveNotAtNine) {
+  const double limit = 61509375.0 / 4.0;
+  const SynthesisResult twelve = run(12, CriterionKind::D, 6);
+  EXPECT_NEAR(twelve.value / limit, 1.0, 1e-9);
+  EXPECT_GE(twelve.hits, 1);
+  const SynthesisResult nine = run(9, CriterionKind::D, 6);
+  EXPECT_GT(nine.value / limit, 1.2);  // no 4-design of 9 points
+  EXPECT_NEAR(evaluate(nine.program).D, nine.value, 1e-9 * nine.value);
+  for (const auto& p : nine.program.positions) EXPECT_NEAR(p.norm(), 1.0, 1e-12);
+}
+
+TEST(Synthesis, ResultDoesNotDependOnWorkerCount) {
+  SynthesisOptions o;
+  o.positions = 12;
+  o.starts = 4;
+  o.threads = 1;
+  const SynthesisResult a = synthesize(o);
+  o.threads = 2;
+  const SynthesisResult b = synthesize(o);
+  EXPECT_EQ(a.value, b.value);
+  EXPECT_EQ(a.hits, b.hits);
+  EXPECT_EQ(a.program.positions[0], b.program.positions[0]);
+}
+
+TEST(Synthesis, BeatsThePaperTablesAtEighteen) {
+  const double a_limit = 45 + 18 * std::sqrt(2.0), s_limit = 6 + 3 * std::sqrt(3.0);
+  const SynthesisResult a = run(18, CriterionKind::A, 3);
+  EXPECT_NEAR(a.value, a_limit, 1e-8);
+  EXPECT_LT(a.value, evaluate(*named_program("table1-A")).A);
+  const SynthesisResult s = run(18, CriterionKind::S, 3);
+  EXPECT_NEAR(s.value, s_limit, 1e-7);
+  EXPECT_LT(s.value, evaluate(*named_program("table3-S")).S);
+}
+
+TEST(Polish, FortyFiveDigitsWhereTheLimitIsReached) {
+  const SynthesisResult r = run(12, CriterionKind::D, 4);
+  const PolishResult p = polish(r.program, CriterionKind::D, PolishOptions{50, 40});
+  ASSERT_TRUE(p.converged);
+  EXPECT_LT(p.residual, 1e-55);
+  using boost::multiprecision::abs;
+  EXPECT_LT(abs(mp60(p.value_digits) - mp60(61509375) / 4), mp60("1e-40"));
+
+  const SynthesisResult a = run(18, CriterionKind::A, 2);
+  const PolishResult pa = polish(a.program, CriterionKind::A, PolishOptions{50, 40});
+  ASSERT_TRUE(pa.converged);
+  EXPECT_LT(abs(mp60(pa.value_digits) - (mp60(45) + 18 * sqrt(mp60(2)))), mp60("1e-45"));
+}
+
+TEST(Polish, NineIsConfirmedAboveTheLimit) {
+  const SynthesisResult r = run(9, CriterionKind::D, 4);
+  const PolishResult p = polish(r.program, CriterionKind::D, PolishOptions{40, 40});
+  ASSERT_TRUE(p.converged);
+  EXPECT_EQ(p.digits, 40);
+  // The polished value agrees with the double optimum, and more digits change nothing.
+  EXPECT_NEAR(std::stod(p.value_digits) / r.value, 1.0, 1e-9);
+  const PolishResult q = polish(p.program, CriterionKind::D, PolishOptions{60, 40});
+  EXPECT_EQ(q.value_digits.substr(0, 30), p.value_digits.substr(0, 30));
+}
+
+}  // namespace
+}  // namespace scalcal
