@@ -121,9 +121,9 @@ void compute_random(Context& ctx) {
 void compute_optimised(Context& ctx) {
   ctx.optimiser = true;
   const auto t0 = std::chrono::steady_clock::now();
-  // Ipopt's linear solver (MUMPS) is not thread-safe: two optimisations at once abort the process,
-  // so the multistart runs on one thread and the plan is sized for the 10-minute budget. starts = 0
-  // is synthesize()'s own default (meant to find the global optimum for N <= 30).
+  // synthesize() runs its starts in worker processes (Ipopt's MUMPS is not thread-safe), on all
+  // cores; the plan is sized for the 10-minute budget. starts = 0 is synthesize()'s own default
+  // (meant to find the global optimum for N <= 30).
   struct Plan {
     CriterionKind criterion;
     std::vector<int> sizes;
@@ -158,7 +158,7 @@ void compute_optimised(Context& ctx) {
       so.criterion = plan.criterion;
       so.starts = plan.starts;
       so.seed = ctx.options.seed;
-      so.threads = 1;
+      so.threads = ctx.threads();
       so.progress = [&ctx](int d, int t) { ctx.progress.step(d, t); };
       const SynthesisResult r = synthesize(so);
       Entry e = make_entry("optimised",

@@ -8,7 +8,6 @@
 #include <limits>
 #include <vector>
 
-#include <Eigen/Eigenvalues>
 #include <Eigen/SVD>
 
 #include "numeric/design.hpp"
@@ -39,28 +38,34 @@ using Evaluation = EvaluationTpl<double>;
 
 namespace detail {
 
-// Rank of H by its singular values, with the usual tolerance max(N, 9) eps sigma_max; the
-// parameters whose unit vector has a component in the null space are not identifiable.
+// Everything comes from the SVD of H, not from an eigen-decomposition of H^T H: squaring H
+// squares its condition number, and a nearly singular program would otherwise get a tiny or even
+// negative eigenvalue (and so a negative det K or lambda_max K). With H = U diag(sigma) V^T,
+// K = V diag(sigma^-2) V^T exactly. The rank uses the usual tolerance max(N, 9) eps sigma_max;
+// a parameter whose unit vector has a component in the null space is not identifiable.
 template <class Scalar>
-void rank_and_identifiability(const std::vector<Vec3T<Scalar>>& positions, EvaluationTpl<Scalar>& ev) {
-  using std::abs;
+Vec9T<Scalar> singular_values(const std::vector<Vec3T<Scalar>>& positions, EvaluationTpl<Scalar>& ev,
+                              Mat9T<Scalar>& V) {
   using std::sqrt;
   const DesignMatrixT<Scalar> H = design_matrix(positions);
   Eigen::JacobiSVD<DesignMatrixT<Scalar>> svd(H, Eigen::ComputeFullV);
-  const auto& sigma = svd.singularValues();
+  Vec9T<Scalar> sigma = Vec9T<Scalar>::Zero();
+  sigma.head(svd.singularValues().size()) = svd.singularValues();
+  V = svd.matrixV();
   const Scalar eps = Eigen::NumTraits<Scalar>::epsilon();
-  const Scalar tol = Scalar(std::max<int>(static_cast<int>(positions.size()), 9)) * eps *
-                     (sigma.size() > 0 ? sigma(0) : Scalar(0));
+  const Scalar tol = Scalar(std::max<int>(static_cast<int>(positions.size()), 9)) * eps * sigma(0);
   int rank = 0;
-  for (Eigen::Index i = 0; i < sigma.size(); ++i)
+  for (int i = 0; i < kParameters; ++i)
     if (sigma(i) > tol) ++rank;
   ev.rank = rank;
   ev.unidentifiable.clear();
-  if (rank == kParameters) return;
-  const auto null_space = svd.matrixV().rightCols(kParameters - rank);
-  const Scalar threshold = sqrt(eps);
-  for (int r = 0; r < kParameters; ++r)
-    if (null_space.row(r).norm() > threshold) ev.unidentifiable.push_back(r);
+  if (rank < kParameters) {
+    const auto null_space = V.rightCols(kParameters - rank);
+    const Scalar threshold = sqrt(eps);
+    for (int r = 0; r < kParameters; ++r)
+      if (null_space.row(r).norm() > threshold) ev.unidentifiable.push_back(r);
+  }
+  return sigma;
 }
 
 }  // namespace detail
@@ -71,7 +76,8 @@ EvaluationTpl<Scalar> evaluate(const ProgramTpl<Scalar>& program) {
   EvaluationTpl<Scalar> ev;
   ev.positions = program.size();
   ev.information = information_matrix(program.positions);
-  detail::rank_and_identifiability(program.positions, ev);
+  Mat9T<Scalar> V;
+  const Vec9T<Scalar> sigma = detail::singular_values(program.positions, ev, V);  // descending
   const Scalar inf = std::numeric_limits<Scalar>::infinity();
   if (!ev.full_rank()) {
     ev.condition = inf;
@@ -81,22 +87,18 @@ EvaluationTpl<Scalar> evaluate(const ProgramTpl<Scalar>& program) {
     ev.K.setZero();
     return ev;
   }
-  // The information matrix is symmetric positive definite: its eigen-decomposition gives K,
-  // det K, trace K and lambda_max(K) from the same factorisation, accurately for any scalar.
-  Eigen::SelfAdjointEigenSolver<Mat9T<Scalar>> eig(ev.information);
-  const Vec9T<Scalar> lambda = eig.eigenvalues();  // ascending
-  const Mat9T<Scalar>& V = eig.eigenvectors();
-  ev.K = V * lambda.cwiseInverse().asDiagonal() * V.transpose();
+  const Vec9T<Scalar> inv_lambda = sigma.cwiseProduct(sigma).cwiseInverse();  // eigenvalues of K
+  ev.K = V * inv_lambda.asDiagonal() * V.transpose();
   const Scalar N(program.size());
-  Scalar det_M(1), trace_K(0);
+  Scalar det_K(1), trace_K(0);
   for (int i = 0; i < kParameters; ++i) {
-    det_M *= lambda(i);
-    trace_K += Scalar(1) / lambda(i);
+    det_K *= inv_lambda(i);
+    trace_K += inv_lambda(i);
   }
-  ev.condition = lambda(8) / lambda(0);
-  ev.det_K = Scalar(1) / det_M;
+  ev.condition = (sigma(0) / sigma(8)) * (sigma(0) / sigma(8));
+  ev.det_K = det_K;
   ev.trace_K = trace_K;
-  ev.lambda_max_K = Scalar(1) / lambda(0);
+  ev.lambda_max_K = inv_lambda(8);
   const Vec9T<Scalar> diag = ev.K.diagonal();
   ev.max_diag_K = diag.maxCoeff();
   Scalar N9(1);

@@ -69,16 +69,10 @@ LocalResult run_start(const SynthesisOptions& options, int k) {
 
 std::vector<LocalResult> run_starts(const SynthesisOptions& options, int starts) {
   std::vector<LocalResult> results(static_cast<std::size_t>(starts));
-  const int workers = std::min(thread_count(options.threads), starts);
+  // Even one worker is a child process: the caller's process never initialises MUMPS, whose state a
+  // later fork would otherwise inherit.
+  const int workers = std::max(1, std::min(thread_count(options.threads), starts));
   int done = 0;
-  if (workers <= 1) {
-    for (int k = 0; k < starts; ++k) {
-      results[static_cast<std::size_t>(k)] = run_start(options, k);
-      ++done;
-      if (options.progress) options.progress(done, starts);
-    }
-    return results;
-  }
   const std::size_t record = static_cast<std::size_t>(kHeader + 3 * options.positions);
   std::cout.flush();  // a forked worker must not inherit (and later repeat) buffered output
   std::cerr.flush();

@@ -51,3 +51,24 @@ TEST(Rank, FullRankProgramHasNoUnidentifiableParameter) {
 
 }  // namespace
 }  // namespace scalcal
+
+namespace scalcal {
+namespace {
+
+// Nearly planar (z = +-1e-5): the z^2 column of H is ~1e-10, so H^T H has condition ~1e20, beyond
+// what an eigen-decomposition of H^T H resolves in double (it can return a negative eigenvalue and
+// hence a negative E). The SVD of H keeps every criterion positive and of the right size.
+TEST(Rank, NearlySingularProgramKeepsPositiveCriteria) {
+  Program p;
+  for (int j = 0; j < 12; ++j)
+    p.positions.push_back(Vec3(std::cos(0.5 * j), std::sin(0.5 * j), (j % 2 ? 1e-5 : -1e-5) * (1 + j % 3)).normalized());
+  const Evaluation ev = evaluate(p);
+  ASSERT_EQ(ev.rank, 9);
+  EXPECT_GT(ev.E, 1e15);
+  EXPECT_GT(ev.D, 0.0);
+  EXPECT_GT(ev.condition, 1e15);
+  EXPECT_GE(ev.S, ev.E / 9.0);  // max diagonal >= trace/9 >= lambda_max/9
+}
+
+}  // namespace
+}  // namespace scalcal
