@@ -141,7 +141,7 @@ void compute_optimised(Context& ctx) {
              {CriterionKind::E, {9, 18}, 2},
              {CriterionKind::S, {9, 18}, 2}};
   } else {
-    const std::vector<int> few = {9, 15, 18, 24};
+    const std::vector<int> few = {9, 12, 15, 18, 20, 24, 30};
     plans = {{CriterionKind::D, range(9, 30), 0},
              {CriterionKind::A, few, 12},
              {CriterionKind::E, few, 12},
