@@ -1,6 +1,9 @@
 // Random search on all cores. The R programs are cut into fixed chunks; chunk k has its own
 // generator seeded by (seed, k), threads take chunks from an atomic counter, and the best is the
 // lowest value, ties to the lowest (chunk, index): the result never depends on scheduling.
+// Programs are drawn kLanes at a time; for D their LDL^T factorisations run side by side (one SIMD
+// lane each) and stop early when none of them can beat the thread's best so far (a program that
+// is strictly worse than some program can never be the overall best, so this is scheduling-proof).
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -22,8 +25,62 @@ constexpr std::uint64_t kRandomStream = 0x5241'4E44'4F4D'0001ull;  // keeps apar
 struct Best {
   double value = std::numeric_limits<double>::infinity();
   long long index = -1;  // global program index (chunk * kChunk + i)
-  std::vector<double> eta;
+  std::vector<double> eta;  // xyz triples
 };
+
+struct Buffers {
+  explicit Buffers(int n) : stride(padded_size(n) + 1), xyz(static_cast<std::size_t>(3 * kLanes * stride)) {}
+  double* x(int lane) { return xyz.data() + static_cast<std::size_t>(3 * lane * stride); }
+  double* y(int lane) { return x(lane) + stride; }
+  double* z(int lane) { return x(lane) + 2 * stride; }
+  int stride;
+  std::vector<double> xyz;
+};
+
+void consider(Best& mine, double v, long long k, Buffers& buf, int lane, int n) {
+  if (v < mine.value || (v == mine.value && k < mine.index)) {
+    mine.value = v;
+    mine.index = k;
+    for (int i = 0; i < n; ++i) {
+      mine.eta[static_cast<std::size_t>(3 * i)] = buf.x(lane)[i];
+      mine.eta[static_cast<std::size_t>(3 * i + 1)] = buf.y(lane)[i];
+      mine.eta[static_cast<std::size_t>(3 * i + 2)] = buf.z(lane)[i];
+    }
+  }
+}
+
+// Programs begin..end-1 of one chunk. Compiled twice on x86-64 (AVX2 + FMA, and the baseline);
+// the loader picks one for the machine. Both give the same programs; values may differ in the
+// last bits (FMA), never the choice between programs that differ by more than rounding.
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
+__attribute__((target_clones("arch=haswell", "default")))
+#endif
+void search_chunk(Xoshiro256& rng, long long begin, long long end, int n, CriterionKind criterion, Buffers& buf,
+                  Best& mine) {
+  const int np = padded_size(n);
+  alignas(32) double m[45][kLanes];
+  double m45[45];
+  for (long long k0 = begin; k0 < end; k0 += kLanes) {
+    const int lanes = static_cast<int>(std::min<long long>(kLanes, end - k0));
+    for (int l = 0; l < lanes; ++l) {
+      sample_sphere(rng, n, buf.x(l), buf.y(l), buf.z(l));
+      accumulate_information(buf.x(l), buf.y(l), buf.z(l), np, m45);
+      for (int e = 0; e < 45; ++e) m[e][l] = m45[e];
+    }
+    if (criterion == CriterionKind::D) {
+      for (int l = lanes; l < kLanes; ++l)
+        for (int e = 0; e < 45; ++e) m[e][l] = m[e][0];  // padding lanes repeat lane 0, then are ignored
+      double v[kLanes];
+      d_criterion_batch(m, n, det_needed_for(mine.value, n), v);
+      for (int l = 0; l < lanes; ++l) consider(mine, v[l], k0 + l, buf, l, n);
+    } else {
+      for (int l = 0; l < lanes; ++l) {
+        for (int e = 0; e < 45; ++e) m45[e] = m[e][l];
+        consider(mine, score_information(m45, n, criterion), k0 + l, buf, l, n);
+      }
+    }
+  }
+}
 
 }  // namespace
 
@@ -38,21 +95,11 @@ RandomSearchResult random_search(int positions, long long count, CriterionKind c
   std::atomic<long long> next{0};
   auto worker = [&](int t) {
     Best& mine = best[static_cast<std::size_t>(t)];
-    const std::size_t n3 = static_cast<std::size_t>(3 * positions);
-    std::vector<double> eta(n3);  // the one buffer, reused by every program of this thread
-    mine.eta.assign(n3, 0.0);
+    Buffers buf(positions);  // reused by every program of this thread
+    mine.eta.assign(static_cast<std::size_t>(3 * positions), 0.0);
     for (long long c; (c = next.fetch_add(1)) < chunks;) {
       Xoshiro256 rng(start_seed(seed ^ kRandomStream, static_cast<std::uint64_t>(c)));
-      const long long end = std::min(count, (c + 1) * kChunk);
-      for (long long k = c * kChunk; k < end; ++k) {
-        for (int i = 0; i < positions; ++i) sphere_point(rng, eta.data() + 3 * i);
-        const double v = score_positions(eta.data(), positions, criterion);
-        if (v < mine.value || (v == mine.value && k < mine.index)) {
-          mine.value = v;
-          mine.index = k;
-          std::copy(eta.begin(), eta.end(), mine.eta.begin());
-        }
-      }
+      search_chunk(rng, c * kChunk, std::min(count, (c + 1) * kChunk), positions, criterion, buf, mine);
     }
   };
   std::vector<std::thread> pool;

@@ -1,10 +1,16 @@
-// The hot loop of random search: draw a program into a fixed buffer, accumulate H^T H in place,
-// Cholesky-factor it and score it, with no allocation per program. Generator: xoshiro256**
-// (Blackman & Vigna 2018) seeded by splitmix64; sphere points by Marsaglia's (1972) method.
+// The hot loop of random search: draw a program into fixed buffers, accumulate H^T H in place,
+// factor it and score it, with no allocation per program. Generator: xoshiro256** (Blackman &
+// Vigna 2018) seeded by splitmix64; sphere points by Marsaglia's (1972) method, one 64-bit draw per
+// candidate (u from its high 32 bits, v from its low 32 bits, as signed fixed point in [-1, 1)),
+// with the rejection done by branch-free compaction: the accepted candidates, and so the programs,
+// are exactly those of the plain rejection loop.
 #pragma once
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
+#include <vector>
 
 #include <Eigen/Eigenvalues>
 
@@ -30,27 +36,38 @@ class Xoshiro256 {
     s_[3] = rotl(s_[3], 45);
     return result;
   }
-  // Uniform in [-1, 1) from the top 53 bits.
-  double symmetric() { return static_cast<double>((*this)() >> 11) * 0x1.0p-52 - 1.0; }
 
  private:
   static std::uint64_t rotl(std::uint64_t x, int k) { return (x << k) | (x >> (64 - k)); }
   std::uint64_t s_[4];
 };
 
+// Positions are processed kLanes at a time; buffers hold a multiple of kLanes (padded with zero
+// vectors, which add nothing to H^T H: every entry is a monomial of degree 2 to 4).
+inline constexpr int kLanes = 4;
+constexpr int padded_size(int n) { return (n + kLanes - 1) / kLanes * kLanes; }
+
+// n points uniform on the sphere into x, y, z (each with room for padded_size(n) + 1 entries).
 // Marsaglia: (u, v) uniform in the unit disc, s = u^2 + v^2, gives
 // (2u sqrt(1-s), 2v sqrt(1-s), 1 - 2s) uniform on the sphere.
-inline void sphere_point(Xoshiro256& rng, double* out) {
-  double u, v, s;
-  do {
-    u = rng.symmetric();
-    v = rng.symmetric();
-    s = u * u + v * v;
-  } while (s >= 1.0 || s == 0.0);
-  const double r = 2.0 * std::sqrt(1.0 - s);
-  out[0] = u * r;
-  out[1] = v * r;
-  out[2] = 1.0 - 2.0 * s;
+inline void sample_sphere(Xoshiro256& rng, int n, double* x, double* y, double* z) {
+  for (int k = 0; k < n;) {
+    const std::uint64_t r = rng();
+    const double u = static_cast<double>(static_cast<std::int32_t>(static_cast<std::uint32_t>(r >> 32))) * 0x1.0p-31;
+    const double v = static_cast<double>(static_cast<std::int32_t>(static_cast<std::uint32_t>(r))) * 0x1.0p-31;
+    const double s = u * u + v * v;
+    x[k] = u;
+    y[k] = v;
+    z[k] = s;
+    k += (s < 1.0) & (s > 0.0);  // a rejected candidate is overwritten by the next one
+  }
+  for (int k = 0; k < n; ++k) {
+    const double r = 2.0 * std::sqrt(1.0 - z[k]);
+    x[k] *= r;
+    y[k] *= r;
+    z[k] = 1.0 - 2.0 * z[k];
+  }
+  for (int k = n; k < padded_size(n); ++k) x[k] = y[k] = z[k] = 0.0;
 }
 
 // H^T H has only 31 distinct entries: the sums of the monomials of degree 2, 3 and 4 in
@@ -85,22 +102,99 @@ constexpr MomentTable make_moment_table() {
 
 inline constexpr MomentTable kMoments = make_moment_table();
 
-// The normalised criterion of n positions stored as xyz triples; +infinity when H^T H is not
-// numerically positive definite. Only the lower triangle of the fixed 9x9 matrix is touched.
-inline double score_positions(const double* eta, int n, CriterionKind criterion) {
-  double acc[31] = {};
-  for (int i = 0; i < n; ++i) {
-    const double x = eta[3 * i], y = eta[3 * i + 1], z = eta[3 * i + 2];
-    const double xx = x * x, xy = x * y, xz = x * z, yy = y * y, yz = y * z, zz = z * z;
-    const double mono[31] = {xx, xy, xz, yy, yz, zz,
-                             x * xx, x * xy, x * xz, x * yy, x * yz, x * zz, y * yy, y * yz, y * zz, z * zz,
-                             xx * xx, xx * xy, xx * xz, xx * yy, xx * yz, xx * zz, xy * yy, xy * yz, xy * zz,
-                             xz * zz, yy * yy, yy * yz, yy * zz, yz * zz, zz * zz};
-    for (int k = 0; k < 31; ++k) acc[k] += mono[k];
+// The 45 entries of the lower triangle of H^T H, packed (a, b), b <= a, at a(a+1)/2 + b.
+constexpr int packed(int a, int b) { return a * (a + 1) / 2 + b; }
+
+// Moments of positions in structure-of-arrays form (n a multiple of kLanes), kLanes partial sums
+// per moment held in one vector (GCC/Clang vector extension: AVX where compiled for it, else pairs
+// of SSE2 registers); the partial sums are added in a fixed order. The degree-3 and -4 monomials
+// are products of a coordinate or a degree-2 monomial with a degree-2 monomial, fused into the
+// accumulation.
+inline void accumulate_information(const double* x, const double* y, const double* z, int n, double* m45) {
+  typedef double Lanes __attribute__((vector_size(kLanes * sizeof(double))));
+  Lanes acc[31] = {};
+  for (int i = 0; i < n; i += kLanes) {
+    Lanes X, Y, Z;
+    std::memcpy(&X, x + i, sizeof X);
+    std::memcpy(&Y, y + i, sizeof Y);
+    std::memcpy(&Z, z + i, sizeof Z);
+    const Lanes xx = X * X, xy = X * Y, xz = X * Z, yy = Y * Y, yz = Y * Z, zz = Z * Z;
+    acc[0] += xx, acc[1] += xy, acc[2] += xz, acc[3] += yy, acc[4] += yz, acc[5] += zz;
+    acc[6] += X * xx, acc[7] += X * xy, acc[8] += X * xz, acc[9] += X * yy, acc[10] += X * yz;
+    acc[11] += X * zz, acc[12] += Y * yy, acc[13] += Y * yz, acc[14] += Y * zz, acc[15] += Z * zz;
+    acc[16] += xx * xx, acc[17] += xx * xy, acc[18] += xx * xz, acc[19] += xx * yy, acc[20] += xx * yz;
+    acc[21] += xx * zz, acc[22] += xy * yy, acc[23] += xy * yz, acc[24] += xy * zz, acc[25] += xz * zz;
+    acc[26] += yy * yy, acc[27] += yy * yz, acc[28] += yy * zz, acc[29] += yz * zz, acc[30] += zz * zz;
   }
+  double sum[31];
+  for (int k = 0; k < 31; ++k) {
+    double s = 0.0;
+    for (int l = 0; l < kLanes; ++l) s += acc[k][l];
+    sum[k] = s;
+  }
+  for (int a = 0; a < 9; ++a)
+    for (int b = 0; b <= a; ++b) m45[packed(a, b)] = sum[kMoments.entry[a][b]];
+}
+
+// D = N^9 / det(H^T H) of kLanes programs at once (m[entry][program], packed lower triangles), by
+// right-looking LDL^T across the programs: the same operations, in the same order, as one program
+// alone, so a program's value does not depend on its neighbours. +infinity for a pivot <= 1e-12 N.
+// Early exit: after pivot j, det M <= d_0 ... d_j S_{j+1,j+1} ... S_88 (Hadamard's inequality on
+// the Schur complement S; in floating point too, since every update only subtracts d_j l^2 >= 0 from
+// a diagonal entry and products of smaller positive factors are smaller). When that bound is below
+// `det_needed` for every program, none of them can be a new best, and all get +infinity.
+inline void d_criterion_batch(double (*m)[kLanes], int n, double det_needed, double* out) {
+  const double N = n;
+  double n9 = 1.0;
+  for (int k = 0; k < 9; ++k) n9 *= N;
+  double det[kLanes], ok[kLanes];
+  for (int l = 0; l < kLanes; ++l) det[l] = 1.0, ok[l] = 1.0;
+  const double tiny = 1e-12 * N;
+  for (int j = 0; j < 9; ++j) {
+    double inv[kLanes];
+    for (int l = 0; l < kLanes; ++l) {
+      const double d = m[packed(j, j)][l];
+      ok[l] = d > tiny ? ok[l] : 0.0;
+      det[l] *= d;
+      inv[l] = 1.0 / d;
+    }
+    for (int i = j + 1; i < 9; ++i) {
+      double lij[kLanes];
+      for (int l = 0; l < kLanes; ++l) lij[l] = m[packed(i, j)][l] * inv[l];
+      for (int k = j + 1; k <= i; ++k)
+        for (int l = 0; l < kLanes; ++l) m[packed(i, k)][l] -= lij[l] * m[packed(k, j)][l];
+    }
+    if (j == 2 || j == 5) {
+      bool any = false;
+      for (int l = 0; l < kLanes; ++l) {
+        double bound = det[l];
+        for (int k = j + 1; k < 9; ++k) bound *= m[packed(k, k)][l];
+        any |= ok[l] != 0.0 && !(bound < det_needed);
+      }
+      if (!any) {
+        for (int l = 0; l < kLanes; ++l) out[l] = std::numeric_limits<double>::infinity();
+        return;
+      }
+    }
+  }
+  for (int l = 0; l < kLanes; ++l) out[l] = ok[l] != 0.0 ? n9 / det[l] : std::numeric_limits<double>::infinity();
+}
+
+// The determinant a program must exceed to have D below `best` (with a relative margin of 1e-12,
+// so that rounding can never exit early on a program that would win).
+inline double det_needed_for(double best, int n) {
+  if (!(best < std::numeric_limits<double>::infinity())) return 0.0;
+  double n9 = 1.0;
+  for (int k = 0; k < 9; ++k) n9 *= n;
+  return n9 / best * (1.0 - 1e-12);
+}
+
+// The normalised criterion from the packed lower triangle of H^T H; +infinity when H^T H is not
+// numerically positive definite.
+inline double score_information(const double* m45, int n, CriterionKind criterion) {
   double m[9][9];
   for (int a = 0; a < 9; ++a)
-    for (int b = 0; b <= a; ++b) m[a][b] = acc[kMoments.entry[a][b]];
+    for (int b = 0; b <= a; ++b) m[a][b] = m45[packed(a, b)];
   const double N = n;
   constexpr double inf = std::numeric_limits<double>::infinity();
   if (criterion == CriterionKind::E) {
@@ -149,6 +243,16 @@ inline double score_positions(const double* eta, int n, CriterionKind criterion)
     result = criterion == CriterionKind::A ? result + krr : std::max(result, krr);
   }
   return N * result;
+}
+
+// The normalised criterion of n positions stored as xyz triples (the kernel's reference entry).
+inline double score_positions(const double* eta, int n, CriterionKind criterion) {
+  const int np = padded_size(n);
+  std::vector<double> x(static_cast<std::size_t>(np), 0.0), y(x), z(x);
+  for (int i = 0; i < n; ++i) x[i] = eta[3 * i], y[i] = eta[3 * i + 1], z[i] = eta[3 * i + 2];
+  double m45[45];
+  accumulate_information(x.data(), y.data(), z.data(), np, m45);
+  return score_information(m45, n, criterion);
 }
 
 }  // namespace scalcal

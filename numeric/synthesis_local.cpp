@@ -35,7 +35,7 @@ class ProgramNlp : public Ipopt::TNLP {
     n = n_;
     m = p_.positions() + p_.constraints();
     nnz_jac = 3 * p_.positions() + p_.constraints() * n_;
-    nnz_h = 0;
+    nnz_h = p_.has_hessian() ? n_ * (n_ + 1) / 2 : 0;
     style = TNLP::C_STYLE;
     return true;
   }
@@ -95,6 +95,23 @@ class ProgramNlp : public Ipopt::TNLP {
     return p_.constraint_values(x, g.data(), values + 3 * N);
   }
 
+  // Lower triangle, dense: the criterion's Lagrangian Hessian plus 2 lambda_i I_3 from the norm
+  // constraints |eta_i|^2 = 1.
+  bool eval_h(Index, const Number* x, bool, Number obj_factor, Index, const Number* lambda, bool, Index,
+              Index* rows, Index* cols, Number* values) override {
+    if (values == nullptr) {
+      for (Index r = 0, k = 0; r < n_; ++r)
+        for (Index c = 0; c <= r; ++c, ++k) {
+          rows[k] = r;
+          cols[k] = c;
+        }
+      return true;
+    }
+    if (!p_.lagrangian_hessian(x, obj_factor, lambda + p_.positions(), values)) return false;
+    for (Index r = 0; r < 3 * p_.positions(); ++r) values[r * (r + 1) / 2 + r] += 2.0 * lambda[r / 3];
+    return true;
+  }
+
   void finalize_solution(Ipopt::SolverReturn, Index n, const Number* x, const Number*, const Number*, Index,
                          const Number*, const Number*, Number, const Ipopt::IpoptData*,
                          Ipopt::IpoptCalculatedQuantities*) override {
@@ -136,13 +153,13 @@ LocalResult optimize_locally(const Program& start, CriterionKind criterion, cons
     app = IpoptApplicationFactory();
     app->Options()->SetIntegerValue("print_level", 0);
     app->Options()->SetStringValue("sb", "yes");
-    app->Options()->SetStringValue("hessian_approximation", "limited-memory");
     app->Options()->SetStringValue("mu_strategy", "adaptive");
     if (app->Initialize() != Ipopt::Solve_Succeeded) {
       app = nullptr;
       return out;
     }
   }
+  app->Options()->SetStringValue("hessian_approximation", problem->has_hessian() ? "exact" : "limited-memory");
   app->Options()->SetNumericValue("tol", options.tolerance);
   app->Options()->SetIntegerValue("max_iter", options.max_iterations > 0 ? options.max_iterations
                                                    : criterion == CriterionKind::E ? 800 : 3000);

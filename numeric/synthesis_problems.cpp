@@ -29,6 +29,14 @@ void scatter(const std::vector<Vec3>& grad, double* out) {
     for (int c = 0; c < 3; ++c) out[3 * i + static_cast<std::size_t>(c)] += grad[i](c);
 }
 
+// Writes factor * H (the 3N x 3N position block) into the packed lower triangle of all variables.
+template <class Matrix>
+void pack_lower(const Matrix& H, double factor, int variables, double* lower) {
+  std::fill(lower, lower + variables * (variables + 1) / 2, 0.0);
+  for (int r = 0, k = 0; r < H.rows(); ++r)
+    for (int c = 0; c <= r; ++c, ++k) lower[k] = factor * H(r, c);
+}
+
 class DProblem : public SmoothProblem {
  public:
   using SmoothProblem::SmoothProblem;
@@ -37,6 +45,13 @@ class DProblem : public SmoothProblem {
     std::vector<Vec3> g;
     f = log_d_criterion(positions_of(x), grad ? &g : nullptr, ok);
     if (ok && grad) scatter(g, grad);
+    return ok;
+  }
+  bool has_hessian() const override { return true; }
+  bool lagrangian_hessian(const double* x, double obj_factor, const double*, double* lower) const override {
+    bool ok;
+    const auto H = log_d_hessian(positions_of(x), ok);
+    if (ok) pack_lower(H, obj_factor, variables(), lower);
     return ok;
   }
 };
@@ -49,6 +64,13 @@ class AProblem : public SmoothProblem {
     std::vector<Vec3> g;
     f = a_criterion(positions_of(x), grad ? &g : nullptr, ok);
     if (ok && grad) scatter(g, grad);
+    return ok;
+  }
+  bool has_hessian() const override { return true; }
+  bool lagrangian_hessian(const double* x, double obj_factor, const double*, double* lower) const override {
+    bool ok;
+    const auto H = a_hessian(positions_of(x), ok);
+    if (ok) pack_lower(H, obj_factor, variables(), lower);
     return ok;
   }
 };
@@ -65,6 +87,21 @@ class SProblem : public SmoothProblem {
     const Vec9 d = diagonal_criteria<double>(program.positions, nullptr, ok);
     x.back() = ok ? 1.01 * d.maxCoeff() : 1e6;
     return x;
+  }
+  // sum_r lambda_r N K(r,r): G = -N K diag(lambda) K, dG = N (K dM B + B dM K), B = K diag(lambda) K
+  // (hessian_from_dM is linear in (G, B) for fixed A and c); t enters linearly.
+  bool has_hessian() const override { return true; }
+  bool lagrangian_hessian(const double* x, double, const double* lambda, double* lower) const override {
+    const std::vector<Vec3> eta = positions_of(x);
+    bool ok;
+    const Mat9 K = inverse_information(information_matrix(eta), ok);
+    if (!ok) return false;
+    const double N = positions();
+    Vec9 l;
+    for (int r = 0; r < 9; ++r) l(r) = lambda[r];
+    const Mat9 B = K * l.asDiagonal() * K;
+    pack_lower(hessian_from_dM<double>(eta, Mat9(-N * B), K, B, N), 1.0, variables(), lower);
+    return true;
   }
   void constraint_bounds(double* lower, double* upper) const override {
     std::fill(lower, lower + 9, -2e19);
@@ -118,6 +155,32 @@ class EProblem : public SmoothProblem {
   bool objective(const double* x, double& f, double* grad) const override {
     f = -x[3 * positions()];
     if (grad) grad[3 * positions()] = -1.0;
+    return true;
+  }
+  // sum_ab lambda_ab g_ab = tr(Lambda M)/N - s tr(Lambda) - tr(Lambda L L^T), Lambda symmetric with
+  // the off-diagonal multipliers halved: position block i is (2/N)(J_i^T Lambda J_i + T(Lambda h_i)),
+  // and d^2 / dL(a,m) dL(b,m) = -2 Lambda(a,b).
+  bool has_hessian() const override { return true; }
+  bool lagrangian_hessian(const double* x, double, const double* lambda, double* lower) const override {
+    const int N = positions(), n = variables(), l0 = 3 * N + 1;
+    std::fill(lower, lower + n * (n + 1) / 2, 0.0);
+    auto at = [lower](int r, int c) -> double& { return r >= c ? lower[r * (r + 1) / 2 + c] : lower[c * (c + 1) / 2 + r]; };
+    Mat9 Lambda;
+    for (int a = 0; a < 9; ++a)
+      for (int b = 0; b <= a; ++b) Lambda(a, b) = Lambda(b, a) = a == b ? lambda[pair(a, b)] : 0.5 * lambda[pair(a, b)];
+    for (int i = 0; i < N; ++i) {
+      const Vec3 e(x[3 * i], x[3 * i + 1], x[3 * i + 2]);
+      const Mat93 J = design_jacobian(e);
+      const Vec9 w = Lambda * design_row(e);
+      Eigen::Matrix3d T;
+      T << 2 * w(3), w(6), w(8), w(6), 2 * w(4), w(7), w(8), w(7), 2 * w(5);
+      const Eigen::Matrix3d block = (2.0 / N) * (J.transpose() * Lambda * J + T);
+      for (int r = 0; r < 3; ++r)
+        for (int c = 0; c <= r; ++c) at(3 * i + r, 3 * i + c) = block(r, c);
+    }
+    for (int m = 0; m < 9; ++m)
+      for (int a = m; a < 9; ++a)
+        for (int b = m; b <= a; ++b) at(l0 + pair(a, m), l0 + pair(b, m)) = -2.0 * Lambda(a, b);
     return true;
   }
   bool constraint_values(const double* x, double* g, double* jac) const override {

@@ -25,6 +25,14 @@ class SmoothProblem {
   virtual void constraint_bounds(double* lower, double* upper) const { (void)lower; (void)upper; }
   // f(x) and, when grad is non-null, its gradient (grad is zeroed by the caller). False: undefined.
   virtual bool objective(const double* x, double& f, double* grad) const = 0;
+  // The exact Hessian of obj_factor f + sum_r lambda_r g_r (the criterion's own constraints; the
+  // norm constraints are the adapter's) over all variables, as the packed lower triangle, row by
+  // row: (r, c), c <= r, at r(r+1)/2 + c. False: not supplied (quasi-Newton) or undefined at x.
+  virtual bool has_hessian() const { return false; }
+  virtual bool lagrangian_hessian(const double* x, double obj_factor, const double* lambda, double* lower) const {
+    (void)x; (void)obj_factor; (void)lambda; (void)lower;
+    return false;
+  }
   // The criterion's constraints; jac (row-major, constraints() x variables(), zeroed by the caller).
   virtual bool constraint_values(const double* x, double* g, double* jac) const {
     (void)x; (void)g; (void)jac;

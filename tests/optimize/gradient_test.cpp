@@ -44,6 +44,57 @@ TEST_P(Gradients, MatchCentralDifferences) {
   }
 }
 
+// The exact Lagrangian Hessians (obj_factor f + sum_r lambda_r g_r) against central differences
+// of the exact gradient and constraint Jacobian.
+class Hessians : public ::testing::TestWithParam<CriterionKind> {};
+
+TEST_P(Hessians, MatchCentralDifferencesOfTheGradient) {
+  const CriterionKind c = GetParam();
+  const int n = 10;
+  const auto problem = make_problem(c, n);
+  ASSERT_TRUE(problem->has_hessian());
+  std::vector<double> x = problem->start(Program::random(n, 5));
+  for (std::size_t i = 0; i < x.size(); ++i) x[i] *= 1.0 + 0.01 * std::cos(double(i));
+  const int nv = problem->variables(), m = problem->constraints();
+  const double sigma = 0.7;
+  std::vector<double> lambda(static_cast<std::size_t>(m));
+  for (int r = 0; r < m; ++r) lambda[static_cast<std::size_t>(r)] = std::sin(1.0 + r);
+  // grad of the Lagrangian at x
+  auto lagrangian_gradient = [&](const std::vector<double>& at, std::vector<double>& out) {
+    out.assign(static_cast<std::size_t>(nv), 0.0);
+    double f;
+    if (!problem->objective(at.data(), f, out.data())) return false;
+    for (auto& v : out) v *= sigma;
+    if (m == 0) return true;
+    std::vector<double> g(static_cast<std::size_t>(m)), jac(static_cast<std::size_t>(m * nv), 0.0);
+    if (!problem->constraint_values(at.data(), g.data(), jac.data())) return false;
+    for (int r = 0; r < m; ++r)
+      for (int j = 0; j < nv; ++j)
+        out[static_cast<std::size_t>(j)] += lambda[static_cast<std::size_t>(r)] * jac[static_cast<std::size_t>(r * nv + j)];
+    return true;
+  };
+  {
+    std::vector<double> lower(static_cast<std::size_t>(nv * (nv + 1) / 2));
+    ASSERT_TRUE(problem->lagrangian_hessian(x.data(), sigma, lambda.data(), lower.data()));
+    const double h = 1e-6;
+    for (int j = 0; j < nv; ++j) {
+      std::vector<double> xp = x, xm = x, gp, gm;
+      xp[static_cast<std::size_t>(j)] += h;
+      xm[static_cast<std::size_t>(j)] -= h;
+      ASSERT_TRUE(lagrangian_gradient(xp, gp));
+      ASSERT_TRUE(lagrangian_gradient(xm, gm));
+      for (int r = 0; r < nv; ++r) {
+        const double fd = (gp[static_cast<std::size_t>(r)] - gm[static_cast<std::size_t>(r)]) / (2 * h);
+        const double exact = lower[static_cast<std::size_t>(r >= j ? r * (r + 1) / 2 + j : j * (j + 1) / 2 + r)];
+        EXPECT_NEAR(exact, fd, 1e-5 * (1 + std::abs(fd))) << criterion_name(c) << " (" << r << ", " << j << ")";
+      }
+    }
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(AllCriteria, Hessians,
+                         ::testing::Values(CriterionKind::D, CriterionKind::A, CriterionKind::E, CriterionKind::S));
+
 TEST(Gradients, StartsAreFeasibleForTheReformulations) {
   // E: M/N - s I = L L^T must hold at the start; S: every N K(r,r) <= t.
   for (CriterionKind c : {CriterionKind::E, CriterionKind::S}) {

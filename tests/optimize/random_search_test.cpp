@@ -2,6 +2,7 @@
 // the search's independence from the number of threads.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "numeric/evaluation.hpp"
@@ -37,6 +38,41 @@ TEST(RandomSearchKernel, RankDeficientIsInfinite) {
   std::vector<double> eta(27, 0.0);
   for (int i = 0; i < 9; ++i) eta[static_cast<std::size_t>(3 * i)] = (i % 2) ? 1.0 : -1.0;  // only +-x
   EXPECT_TRUE(std::isinf(score_positions(eta.data(), 9, CriterionKind::D)));
+}
+
+// The batched D of kLanes programs agrees with the one-program path; the early exit gives +infinity
+// only when every program is worse than the threshold, and never hides a program that beats it.
+TEST(RandomSearchKernel, BatchedDAndEarlyExit) {
+  const int n = 18;
+  Xoshiro256 rng(11);
+  std::vector<double> xyz(static_cast<std::size_t>(3 * (padded_size(n) + 1)));
+  double* x = xyz.data();
+  double* y = x + padded_size(n) + 1;
+  double* z = y + padded_size(n) + 1;
+  for (int trial = 0; trial < 200; ++trial) {
+    double m[45][kLanes], single[kLanes];
+    for (int l = 0; l < kLanes; ++l) {
+      sample_sphere(rng, n, x, y, z);
+      for (int i = 0; i < n; ++i) EXPECT_NEAR(x[i] * x[i] + y[i] * y[i] + z[i] * z[i], 1.0, 1e-14);
+      double m45[45];
+      accumulate_information(x, y, z, padded_size(n), m45);
+      for (int e = 0; e < 45; ++e) m[e][l] = m45[e];
+      single[l] = score_information(m45, n, CriterionKind::D);
+    }
+    double copy[45][kLanes], v[kLanes];
+    std::copy(&m[0][0], &m[0][0] + 45 * kLanes, &copy[0][0]);
+    d_criterion_batch(copy, n, 0.0, v);
+    for (int l = 0; l < kLanes; ++l) EXPECT_NEAR(v[l] / single[l], 1.0, 1e-12);
+    // Thresholds just below and above the best of the four.
+    const double best = *std::min_element(single, single + kLanes);
+    for (double factor : {0.999, 1.001}) {
+      std::copy(&m[0][0], &m[0][0] + 45 * kLanes, &copy[0][0]);
+      d_criterion_batch(copy, n, det_needed_for(best * factor, n), v);
+      const double got = *std::min_element(v, v + kLanes);
+      if (factor > 1) EXPECT_NEAR(got / best, 1.0, 1e-12);  // the winner must survive
+      else EXPECT_GE(got, best * factor);                    // exited, or a true value above it
+    }
+  }
 }
 
 TEST(RandomSearch, SameSeedSameResultWithAnyThreadCount) {
