@@ -154,6 +154,7 @@ LocalResult optimize_locally(const Program& start, CriterionKind criterion, cons
     app->Options()->SetIntegerValue("print_level", 0);
     app->Options()->SetStringValue("sb", "yes");
     app->Options()->SetStringValue("mu_strategy", "adaptive");
+    app->Options()->SetIntegerValue("min_refinement_steps", 0);  // refine only when the residual asks for it
     if (app->Initialize() != Ipopt::Solve_Succeeded) {
       app = nullptr;
       return out;
@@ -161,8 +162,8 @@ LocalResult optimize_locally(const Program& start, CriterionKind criterion, cons
   }
   app->Options()->SetStringValue("hessian_approximation", problem->has_hessian() ? "exact" : "limited-memory");
   app->Options()->SetNumericValue("tol", options.tolerance);
-  app->Options()->SetIntegerValue("max_iter", options.max_iterations > 0 ? options.max_iterations
-                                                   : criterion == CriterionKind::E ? 800 : 3000);
+  const bool long_runs = criterion == CriterionKind::E || criterion == CriterionKind::S;
+  app->Options()->SetIntegerValue("max_iter", options.max_iterations > 0 ? options.max_iterations : long_runs ? 300 : 200);
   const Ipopt::ApplicationReturnStatus status = app->OptimizeTNLP(Ipopt::SmartPtr<Ipopt::TNLP>(GetRawPtr(nlp)));
   out.status = static_cast<int>(status);
   out.converged = status == Ipopt::Solve_Succeeded || status == Ipopt::Solved_To_Acceptable_Level;
