@@ -29,7 +29,7 @@ struct Best {
 };
 
 struct Buffers {
-  explicit Buffers(int n) : stride(padded_size(n) + 1), xyz(static_cast<std::size_t>(3 * kLanes * stride)) {}
+  explicit Buffers(int n) : stride(sample_buffer_size(n)), xyz(static_cast<std::size_t>(3 * kLanes * stride)) {}
   double* x(int lane) { return xyz.data() + static_cast<std::size_t>(3 * lane * stride); }
   double* y(int lane) { return x(lane) + stride; }
   double* z(int lane) { return x(lane) + 2 * stride; }
@@ -49,13 +49,13 @@ void consider(Best& mine, double v, long long k, Buffers& buf, int lane, int n) 
   }
 }
 
-// Programs begin..end-1 of one chunk. Compiled twice on x86-64 (AVX2 + FMA, and the baseline);
-// the loader picks one for the machine. Both give the same programs; values may differ in the
-// last bits (FMA), never the choice between programs that differ by more than rounding.
+// Programs begin..end-1 of one chunk. Compiled twice on x86-64 (x86-64-v3: AVX2 + FMA, and the
+// baseline); the loader picks one for the machine. Both draw the same programs; values may differ
+// in the last bits (FMA), so only programs within rounding of each other could swap places.
 #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
-__attribute__((target_clones("arch=haswell", "default")))
+__attribute__((target_clones("arch=x86-64-v3", "default")))
 #endif
-void search_chunk(Xoshiro256& rng, long long begin, long long end, int n, CriterionKind criterion, Buffers& buf,
+void search_chunk(Xoshiro256x4& rng, long long begin, long long end, int n, CriterionKind criterion, Buffers& buf,
                   Best& mine) {
   const int np = padded_size(n);
   alignas(32) double m[45][kLanes];
@@ -98,7 +98,7 @@ RandomSearchResult random_search(int positions, long long count, CriterionKind c
     Buffers buf(positions);  // reused by every program of this thread
     mine.eta.assign(static_cast<std::size_t>(3 * positions), 0.0);
     for (long long c; (c = next.fetch_add(1)) < chunks;) {
-      Xoshiro256 rng(start_seed(seed ^ kRandomStream, static_cast<std::uint64_t>(c)));
+      Xoshiro256x4 rng(start_seed(seed ^ kRandomStream, static_cast<std::uint64_t>(c)));
       search_chunk(rng, c * kChunk, std::min(count, (c + 1) * kChunk), positions, criterion, buf, mine);
     }
   };

@@ -1,9 +1,7 @@
 // The hot loop of random search: draw a program into fixed buffers, accumulate H^T H in place,
-// factor it and score it, with no allocation per program. Generator: xoshiro256** (Blackman &
-// Vigna 2018) seeded by splitmix64; sphere points by Marsaglia's (1972) method, one 64-bit draw per
-// candidate (u from its high 32 bits, v from its low 32 bits, as signed fixed point in [-1, 1)),
-// with the rejection done by branch-free compaction: the accepted candidates, and so the programs,
-// are exactly those of the plain rejection loop.
+// factor it and score it, with no allocation per program. Generator: four xoshiro256** streams
+// (Blackman & Vigna 2018) in SIMD lanes, seeded by splitmix64; sphere points by Marsaglia's (1972)
+// method, one 64-bit draw per candidate, rejection by branch-free compaction.
 #pragma once
 #include <algorithm>
 #include <cmath>
@@ -20,46 +18,66 @@
 
 namespace scalcal {
 
-class Xoshiro256 {
+// Positions are processed kLanes at a time; buffers hold a multiple of kLanes (padded with zero
+// vectors, which add nothing to H^T H: every entry is a monomial of degree 2 to 4).
+inline constexpr int kLanes = 4;
+constexpr int padded_size(int n) { return (n + kLanes - 1) / kLanes * kLanes; }
+// Room each coordinate buffer of sample_sphere needs for n points.
+constexpr int sample_buffer_size(int n) { return padded_size(n) + kLanes; }
+
+// Four xoshiro256** streams side by side (lane l of each state word; GCC/Clang vector extension),
+// seeded by one splitmix64 chain from the seed: stream l's four words follow stream l-1's.
+class Xoshiro256x4 {
  public:
-  explicit Xoshiro256(std::uint64_t seed) {
-    for (auto& w : s_) w = seed = splitmix64(seed);
+  typedef std::uint64_t Words __attribute__((vector_size(4 * sizeof(std::uint64_t))));
+  explicit Xoshiro256x4(std::uint64_t seed) {
+    for (int l = 0; l < 4; ++l)
+      for (auto& w : s_) w[l] = seed = splitmix64(seed);
   }
-  std::uint64_t operator()() {
-    const std::uint64_t result = rotl(s_[1] * 5, 7) * 9;
-    const std::uint64_t t = s_[1] << 17;
+  // (Results go through a reference: vector types by value would change the ABI without AVX.)
+  void next(Words& result) {
+    const Words m = s_[1] * 5;
+    result = ((m << 7) | (m >> 57)) * 9;
+    const Words t = s_[1] << 17;
     s_[2] ^= s_[0];
     s_[3] ^= s_[1];
     s_[1] ^= s_[2];
     s_[0] ^= s_[3];
     s_[2] ^= t;
-    s_[3] = rotl(s_[3], 45);
-    return result;
+    s_[3] = (s_[3] << 45) | (s_[3] >> 19);
   }
 
  private:
-  static std::uint64_t rotl(std::uint64_t x, int k) { return (x << k) | (x >> (64 - k)); }
-  std::uint64_t s_[4];
+  Words s_[4];
 };
 
-// Positions are processed kLanes at a time; buffers hold a multiple of kLanes (padded with zero
-// vectors, which add nothing to H^T H: every entry is a monomial of degree 2 to 4).
-inline constexpr int kLanes = 4;
-constexpr int padded_size(int n) { return (n + kLanes - 1) / kLanes * kLanes; }
-
-// n points uniform on the sphere into x, y, z (each with room for padded_size(n) + 1 entries).
+// n points uniform on the sphere into x, y, z (each with room for sample_buffer_size(n)).
 // Marsaglia: (u, v) uniform in the unit disc, s = u^2 + v^2, gives
-// (2u sqrt(1-s), 2v sqrt(1-s), 1 - 2s) uniform on the sphere.
-inline void sample_sphere(Xoshiro256& rng, int n, double* x, double* y, double* z) {
+// (2u sqrt(1-s), 2v sqrt(1-s), 1 - 2s) uniform on the sphere. Each 64-bit draw of each stream is
+// one candidate: u from its high and v from its low 32 bits, as 2^-31 fixed point in [-1, 1) (put
+// into the mantissa of a double in [2, 4), minus 3). Candidates go in order (draw, stream); the
+// accepted ones are kept by branch-free compaction, and those past the n-th are dropped.
+inline void sample_sphere(Xoshiro256x4& rng, int n, double* x, double* y, double* z) {
+  typedef double Reals __attribute__((vector_size(4 * sizeof(double))));
+  typedef std::int64_t Mask __attribute__((vector_size(4 * sizeof(std::int64_t))));
+  const Xoshiro256x4::Words two = Xoshiro256x4::Words{} + 0x4000000000000000ull;
   for (int k = 0; k < n;) {
-    const std::uint64_t r = rng();
-    const double u = static_cast<double>(static_cast<std::int32_t>(static_cast<std::uint32_t>(r >> 32))) * 0x1.0p-31;
-    const double v = static_cast<double>(static_cast<std::int32_t>(static_cast<std::uint32_t>(r))) * 0x1.0p-31;
-    const double s = u * u + v * v;
-    x[k] = u;
-    y[k] = v;
-    z[k] = s;
-    k += (s < 1.0) & (s > 0.0);  // a rejected candidate is overwritten by the next one
+    Xoshiro256x4::Words r;
+    rng.next(r);
+    Reals u, v;
+    const Xoshiro256x4::Words ub = ((r >> 32) << 20) | two, vb = ((r & 0xFFFFFFFFull) << 20) | two;
+    std::memcpy(&u, &ub, sizeof u);
+    std::memcpy(&v, &vb, sizeof v);
+    u -= 3.0;
+    v -= 3.0;
+    const Reals s = u * u + v * v;
+    const Mask accept = (s < 1.0) & (s > 0.0);  // -1 where accepted
+    for (int l = 0; l < 4; ++l) {
+      x[k] = u[l];
+      y[k] = v[l];
+      z[k] = s[l];
+      k -= static_cast<int>(accept[l]);
+    }
   }
   for (int k = 0; k < n; ++k) {
     const double r = 2.0 * std::sqrt(1.0 - z[k]);

@@ -44,11 +44,11 @@ TEST(RandomSearchKernel, RankDeficientIsInfinite) {
 // only when every program is worse than the threshold, and never hides a program that beats it.
 TEST(RandomSearchKernel, BatchedDAndEarlyExit) {
   const int n = 18;
-  Xoshiro256 rng(11);
-  std::vector<double> xyz(static_cast<std::size_t>(3 * (padded_size(n) + 1)));
+  Xoshiro256x4 rng(11);
+  std::vector<double> xyz(static_cast<std::size_t>(3 * sample_buffer_size(n)));
   double* x = xyz.data();
-  double* y = x + padded_size(n) + 1;
-  double* z = y + padded_size(n) + 1;
+  double* y = x + sample_buffer_size(n);
+  double* z = y + sample_buffer_size(n);
   for (int trial = 0; trial < 200; ++trial) {
     double m[45][kLanes], single[kLanes];
     for (int l = 0; l < kLanes; ++l) {
