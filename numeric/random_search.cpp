@@ -64,7 +64,7 @@ void search_chunk(Xoshiro256x4& rng, long long begin, long long end, int n, Crit
     const int lanes = static_cast<int>(std::min<long long>(kLanes, end - k0));
     for (int l = 0; l < lanes; ++l) {
       sample_sphere(rng, n, buf.x(l), buf.y(l), buf.z(l));
-      accumulate_information(buf.x(l), buf.y(l), buf.z(l), np, m45);
+      accumulate_information(buf.x(l), buf.y(l), buf.z(l), np, n, m45);
       for (int e = 0; e < 45; ++e) m[e][l] = m45[e];
     }
     if (criterion == CriterionKind::D) {

@@ -141,35 +141,50 @@ inline constexpr MomentTable kMoments = make_moment_table();
 // The 45 entries of the lower triangle of H^T H, packed (a, b), b <= a, at a(a+1)/2 + b.
 constexpr int packed(int a, int b) { return a * (a + 1) / 2 + b; }
 
-// Moments of positions in structure-of-arrays form (n a multiple of kLanes), kLanes partial sums
-// per moment held in one vector (GCC/Clang vector extension: AVX where compiled for it, else pairs
-// of SSE2 registers); the partial sums are added in a fixed order. The degree-3 and -4 monomials
-// are products of a coordinate or a degree-2 monomial with a degree-2 monomial, fused into the
-// accumulation.
-inline void accumulate_information(const double* x, const double* y, const double* z, int n, double* m45) {
+// Moments of `count` unit vectors in structure-of-arrays form (n, a multiple of kLanes, includes
+// the zero padding), kLanes partial sums per moment held in one vector (GCC/Clang vector
+// extension: AVX where compiled for it, else pairs of SSE2 registers); the partial sums are added
+// in a fixed order. Only 24 of the 31 moments are accumulated (fewer registers spilled): on the
+// sphere x^2 + y^2 + z^2 = 1, so sum z^2 = count - sum x^2 - sum y^2 and every quartic moment with
+// a factor z^2 is m - m x^2 - m y^2 for a quadratic monomial m.
+inline void accumulate_information(const double* x, const double* y, const double* z, int n, int count,
+                                   double* m45) {
   typedef double Lanes __attribute__((vector_size(kLanes * sizeof(double))));
-  Lanes acc[31] = {};
+  Lanes acc[24] = {};
   for (int i = 0; i < n; i += kLanes) {
     Lanes X, Y, Z;
     std::memcpy(&X, x + i, sizeof X);
     std::memcpy(&Y, y + i, sizeof Y);
     std::memcpy(&Z, z + i, sizeof Z);
     const Lanes xx = X * X, xy = X * Y, xz = X * Z, yy = Y * Y, yz = Y * Z, zz = Z * Z;
-    acc[0] += xx, acc[1] += xy, acc[2] += xz, acc[3] += yy, acc[4] += yz, acc[5] += zz;
-    acc[6] += X * xx, acc[7] += X * xy, acc[8] += X * xz, acc[9] += X * yy, acc[10] += X * yz;
-    acc[11] += X * zz, acc[12] += Y * yy, acc[13] += Y * yz, acc[14] += Y * zz, acc[15] += Z * zz;
-    acc[16] += xx * xx, acc[17] += xx * xy, acc[18] += xx * xz, acc[19] += xx * yy, acc[20] += xx * yz;
-    acc[21] += xx * zz, acc[22] += xy * yy, acc[23] += xy * yz, acc[24] += xy * zz, acc[25] += xz * zz;
-    acc[26] += yy * yy, acc[27] += yy * yz, acc[28] += yy * zz, acc[29] += yz * zz, acc[30] += zz * zz;
+    acc[0] += xx, acc[1] += xy, acc[2] += xz, acc[3] += yy, acc[4] += yz;
+    acc[5] += X * xx, acc[6] += X * xy, acc[7] += X * xz, acc[8] += X * yy, acc[9] += X * yz;
+    acc[10] += X * zz, acc[11] += Y * yy, acc[12] += Y * yz, acc[13] += Y * zz, acc[14] += Z * zz;
+    acc[15] += xx * xx, acc[16] += xx * xy, acc[17] += xx * xz, acc[18] += xx * yy, acc[19] += xx * yz;
+    acc[20] += xy * yy, acc[21] += xy * yz, acc[22] += yy * yy, acc[23] += yy * yz;
   }
-  double sum[31];
-  for (int k = 0; k < 31; ++k) {
+  double a[24];
+  for (int k = 0; k < 24; ++k) {
     double s = 0.0;
     for (int l = 0; l < kLanes; ++l) s += acc[k][l];
-    sum[k] = s;
+    a[k] = s;
   }
-  for (int a = 0; a < 9; ++a)
-    for (int b = 0; b <= a; ++b) m45[packed(a, b)] = sum[kMoments.entry[a][b]];
+  // The 31 moments in kMoments' order (degree, then decreasing powers of x, then of y).
+  double m[31];
+  for (int k = 0; k < 5; ++k) m[k] = a[k];                   // xx xy xz yy yz
+  m[5] = count - a[0] - a[3];                                 // zz
+  for (int k = 6; k <= 15; ++k) m[k] = a[k - 1];              // the ten cubic moments
+  m[16] = a[15], m[17] = a[16], m[18] = a[17], m[19] = a[18];  // xxxx xxxy xxxz xxyy
+  m[20] = a[19], m[22] = a[20], m[23] = a[21], m[26] = a[22];  // xxyz xyyy xyyz yyyy
+  m[27] = a[23];                                              // yyyz
+  m[21] = m[0] - m[16] - m[19];                               // xxzz
+  m[24] = m[1] - m[17] - m[22];                               // xyzz
+  m[25] = m[2] - m[18] - m[23];                               // xzzz
+  m[28] = m[3] - m[19] - m[26];                               // yyzz
+  m[29] = m[4] - m[20] - m[27];                               // yzzz
+  m[30] = m[5] - m[21] - m[28];                               // zzzz
+  for (int r = 0; r < 9; ++r)
+    for (int c = 0; c <= r; ++c) m45[packed(r, c)] = m[kMoments.entry[r][c]];
 }
 
 // D = N^9 / det(H^T H) of kLanes programs at once (m[entry][program], packed lower triangles), by
@@ -281,13 +296,13 @@ inline double score_information(const double* m45, int n, CriterionKind criterio
   return N * result;
 }
 
-// The normalised criterion of n positions stored as xyz triples (the kernel's reference entry).
+// The normalised criterion of n unit vectors stored as xyz triples (the kernel's reference entry).
 inline double score_positions(const double* eta, int n, CriterionKind criterion) {
   const int np = padded_size(n);
   std::vector<double> x(static_cast<std::size_t>(np), 0.0), y(x), z(x);
   for (int i = 0; i < n; ++i) x[i] = eta[3 * i], y[i] = eta[3 * i + 1], z[i] = eta[3 * i + 2];
   double m45[45];
-  accumulate_information(x.data(), y.data(), z.data(), np, m45);
+  accumulate_information(x.data(), y.data(), z.data(), np, n, m45);
   return score_information(m45, n, criterion);
 }
 

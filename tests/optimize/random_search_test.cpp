@@ -55,7 +55,7 @@ TEST(RandomSearchKernel, BatchedDAndEarlyExit) {
       sample_sphere(rng, n, x, y, z);
       for (int i = 0; i < n; ++i) EXPECT_NEAR(x[i] * x[i] + y[i] * y[i] + z[i] * z[i], 1.0, 1e-14);
       double m45[45];
-      accumulate_information(x, y, z, padded_size(n), m45);
+      accumulate_information(x, y, z, padded_size(n), n, m45);
       for (int e = 0; e < 45; ++e) m[e][l] = m45[e];
       single[l] = score_information(m45, n, CriterionKind::D);
     }
