@@ -141,11 +141,10 @@ void compute_optimised(Context& ctx) {
              {CriterionKind::E, {9, 18}, 2},
              {CriterionKind::S, {9, 18}, 2}};
   } else {
-    const std::vector<int> few = {9, 12, 15, 18, 20, 24, 30};
     plans = {{CriterionKind::D, range(9, 30), 0},
-             {CriterionKind::A, few, 12},
-             {CriterionKind::E, few, 12},
-             {CriterionKind::S, few, 12}};
+             {CriterionKind::A, range(9, 30), 0},
+             {CriterionKind::E, range(9, 30), 0},
+             {CriterionKind::S, range(9, 30), 0}};
   }
   int total = 0, done = 0;
   for (const auto& p : plans) total += static_cast<int>(p.sizes.size());
