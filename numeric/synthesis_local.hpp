@@ -9,9 +9,10 @@ namespace scalcal {
 
 struct LocalOptions {
   double tolerance = 1e-10;  // Ipopt's tol
-  // 0: the criterion's cap (D, A 200; E, S 300). With exact Hessians, starts at N = 24 took 12-18
-  // Ipopt iterations for A, 26-67 for S, 15-197 for E (D at N = 18: 12-19); one that has not
-  // converged by the cap is abandoned: more starts find the optimum sooner than longer ones.
+  // 0: the criterion's cap (D, A 200; E, S 300). With exact Hessians, starts at N = 24 took
+  // 12-18 Ipopt iterations for A, 26-67 for S, 15-197 for E from a random program (D at N = 18:
+  // 12-19); one that has not converged by the cap is abandoned: more starts find the optimum
+  // sooner than longer ones.
   int max_iterations = 0;
 };
 
