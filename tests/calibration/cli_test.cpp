@@ -16,32 +16,16 @@
 #include <string>
 
 #include "tests/calibration/independent_simulator.hpp"
+#include "tests/common/run_cli.hpp"
 
 namespace {
 
 using namespace calibration_test;
 namespace fs = std::filesystem;
 
-struct CliRun {
-  int status;
-  std::string out, err;
-};
+using CliRun = scalcal::testing::CliResult;
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-CliRun scalcal(const std::string& args) {
-  const fs::path dir = fs::temp_directory_path() / ("scalcal_calibration_cli_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  const std::string cmd = std::string(SCALCAL_CLI) + " " + args + " >" + (dir / "out").string() + " 2>" +
-                          (dir / "err").string();
-  const int raw = std::system(cmd.c_str());
-  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(dir / "out"), slurp(dir / "err")};
-}
+CliRun scalcal(const std::string& args) { return scalcal::testing::run_cli(args); }
 
 fs::path write_file(const std::string& name, const std::string& text) {
   const fs::path p = fs::temp_directory_path() / ("scalcal_calibration_" + std::to_string(::getpid()) + "_" + name);

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "run_cli.hpp"
+#include "tests/common/run_cli.hpp"
 
 namespace scalcal::testing {
 namespace {

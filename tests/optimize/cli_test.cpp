@@ -1,21 +1,15 @@
 // The subcommands' JSON keys, as issue 3 names them, and exit status 2 on bad options.
 #include <gtest/gtest.h>
 
-#include <array>
-#include <cstdio>
-#include <memory>
 #include <string>
+
+#include "tests/common/run_cli.hpp"
 
 namespace {
 
 std::pair<int, std::string> run(const std::string& args) {
-  const std::string cmd = std::string(SCALCAL_CLI) + " " + args + " 2>/dev/null";
-  std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(cmd.c_str(), "r"), pclose);
-  std::string out;
-  std::array<char, 4096> buf{};
-  while (fgets(buf.data(), buf.size(), pipe.get())) out += buf.data();
-  const int status = pclose(pipe.release());
-  return {WEXITSTATUS(status), out};
+  const auto r = scalcal::testing::run_cli(args);
+  return {r.status, r.out};
 }
 
 TEST(OptimizeCli, JsonKeys) {

@@ -2,26 +2,15 @@
 // that agree with hand-derived values, exit 2 on bad input.
 #include <gtest/gtest.h>
 
-#include <array>
-#include <cstdio>
 #include <string>
+
+#include "tests/common/run_cli.hpp"
 
 namespace {
 
-struct Run {
-  int status;
-  std::string out;
-};
+using Run = scalcal::testing::CliResult;
 
-Run run(const std::string& args) {
-  const std::string cmd = std::string(SCALCAL_CLI) + " " + args + " 2>/dev/null";
-  std::array<char, 4096> buf{};
-  std::string out;
-  FILE* p = popen(cmd.c_str(), "r");
-  while (fgets(buf.data(), buf.size(), p)) out += buf.data();
-  const int st = pclose(p);
-  return {WEXITSTATUS(st), out};
-}
+Run run(const std::string& args) { return scalcal::testing::run_cli(args); }
 
 TEST(FamilyCli, JsonKeys) {
   const auto r = run("family icosahedral --json");
