@@ -1,5 +1,6 @@
 // `scalcal optimize --positions N --criterion D|A|E|S [--starts K] [--seed S] [--digits P]
-// [--out FILE] [--json]`: the optimal program by an Ipopt multistart, optionally polished to P digits.
+// [--local auto|ipopt] [--out FILE] [--json]`: the optimal program by a multistart (Riemannian
+// Newton for D and A, confirmed by Ipopt; Ipopt for E and S), optionally polished to P digits.
 #include <iomanip>
 #include <iostream>
 
@@ -23,6 +24,9 @@ int run(Args& args) {
   opt.seed = static_cast<std::uint64_t>(args.integer("seed", 1, 0, (1LL << 62)));
   opt.threads = static_cast<int>(args.integer("threads", 0, 0, 256));
   const int digits = static_cast<int>(args.integer("digits", 0, 1, 1000));
+  const std::string local = args.text("local", "auto");
+  if (local != "auto" && local != "ipopt") throw UsageError("--local must be auto or ipopt, got '" + local + "'");
+  opt.local = local == "ipopt" ? LocalSolver::Ipopt : LocalSolver::Automatic;
   const auto out_file = args.value("out");
   const bool json = args.flag("json");
   if (!args.positionals().empty()) throw UsageError("unexpected positional argument");
@@ -30,6 +34,9 @@ int run(Args& args) {
     opt.progress = [](int done, int total) { std::cerr << "\rstart " << done << "/" << total << std::flush; };
   const SynthesisResult r = synthesize(opt);
   if (opt.progress) std::cerr << "\n";
+  if (!r.confirmed)
+    std::cerr << "scalcal optimize: warning: Ipopt did not confirm the best program as a converged optimum (" << r.local_solver
+              << " multistart)\n";
   std::optional<PolishResult> polished;
   if (digits > 0) {
     if (opt.progress) std::cerr << "polishing at " << digits << " digits\n";
@@ -50,6 +57,8 @@ int run(Args& args) {
     j.set("starts", r.starts);
     j.set("hits", r.hits);
     j.set("seconds", r.seconds);
+    j.set("local_solver", r.local_solver);
+    j.set("confirmed", r.confirmed);
     if (polished) {
       j.set("value_digits", polished->value_digits);
       j.set("residual", polished->residual);
@@ -69,8 +78,8 @@ int run(Args& args) {
 }
 
 const Registration reg({"optimize",
-                        "optimize --positions N --criterion D|A|E|S [--starts K] [--seed S] [--digits P] [--out FILE] [--json]",
-                        "the optimal program for a criterion (Ipopt multistart, optional high-precision polish)", 40, run});
+                        "optimize --positions N --criterion D|A|E|S [--starts K] [--seed S] [--digits P] [--local auto|ipopt] [--out FILE] [--json]",
+                        "the optimal program for a criterion (Newton/Ipopt multistart, optional high-precision polish)", 40, run});
 
 }  // namespace
 }  // namespace scalcal::cli

@@ -1,5 +1,5 @@
 // The multistart: start k is the uniform random program of seed splitmix(seed, k), optimised by
-// Ipopt; starts are dealt round-robin to worker processes and their results stored by index, so the
+// Riemannian Newton (D, A) or Ipopt (E, S; Newton's best is then confirmed by Ipopt); starts are dealt round-robin to worker processes and their results stored by index, so the
 // best program (lowest value, then lowest start index) never depends on scheduling.
 #include "numeric/synthesis.hpp"
 
@@ -64,14 +64,19 @@ bool read_all(int fd, void* data, std::size_t bytes) {
   return true;
 }
 
+LocalResult run_local(const Program& start, CriterionKind criterion, LocalSolver solver) {
+  return solver == LocalSolver::Automatic && newton_applies(criterion) ? optimize_by_newton(start, criterion)
+                                                                         : optimize_locally(start, criterion);
+}
+
 // The E problem (an eigenvalue constraint M/N - sI = LL^T) converges poorly from a random program:
 // at N = 9 random starts ended near 68.7 while the A-optimum alone has E = 12.9. So an E start first
 // runs the smooth A problem and takes its result as the starting program; the A program itself is
 // kept when the E stage does not improve on it.
 LocalResult run_start(const SynthesisOptions& options, int k) {
   const Program start = Program::random(options.positions, start_seed(options.seed, static_cast<std::uint64_t>(k)));
-  if (options.criterion != CriterionKind::E) return optimize_locally(start, options.criterion);
-  const LocalResult warm = optimize_locally(start, CriterionKind::A);
+  if (options.criterion != CriterionKind::E) return run_local(start, options.criterion, options.local);
+  const LocalResult warm = run_local(start, CriterionKind::A, options.local);
   LocalResult out = optimize_locally(warm.program, CriterionKind::E);
   const double warm_e = criterion_value(warm.program, CriterionKind::E);
   if (!(out.value <= warm_e)) {
@@ -82,7 +87,9 @@ LocalResult run_start(const SynthesisOptions& options, int k) {
   return out;
 }
 
-std::vector<LocalResult> run_starts(const SynthesisOptions& options, int starts) {
+// Runs task(k) for k < tasks in worker processes and returns the results by index.
+template <class Task>
+std::vector<LocalResult> run_in_workers(const SynthesisOptions& options, int starts, const Task& task) {
   std::vector<LocalResult> results(static_cast<std::size_t>(starts));
   // Even one worker is a child process: the caller's process never initialises MUMPS, whose state a
   // later fork would otherwise inherit.
@@ -103,7 +110,7 @@ std::vector<LocalResult> run_starts(const SynthesisOptions& options, int starts)
       ::close(fd[0]);
       std::vector<double> buf(record);
       for (int k = w; k < starts; k += workers) {
-        const LocalResult r = run_start(options, k);
+        const LocalResult r = task(k);
         buf[0] = k;
         buf[1] = r.value;
         buf[2] = r.status;
@@ -146,7 +153,7 @@ std::vector<LocalResult> run_starts(const SynthesisOptions& options, int starts)
         r.program.positions.emplace_back(buf[static_cast<std::size_t>(kHeader + 3 * i)], buf[static_cast<std::size_t>(kHeader + 3 * i + 1)],
                                          buf[static_cast<std::size_t>(kHeader + 3 * i + 2)]);
       ++done;
-      if (options.progress) options.progress(done, starts);
+      if (options.progress && starts > 1) options.progress(done, starts);
     }
   }
   for (const pid_t pid : pids) {
@@ -165,7 +172,7 @@ SynthesisResult synthesize(const SynthesisOptions& options) {
   if (options.positions < 9) throw std::invalid_argument("synthesize: at least 9 positions are needed");
   const auto t0 = std::chrono::steady_clock::now();
   const int starts = options.starts > 0 ? options.starts : default_starts(options.criterion, options.positions);
-  std::vector<LocalResult> results = run_starts(options, starts);
+  std::vector<LocalResult> results = run_in_workers(options, starts, [&](int k) { return run_start(options, k); });
   SynthesisResult out;
   std::size_t best = 0;
   for (std::size_t k = 1; k < results.size(); ++k)
@@ -173,6 +180,20 @@ SynthesisResult synthesize(const SynthesisOptions& options) {
   out.program = results[best].program;
   out.value = results[best].value;
   out.starts = starts;
+  out.local_solver = options.local == LocalSolver::Automatic && newton_applies(options.criterion) ? "newton" : "ipopt";
+  if (out.local_solver == "newton") {
+    // Ipopt, from the best Newton program, must find it a KKT point of the constrained problem
+    // (same value); should it find a lower one, that is kept.
+    const Program best_program = out.program;
+    const LocalResult check = run_in_workers(options, 1, [&](int) { return optimize_locally(best_program, options.criterion); })[0];
+    out.confirmed = check.converged && check.value <= out.value * (1 + kHitTolerance);
+    if (check.value < out.value) {
+      out.program = check.program;
+      out.value = check.value;
+    }
+  } else {
+    out.confirmed = results[best].converged;
+  }
   for (const auto& r : results)
     if (r.value <= out.value * (1 + kHitTolerance)) ++out.hits;
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -1,14 +1,21 @@
 // Synthesis of optimal programs (contract; implemented in synthesis.cpp): a multistart of a
-// local optimiser (Ipopt) over N unit vectors for one criterion, keeping the best program.
+// local optimiser (Riemannian Newton for D and A, Ipopt for E and S) over N unit vectors for one
+// criterion, keeping the best program, which Ipopt confirms as a KKT point.
 // Programs equal up to a rotation (D) or a signed permutation of the axes count as one.
 #pragma once
 #include <cstdint>
 #include <functional>
+#include <string>
 
 #include "numeric/criterion_kind.hpp"
 #include "numeric/program.hpp"
 
 namespace scalcal {
+
+enum class LocalSolver {
+  Automatic,  // Riemannian Newton where the criterion is smooth (D, A), else Ipopt
+  Ipopt,      // Ipopt for every start (slower; for comparison)
+};
 
 struct SynthesisOptions {
   int positions = 18;
@@ -16,6 +23,7 @@ struct SynthesisOptions {
   int starts = 0;            // 0: the default, chosen to find the global optimum for N <= 30
   std::uint64_t seed = 1;
   int threads = 0;           // 0: all cores
+  LocalSolver local = LocalSolver::Automatic;
   std::function<void(int done, int total)> progress;  // called from one thread at a time
 };
 
@@ -24,6 +32,8 @@ struct SynthesisResult {
   double value = 0;  // normalised criterion of `program`
   int starts = 0;
   int hits = 0;      // starts that reached `value` (to a relative 1e-8)
+  std::string local_solver;  // "newton" or "ipopt": what ran the starts
+  bool confirmed = false;    // Ipopt converged at `program` with the same value (ipopt: the best start converged)
   double seconds = 0;
 };
 
