@@ -56,6 +56,7 @@ int run(Args& args) {
     j.set("program", program_json(r.program));
     j.set("starts", r.starts);
     j.set("hits", r.hits);
+    j.set("distinct", r.distinct);
     j.set("seconds", r.seconds);
     j.set("local_solver", r.local_solver);
     j.set("confirmed", r.confirmed);
@@ -67,7 +68,8 @@ int run(Args& args) {
     std::cout << "\n";
   } else {
     std::cout << criterion_name(opt.criterion) << " = " << std::setprecision(15) << r.value << "  (N = " << opt.positions
-              << ", " << r.hits << " of " << r.starts << " starts reached it, " << std::setprecision(3) << r.seconds
+              << ", " << r.hits << " of " << r.starts << " starts reached it, " << r.distinct
+              << (r.distinct == 1 ? " program" : " distinct programs") << " up to symmetry, " << std::setprecision(3) << r.seconds
               << " s)\n";
     if (polished)
       std::cout << criterion_name(opt.criterion) << " = " << polished->value_digits << "  (" << polished->digits

@@ -42,9 +42,9 @@ int run(Args& args) {
   if (out_file) {
     file.open(*out_file);
     if (!file) throw InputError(*out_file, 0, "cannot write the sweep file");
-    file << "criterion,positions,value,limit,ratio,starts,hits,seconds,program\n" << std::setprecision(17);
+    file << "criterion,positions,value,limit,ratio,starts,hits,distinct,seconds,program\n" << std::setprecision(17);
   }
-  std::cout << "crit   N            value        ratio   hits/starts  seconds\n";
+  std::cout << "crit   N            value        ratio   hits/starts  distinct  seconds\n";
   for (const CriterionKind c : criteria)
     for (int n = lo; n <= hi; ++n) {
       SynthesisOptions opt;
@@ -56,11 +56,12 @@ int run(Args& args) {
       const double limit = criterion_limit(c).value;
       std::cout << std::setw(4) << criterion_name(c) << std::setw(4) << n << std::setw(17) << std::setprecision(10)
                 << r.value << std::setw(13) << std::setprecision(8) << r.value / limit << std::setw(7) << r.hits << "/"
-                << std::left << std::setw(6) << r.starts << std::right << std::setw(8) << std::setprecision(3) << r.seconds
+                << std::left << std::setw(6) << r.starts << std::right << std::setw(9) << r.distinct << std::setw(9)
+                << std::setprecision(3) << r.seconds
                 << std::endl;
       if (file) {
         file << criterion_name(c) << "," << n << "," << r.value << "," << limit << "," << r.value / limit << ","
-             << r.starts << "," << r.hits << "," << r.seconds << ",\"";
+             << r.starts << "," << r.hits << "," << r.distinct << "," << r.seconds << ",\"";
         for (std::size_t i = 0; i < r.program.positions.size(); ++i) {
           const auto& p = r.program.positions[i];
           file << (i ? ";" : "") << p(0) << " " << p(1) << " " << p(2);

@@ -32,6 +32,7 @@ struct SynthesisResult {
   double value = 0;  // normalised criterion of `program`
   int starts = 0;
   int hits = 0;      // starts that reached `value` (to a relative 1e-8)
+  int distinct = 0;  // distinct programs among the hits, up to the criterion's symmetry (program_equivalence.hpp)
   std::string local_solver;  // "newton" or "ipopt": what ran the starts
   bool confirmed = false;    // Ipopt converged at `program` with the same value (ipopt: the best start converged)
   double seconds = 0;

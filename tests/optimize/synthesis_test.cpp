@@ -35,6 +35,35 @@ TEST(Synthesis, DReachesTheLimitAtTwelveNotAtNine) {
   for (const auto& p : nine.program.positions) EXPECT_NEAR(p.norm(), 1.0, 1e-12);
 }
 
+// D at N = 9 has one optimum up to rotation (its Hessian is positive definite off the three
+// rotation directions); at N = 18 the optima form a family of 4-designs (Hardin & Sloane 1996),
+// so independent starts land on different members.
+TEST(Synthesis, CountsDistinctOptimaUpToSymmetry) {
+  const SynthesisResult nine = run(9, CriterionKind::D, 8);
+  EXPECT_EQ(nine.hits, 8);
+  EXPECT_EQ(nine.distinct, 1);
+  const SynthesisResult eighteen = run(18, CriterionKind::D, 6);
+  EXPECT_EQ(eighteen.hits, 6);
+  EXPECT_EQ(eighteen.distinct, 6);
+  EXPECT_EQ(eighteen.local_solver, "newton");
+  EXPECT_TRUE(eighteen.confirmed);
+}
+
+// Newton (the default for D and A) and Ipopt reach the same optimum from the same starts.
+TEST(Synthesis, NewtonAndIpoptAgree) {
+  for (const CriterionKind c : {CriterionKind::D, CriterionKind::A}) {
+    SynthesisOptions o;
+    o.positions = 11;
+    o.criterion = c;
+    o.starts = 6;
+    const SynthesisResult newton = synthesize(o);
+    o.local = LocalSolver::Ipopt;
+    const SynthesisResult ipopt = synthesize(o);
+    EXPECT_EQ(ipopt.local_solver, "ipopt");
+    EXPECT_NEAR(newton.value, ipopt.value, 1e-9 * ipopt.value) << criterion_name(c);
+  }
+}
+
 TEST(Synthesis, ResultDoesNotDependOnWorkerCount) {
   SynthesisOptions o;
   o.positions = 12;
