@@ -10,28 +10,72 @@
 #include <functional>
 #include <vector>
 
-#include <boost/multiprecision/mpfr.hpp>
+#include <Eigen/Cholesky>
 #include <Eigen/QR>
 
 #include "numeric/criteria.hpp"
 #include "numeric/evaluation.hpp"
+#include "numeric/polish_e.hpp"
 
 namespace scalcal {
 
+namespace polish_detail {
+
+Real newton_least_squares(const std::function<VecX(const VecX&)>& residual, VecX& z, int P, int max_iterations,
+                          int& iterations, bool regularised) {
+  const Real h = pow(Real(10), -(P + 15));
+  const Real target = pow(Real(10), -(P + 10));
+  VecX F = residual(z);
+  Real norm = F.norm();
+  for (int it = 0; it < max_iterations && norm > target; ++it) {
+    MatX J(F.size(), z.size());
+    for (int j = 0; j < z.size(); ++j) {
+      VecX zp = z, zm = z;
+      zp(j) += h;
+      zm(j) -= h;
+      J.col(j) = (residual(zp) - residual(zm)) / (Real(2) * h);
+    }
+    VecX step;
+    if (regularised) {
+      MatX A = MatX::Zero(J.cols(), J.cols());
+      A.selfadjointView<Eigen::Lower>().rankUpdate(J.transpose());
+      A.diagonal().array() += norm * norm;
+      step = A.selfadjointView<Eigen::Lower>().llt().solve(-(J.transpose() * F));
+    } else {
+      Eigen::CompleteOrthogonalDecomposition<MatX> cod(J);
+      cod.setThreshold(Real(1e-25));
+      step = cod.solve(-F);
+    }
+    // Damping only as a safeguard: from a double optimum the full step is taken every time.
+    Real lambda(1);
+    VecX trial = z + step;
+    VecX Ft = residual(trial);
+    for (int k = 0; k < 8 && !(Ft.norm() < norm); ++k) {
+      lambda /= 2;
+      trial = z + lambda * step;
+      Ft = residual(trial);
+    }
+    ++iterations;
+    if (!(Ft.norm() < norm)) break;
+    const bool stalled = regularised && !(Ft.norm() < norm / 2);
+    z = trial;
+    F = Ft;
+    norm = F.norm();
+    if (stalled) break;
+  }
+  return norm;
+}
+
+int digits_left_by(const Real& residual, int P) {
+  const double lost = residual > 0 ? -static_cast<double>(log10(residual)) - 2 : P;
+  return std::max(1, std::min(P, static_cast<int>(std::floor(lost))));
+}
+
+}  // namespace polish_detail
+
 namespace {
 
-using Real = boost::multiprecision::number<boost::multiprecision::mpfr_float_backend<0>, boost::multiprecision::et_off>;
-using VecX = Eigen::Matrix<Real, Eigen::Dynamic, 1>;
-using MatX = Eigen::Matrix<Real, Eigen::Dynamic, Eigen::Dynamic>;
-
-class PrecisionGuard {
- public:
-  explicit PrecisionGuard(unsigned digits) : saved_(Real::default_precision()) { Real::default_precision(digits); }
-  ~PrecisionGuard() { Real::default_precision(saved_); }
-
- private:
-  unsigned saved_;
-};
+using namespace polish_detail;
 
 PositionsT<Real> positions_of(const VecX& z, int n) {
   PositionsT<Real> eta(static_cast<std::size_t>(n));
@@ -122,23 +166,13 @@ struct Conditions {
 }  // namespace
 
 PolishResult polish(const Program& program, CriterionKind criterion, const PolishOptions& options) {
-  using std::abs;
-  using std::log10;
   PolishResult out;
   out.program = program;
   const int P = std::max(options.digits, 1);
-  if (criterion == CriterionKind::E) {
-    // No KKT Newton for the eigenvalue criterion yet: report the double value honestly.
-    const Evaluation ev = evaluate(program);
-    Real v(ev.E);
-    out.digits = std::min(P, 15);
-    out.value_digits = v.str(out.digits, std::ios_base::fmtflags(0));
-    out.residual = std::nan("");
-    return out;
-  }
   out.supported = true;
   const unsigned W = static_cast<unsigned>(2 * P + 30);
   PrecisionGuard guard(W);
+  if (criterion == CriterionKind::E) return polish_eigenvalue(program, options);
   const int n = program.size();
   Conditions kkt;
   kkt.n = n;
@@ -157,38 +191,10 @@ PolishResult polish(const Program& program, CriterionKind criterion, const Polis
   }
   kkt.initial_multipliers(z);
 
-  Real h = pow(Real(10), -(P + 15));
-  const Real target = pow(Real(10), -(P + 10));
-  VecX F = kkt.residual(z);
-  Real norm = F.norm();
-  for (int it = 0; it < options.max_iterations && norm > target; ++it) {
-    MatX J(F.size(), z.size());
-    for (int j = 0; j < z.size(); ++j) {
-      VecX zp = z, zm = z;
-      zp(j) += h;
-      zm(j) -= h;
-      J.col(j) = (kkt.residual(zp) - kkt.residual(zm)) / (Real(2) * h);
-    }
-    Eigen::CompleteOrthogonalDecomposition<MatX> cod(J);
-    cod.setThreshold(Real(1e-25));
-    const VecX step = cod.solve(-F);
-    // Damping only as a safeguard: from a double optimum the full step is taken every time.
-    Real lambda(1);
-    VecX trial = z + step;
-    VecX Ft = kkt.residual(trial);
-    for (int k = 0; k < 8 && !(Ft.norm() < norm); ++k) {
-      lambda /= 2;
-      trial = z + lambda * step;
-      Ft = kkt.residual(trial);
-    }
-    ++out.iterations;
-    if (!(Ft.norm() < norm)) break;
-    z = trial;
-    F = Ft;
-    norm = F.norm();
-  }
+  const Real norm = newton_least_squares([&](const VecX& x) { return kkt.residual(x); }, z, P, options.max_iterations,
+                                         out.iterations);
   out.residual = static_cast<double>(norm);
-  out.converged = norm <= target;
+  out.converged = norm <= pow(Real(10), -(P + 10));
 
   ProgramTpl<Real> polished;
   for (int i = 0; i < n; ++i) {
@@ -198,11 +204,7 @@ PolishResult polish(const Program& program, CriterionKind criterion, const Polis
   const EvaluationTpl<Real> ev = evaluate(polished);
   const Real value = criterion == CriterionKind::D ? ev.D : criterion == CriterionKind::A ? ev.A : ev.S;
   // A residual r moves the value by O(r) at most: claim only the digits it leaves untouched.
-  out.digits = P;
-  if (!out.converged) {
-    const double lost = norm > 0 ? -static_cast<double>(log10(norm)) - 2 : P;
-    out.digits = std::max(1, std::min(P, static_cast<int>(std::floor(lost))));
-  }
+  out.digits = out.converged ? P : digits_left_by(norm, P);
   out.value_digits = value.str(out.digits, std::ios_base::showpoint);
   out.program = polished.cast<double>();
   return out;
