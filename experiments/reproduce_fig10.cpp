@@ -39,8 +39,8 @@ void figure_limits(Context& ctx) {
     const std::string cn(criterion_name(c));
     body += "set title '" + cn + "-criterion'\nset ylabel '" + labels[static_cast<int>(c)] + "'\n" +
             (c == CriterionKind::D ? "set format y '%.4t·10^{%T}'\n" : "set format y '%g'\n") +
-            // A failed E start can sit orders of magnitude above the limit: E on a log scale.
-            (c == CriterionKind::E ? "set logscale y\n" : "unset logscale y\n") +
+            // The E and S tables of the paper sit above the curves, where a top key would cover them.
+            (c == CriterionKind::E || c == CriterionKind::S ? "set key right center\n" : "set key top right\n") +
             "plot 'fig10.csv' skip 1 using 2:(strcol(1) eq '" + cn + "' ? $3 : NaN) with linespoints pt 9 ps 1.3 lc rgb '" +
             plots::style::optimised + "' title 'scalcal optimum', \\\n     " + CsvWriter::num(lim.value) +
             " with lines lw 2 lc rgb '" + plots::style::limit + "' title " + plots::gp_quote("limit " + std::string(lim.exact)) +
