@@ -54,16 +54,6 @@ std::optional<Pairing> match(const Positions& a, const Positions& b, const Mat3&
 
 // --- cheap necessary conditions --------------------------------------------------------------------
 
-// Two multisets related by a pairing that moves each element by at most slack agree element by
-// element within slack once sorted.
-bool sorted_agree(std::vector<double> x, std::vector<double> y, double slack) {
-  std::sort(x.begin(), x.end());
-  std::sort(y.begin(), y.end());
-  for (std::size_t k = 0; k < x.size(); ++k)
-    if (std::abs(x[k] - y[k]) > slack) return false;
-  return true;
-}
-
 double max_norm(const Positions& p) {
   double m = 0;
   for (const auto& v : p) m = std::max(m, v.norm());
@@ -99,17 +89,39 @@ std::vector<double> sorted_abs_coordinate(const Positions& p, int k) {
 // covers rounding.
 double dot_slack(double tol, double scale) { return tol * (2 * scale + tol) + 1e-14 * scale * scale; }
 
-bool orthogonal_invariants_agree(const Positions& a, const Positions& b, double tol) {
-  const double scale = std::max(max_norm(a), max_norm(b));
-  return sorted_agree(norms(a), norms(b), tol + 1e-14 * scale) &&
-         sorted_agree(gram_entries(a), gram_entries(b), dot_slack(tol, scale));
-}
+// Multisets of numbers that the group leaves unchanged (Orthogonal: lengths and pairwise dot
+// products; SignedPermutations: the sorted |coordinates|), each sorted once per program: two
+// multisets related by a pairing that moves each element by at most a slack agree element by
+// element within it once sorted. A multistart with 64 distinct optima at N = 18 makes about 2000
+// comparisons, almost all rejected here.
+class SortedInvariants {
+ public:
+  SortedInvariants(const Positions& p, ProgramSymmetry symmetry) : symmetry_(symmetry), scale_(max_norm(p)) {
+    if (symmetry == ProgramSymmetry::Orthogonal) lists_ = {norms(p), gram_entries(p)};
+    else
+      for (int k = 0; k < 3; ++k) lists_.push_back(sorted_abs_coordinate(p, k));
+    for (auto& l : lists_) std::sort(l.begin(), l.end());
+  }
 
-bool signed_permutation_invariants_agree(const Positions& a, const Positions& b, double tol) {
-  for (int k = 0; k < 3; ++k)
-    if (!sorted_agree(sorted_abs_coordinate(a, k), sorted_abs_coordinate(b, k), tol)) return false;
-  return true;
-}
+  // A necessary condition for a map within tol.
+  bool may_equal(const SortedInvariants& other, double tol) const {
+    const double scale = std::max(scale_, other.scale_);
+    for (std::size_t l = 0; l < lists_.size(); ++l) {
+      const double slack = symmetry_ == ProgramSymmetry::SignedPermutations ? tol
+                           : l == 0                                       ? tol + 1e-14 * scale
+                                                                          : dot_slack(tol, scale);
+      if (lists_[l].size() != other.lists_[l].size()) return false;
+      for (std::size_t k = 0; k < lists_[l].size(); ++k)
+        if (std::abs(lists_[l][k] - other.lists_[l][k]) > slack) return false;
+    }
+    return true;
+  }
+
+ private:
+  ProgramSymmetry symmetry_;
+  double scale_;
+  std::vector<std::vector<double>> lists_;
+};
 
 // --- signed permutations -------------------------------------------------------------------------
 
@@ -130,8 +142,8 @@ const std::array<Mat3, 48>& signed_permutations() {
   return group;
 }
 
+// Both maps below assume the sorted invariants agree (see mapped_after_invariants).
 std::optional<Mat3> signed_permutation_map(const Positions& a, const Positions& b, double tol) {
-  if (!signed_permutation_invariants_agree(a, b, tol)) return std::nullopt;
   for (const Mat3& g : signed_permutations())
     if (match(a, b, g, tol)) return g;
   return std::nullopt;
@@ -246,7 +258,6 @@ std::optional<Mat3> anchored_map(const Positions& a, const Positions& b, const A
 }
 
 std::optional<Mat3> orthogonal_map(const Positions& a, const Positions& b, double tol) {
-  if (!orthogonal_invariants_agree(a, b, tol)) return std::nullopt;
   const AnchorPair anchor = most_orthogonal_pair(a);
   // Below this the second anchor's sideways part is noise of the size tol: it cannot orient a frame.
   const double collinear_sine = 10 * tol / std::max(max_norm(a), 1e-300);
@@ -260,63 +271,40 @@ ProgramSymmetry symmetry_of(CriterionKind c) {
   return c == CriterionKind::D ? ProgramSymmetry::Orthogonal : ProgramSymmetry::SignedPermutations;
 }
 
-std::optional<Mat3> equivalence_map(const Program& a, const Program& b, ProgramSymmetry symmetry,
-                                    double tol) {
+namespace {
+
+std::optional<Mat3> mapped_after_invariants(const Program& a, const Program& b, ProgramSymmetry symmetry,
+                                            const SortedInvariants& ia, const SortedInvariants& ib, double tol) {
   if (a.size() != b.size()) return std::nullopt;
   if (a.size() == 0) return Mat3::Identity();
+  if (!ia.may_equal(ib, tol)) return std::nullopt;
   return symmetry == ProgramSymmetry::Orthogonal ? orthogonal_map(a.positions, b.positions, tol)
                                                  : signed_permutation_map(a.positions, b.positions, tol);
+}
+
+}  // namespace
+
+std::optional<Mat3> equivalence_map(const Program& a, const Program& b, ProgramSymmetry symmetry,
+                                    double tol) {
+  return mapped_after_invariants(a, b, symmetry, SortedInvariants(a.positions, symmetry),
+                                 SortedInvariants(b.positions, symmetry), tol);
 }
 
 bool equivalent(const Program& a, const Program& b, ProgramSymmetry symmetry, double tol) {
   return equivalence_map(a, b, symmetry, tol).has_value();
 }
 
-namespace {
-
-// The sorted invariants of one program, computed once for all its comparisons: a multistart with
-// 64 distinct optima at N = 18 makes about 2000 comparisons, almost all rejected here.
-struct SortedInvariants {
-  std::vector<std::vector<double>> lists;
-  std::vector<double> slacks;
-
-  SortedInvariants(const Positions& p, ProgramSymmetry symmetry, double tol) {
-    const double scale = max_norm(p);
-    if (symmetry == ProgramSymmetry::Orthogonal) {
-      lists = {norms(p), gram_entries(p)};
-      slacks = {tol + 1e-14 * scale, dot_slack(tol, scale)};
-    } else {
-      for (int k = 0; k < 3; ++k) lists.push_back(sorted_abs_coordinate(p, k));
-      slacks = {tol, tol, tol};
-    }
-    for (auto& l : lists) std::sort(l.begin(), l.end());
-  }
-
-  // The slack uses this program's scale; the exact test that follows is symmetric.
-  bool may_equal(const SortedInvariants& other) const {
-    for (std::size_t l = 0; l < lists.size(); ++l) {
-      if (lists[l].size() != other.lists[l].size()) return false;
-      const double slack = 2 * std::max(slacks[l], other.slacks[l]);
-      for (std::size_t k = 0; k < lists[l].size(); ++k)
-        if (std::abs(lists[l][k] - other.lists[l][k]) > slack) return false;
-    }
-    return true;
-  }
-};
-
-}  // namespace
-
 std::vector<int> equivalence_classes(const std::vector<Program>& programs, ProgramSymmetry symmetry,
                                      double tol) {
   std::vector<int> labels;
   std::vector<std::size_t> representatives;  // index of the first member of each class
   std::vector<SortedInvariants> invariants;
-  for (const auto& p : programs) invariants.emplace_back(p.positions, symmetry, tol);
+  for (const auto& p : programs) invariants.emplace_back(p.positions, symmetry);
   for (std::size_t i = 0; i < programs.size(); ++i) {
     int label = -1;
     for (std::size_t c = 0; c < representatives.size() && label < 0; ++c) {
       const std::size_t r = representatives[c];
-      if (invariants[r].may_equal(invariants[i]) && equivalent(programs[r], programs[i], symmetry, tol))
+      if (mapped_after_invariants(programs[r], programs[i], symmetry, invariants[r], invariants[i], tol))
         label = static_cast<int>(c);
     }
     if (label < 0) {
