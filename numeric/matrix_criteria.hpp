@@ -6,7 +6,7 @@
 
 #include <Eigen/Cholesky>
 
-#include "numeric/types.hpp"
+#include "numeric/criteria.hpp"
 
 namespace scalcal {
 
@@ -23,24 +23,18 @@ struct LogDetCriterion {
   // False when M is not numerically positive definite (the value is then meaningless).
   template <class Scalar>
   static bool value(const Mat9T<Scalar>& M, int n, Scalar& out) {
-    using std::log;
     Eigen::LLT<Mat9T<Scalar>> llt(M);
     if (llt.info() != Eigen::Success) return false;
-    Scalar logdet(0);
-    for (int i = 0; i < 9; ++i) logdet += log(llt.matrixLLT()(i, i));
-    out = Scalar(9) * log(Scalar(n)) - Scalar(2) * logdet;
+    out = log_d(llt, n);
     return true;
   }
 
   // G = -K, dG = K dM K.
   template <class Scalar>
   static bool derivatives(const Mat9T<Scalar>& M, int n, MatrixDerivatives<Scalar>& d) {
-    using std::log;
     Eigen::LLT<Mat9T<Scalar>> llt(M);
     if (llt.info() != Eigen::Success) return false;
-    Scalar logdet(0);
-    for (int i = 0; i < 9; ++i) logdet += log(llt.matrixLLT()(i, i));
-    d.value = Scalar(9) * log(Scalar(n)) - Scalar(2) * logdet;
+    d.value = log_d(llt, n);
     d.A = llt.solve(Mat9T<Scalar>::Identity());
     d.A = (d.A + d.A.transpose()).eval() / Scalar(2);
     d.B = d.A;
@@ -49,23 +43,32 @@ struct LogDetCriterion {
     d.same_sides = true;
     return true;
   }
+
+ private:
+  // 9 log N - log det M from the Cholesky factor of M.
+  template <class Scalar>
+  static Scalar log_d(const Eigen::LLT<Mat9T<Scalar>>& llt, int n) {
+    using std::log;
+    Scalar logdet(0);
+    for (int i = 0; i < 9; ++i) logdet += log(llt.matrixLLT()(i, i));
+    return Scalar(9) * log(Scalar(n)) - Scalar(2) * logdet;
+  }
 };
 
 // A = N trace K: G = -N K^2, dG = N (K dM K^2 + K^2 dM K).
 struct TraceCriterion {
   template <class Scalar>
   static bool value(const Mat9T<Scalar>& M, int n, Scalar& out) {
-    Eigen::LLT<Mat9T<Scalar>> llt(M);
-    if (llt.info() != Eigen::Success) return false;
-    out = Scalar(n) * Mat9T<Scalar>(llt.solve(Mat9T<Scalar>::Identity())).trace();
-    return true;
+    bool ok = false;
+    out = Scalar(n) * inverse_information(M, ok).trace();
+    return ok;
   }
 
   template <class Scalar>
   static bool derivatives(const Mat9T<Scalar>& M, int n, MatrixDerivatives<Scalar>& d) {
-    Eigen::LLT<Mat9T<Scalar>> llt(M);
-    if (llt.info() != Eigen::Success) return false;
-    d.A = llt.solve(Mat9T<Scalar>::Identity());
+    bool ok = false;
+    d.A = inverse_information(M, ok);
+    if (!ok) return false;
     d.A = (d.A + d.A.transpose()).eval() / Scalar(2);
     d.B = d.A * d.A;
     d.value = Scalar(n) * d.A.trace();

@@ -24,7 +24,7 @@ namespace polish_detail {
 Real newton_least_squares(const std::function<VecX(const VecX&)>& residual, VecX& z, int P, int max_iterations,
                           int& iterations, bool regularised) {
   const Real h = pow(Real(10), -(P + 15));
-  const Real target = pow(Real(10), -(P + 10));
+  const Real target = converged_residual(P);
   VecX F = residual(z);
   Real norm = F.norm();
   for (int it = 0; it < max_iterations && norm > target; ++it) {
@@ -65,6 +65,8 @@ Real newton_least_squares(const std::function<VecX(const VecX&)>& residual, VecX
   }
   return norm;
 }
+
+Real converged_residual(int P) { return pow(Real(10), -(P + 10)); }
 
 int digits_left_by(const Real& residual, int P) {
   const double lost = residual > 0 ? -static_cast<double>(log10(residual)) - 2 : P;
@@ -194,7 +196,7 @@ PolishResult polish(const Program& program, CriterionKind criterion, const Polis
   const Real norm = newton_least_squares([&](const VecX& x) { return kkt.residual(x); }, z, P, options.max_iterations,
                                          out.iterations);
   out.residual = static_cast<double>(norm);
-  out.converged = norm <= pow(Real(10), -(P + 10));
+  out.converged = norm <= converged_residual(P);
 
   ProgramTpl<Real> polished;
   for (int i = 0; i < n; ++i) {

@@ -220,7 +220,7 @@ PolishResult polish_eigenvalue(const Program& program, const PolishOptions& opti
   out.supported = true;
   out.program = program;
   const int P = std::max(options.digits, 1);
-  const Real target = pow(Real(10), -(P + 10));
+  const Real target = converged_residual(P);
   const int n = program.size();
   PositionsT<Real> eta;
   for (const auto& p : program.positions) eta.push_back(p.cast<Real>().normalized());  // unit at W digits

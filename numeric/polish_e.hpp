@@ -38,6 +38,9 @@ class PrecisionGuard {
 Real newton_least_squares(const std::function<VecX(const VecX&)>& residual, VecX& z, int P, int max_iterations,
                           int& iterations, bool regularised = false);
 
+// The residual at which all P digits are claimed: 10^-(P+10).
+Real converged_residual(int P);
+
 // A residual r moves the value by O(r) at most: the digits it leaves untouched, at most P.
 int digits_left_by(const Real& residual, int P);
 

@@ -83,9 +83,10 @@ class SphereNewton {
     Scalar theta(options_.initial_shift);
     std::vector<Vec3T<Scalar>> trial(eta.size());
     int stalled = 0;  // consecutive accepted steps that changed the value by rounding only
+    Mat9T<Scalar> M = information_matrix(eta), M_trial;  // M of an accepted trial is kept, not rebuilt
     while (true) {
       MatrixDerivatives<Scalar> d;
-      if (!Criterion::derivatives(information_matrix(eta), n, d)) return out;  // rank < 9: no Newton model
+      if (!Criterion::derivatives(M, n, d)) return out;  // rank < 9: no Newton model
       assemble(eta, d);
       const Scalar gnorm = g_.norm();
       out.value = static_cast<double>(d.value);
@@ -125,7 +126,8 @@ class SphereNewton {
         Scalar f_trial;
         ++out.evaluations;
         const Scalar predicted = -(g_.dot(step_) + Scalar(0.5) * step_.dot(H_.template selfadjointView<Eigen::Lower>() * step_));
-        if (Criterion::value(information_matrix(trial), n, f_trial) && predicted > Scalar(0)) {
+        M_trial = information_matrix(trial);
+        if (Criterion::value(M_trial, n, f_trial) && predicted > Scalar(0)) {
           // Below rounding the ratio test is noise: a step that leaves the value unchanged to
           // rounding is taken, and the gradient decides convergence.
           const Scalar rounding = Scalar(8) * std::numeric_limits<Scalar>::epsilon() * std::max(Scalar(1), abs(d.value));
@@ -135,6 +137,7 @@ class SphereNewton {
             accepted = true;
             stalled = abs(d.value - f_trial) <= rounding ? stalled + 1 : 0;
             eta.swap(trial);
+            M = M_trial;
             if (rho > Scalar(0.75) || in_rounding) theta = std::max(theta / Scalar(4), Scalar(1e-4));
             else if (rho < Scalar(0.25)) theta *= Scalar(2);
             break;

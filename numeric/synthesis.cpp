@@ -1,6 +1,7 @@
 // The multistart: start k is the uniform random program of seed splitmix(seed, k), optimised by
-// Riemannian Newton (D, A) or Ipopt (E, S; Newton's best is then confirmed by Ipopt); starts are dealt round-robin to worker processes and their results stored by index, so the
-// best program (lowest value, then lowest start index) never depends on scheduling.
+// Riemannian Newton (D, A; Ipopt then confirms the best) or by Ipopt (E, S); starts are dealt
+// round-robin to worker processes and their results stored by index, so the best program (lowest
+// value, then lowest start index) never depends on scheduling.
 #include "numeric/synthesis.hpp"
 
 #include <algorithm>
@@ -69,9 +70,12 @@ bool read_all(int fd, void* data, std::size_t bytes) {
   return true;
 }
 
+bool uses_newton(LocalSolver solver, CriterionKind criterion) {
+  return solver == LocalSolver::Automatic && newton_applies(criterion);
+}
+
 LocalResult run_local(const Program& start, CriterionKind criterion, LocalSolver solver) {
-  return solver == LocalSolver::Automatic && newton_applies(criterion) ? optimize_by_newton(start, criterion)
-                                                                         : optimize_locally(start, criterion);
+  return uses_newton(solver, criterion) ? optimize_by_newton(start, criterion) : optimize_locally(start, criterion);
 }
 
 // The E problem (an eigenvalue constraint M/N - sI = LL^T) converges poorly from a random program:
@@ -185,8 +189,9 @@ SynthesisResult synthesize(const SynthesisOptions& options) {
   out.program = results[best].program;
   out.value = results[best].value;
   out.starts = starts;
-  out.local_solver = options.local == LocalSolver::Automatic && newton_applies(options.criterion) ? "newton" : "ipopt";
-  if (out.local_solver == "newton") {
+  const bool newton = uses_newton(options.local, options.criterion);
+  out.local_solver = newton ? "newton" : "ipopt";
+  if (newton) {
     // Ipopt, from the best Newton program, must find it a KKT point of the constrained problem
     // (same value); should it find a lower one, that is kept.
     const Program best_program = out.program;

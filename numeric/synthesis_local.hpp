@@ -27,8 +27,8 @@ struct LocalResult {
 LocalResult optimize_locally(const Program& start, CriterionKind criterion, const LocalOptions& options = {});
 
 // The other local solver: Riemannian Newton on the spheres (sphere_newton.hpp), for the smooth
-// criteria D and A only; about 30x faster per start than Ipopt at N = 18 (bench/), because it
-// needs no KKT factorisation of a 4N-dimensional system. status 0: converged.
+// criteria D and A only; a D start at N = 18 takes 0.26 ms against Ipopt's 7.2 ms (bench/), because
+// it needs no KKT factorisation of a 4N-dimensional system. status 0: converged.
 bool newton_applies(CriterionKind criterion);
 LocalResult optimize_by_newton(const Program& start, CriterionKind criterion);
 
