@@ -16,7 +16,8 @@ TEST(OptimizeCli, JsonKeys) {
   const auto [code, out] = run("optimize --positions 9 --criterion D --starts 2 --digits 30 --json");
   ASSERT_EQ(code, 0);
   for (const char* key : {"\"criterion\"", "\"positions\"", "\"value\"", "\"program\"", "\"starts\"", "\"hits\"",
-                          "\"seconds\"", "\"value_digits\"", "\"residual\""})
+                          "\"seconds\"", "\"value_digits\"", "\"residual\"", "\"distinct\"", "\"local_solver\"",
+                          "\"confirmed\""})
     EXPECT_NE(out.find(key), std::string::npos) << key;
 }
 
@@ -31,6 +32,7 @@ TEST(SynthesisCli, BadOptionsExitTwo) {
   EXPECT_EQ(run("optimize --positions 18 --criterion Q").first, 2);
   EXPECT_EQ(run("optimize --positions 8").first, 2);
   EXPECT_EQ(run("optimize --criterion D").first, 2);
+  EXPECT_EQ(run("optimize --positions 12 --local fast").first, 2);
   EXPECT_EQ(run("random --positions 18").first, 2);
   EXPECT_EQ(run("sweep --positions 12..10").first, 2);
   EXPECT_EQ(run("sweep --criteria D,X").first, 2);
