@@ -3,8 +3,8 @@
 // confirmation of the best, the distinct-optimum count), per start.
 #include <benchmark/benchmark.h>
 
-#include "numeric/synthesis.hpp"
-#include "numeric/synthesis_local.hpp"
+#include "numeric/synthesis/multistart.hpp"
+#include "numeric/synthesis/ipopt_local.hpp"
 
 namespace {
 

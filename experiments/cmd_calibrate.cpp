@@ -10,10 +10,10 @@
 #include "experiments/command.hpp"
 #include "experiments/evaluation_report.hpp"
 #include "experiments/json.hpp"
-#include "numeric/evaluation.hpp"
-#include "numeric/input_error.hpp"
-#include "numeric/measurements_csv.hpp"
-#include "numeric/scalar_calibration.hpp"
+#include "numeric/criteria/evaluation.hpp"
+#include "numeric/io/input_error.hpp"
+#include "numeric/io/measurements_csv.hpp"
+#include "numeric/calibration/scalar_calibration.hpp"
 
 namespace scalcal::cli {
 namespace {

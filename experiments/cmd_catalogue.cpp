@@ -4,7 +4,7 @@
 
 #include "experiments/command.hpp"
 #include "experiments/evaluation_report.hpp"
-#include "numeric/catalogue.hpp"
+#include "numeric/program/catalogue.hpp"
 
 namespace scalcal::cli {
 namespace {

@@ -3,8 +3,8 @@
 
 #include "experiments/command.hpp"
 #include "experiments/evaluation_report.hpp"
-#include "numeric/catalogue.hpp"
-#include "numeric/input_error.hpp"
+#include "numeric/program/catalogue.hpp"
+#include "numeric/io/input_error.hpp"
 
 namespace scalcal::cli {
 namespace {

@@ -5,7 +5,7 @@
 
 #include "experiments/command.hpp"
 #include "experiments/json.hpp"
-#include "numeric/input_error.hpp"
+#include "numeric/io/input_error.hpp"
 #include "symbolic/criteria.hpp"
 #include "symbolic/family.hpp"
 

@@ -9,8 +9,8 @@
 #include "experiments/synthesis_cli.hpp"
 #include <optional>
 
-#include "numeric/polish.hpp"
-#include "numeric/synthesis.hpp"
+#include "numeric/polish/polish.hpp"
+#include "numeric/synthesis/multistart.hpp"
 
 namespace scalcal::cli {
 namespace {

@@ -6,7 +6,7 @@
 #include "experiments/command.hpp"
 #include "experiments/json.hpp"
 #include "experiments/synthesis_cli.hpp"
-#include "numeric/synthesis.hpp"
+#include "numeric/synthesis/multistart.hpp"
 
 namespace scalcal::cli {
 namespace {

@@ -8,11 +8,11 @@
 
 #include "experiments/command.hpp"
 #include "experiments/json.hpp"
-#include "numeric/catalogue.hpp"
-#include "numeric/evaluation.hpp"
-#include "numeric/input_error.hpp"
-#include "numeric/monte_carlo.hpp"
-#include "numeric/parameters.hpp"
+#include "numeric/program/catalogue.hpp"
+#include "numeric/criteria/evaluation.hpp"
+#include "numeric/io/input_error.hpp"
+#include "numeric/calibration/monte_carlo.hpp"
+#include "numeric/model/parameters.hpp"
 
 namespace scalcal::cli {
 namespace {

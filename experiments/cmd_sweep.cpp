@@ -7,9 +7,9 @@
 
 #include "experiments/command.hpp"
 #include "experiments/synthesis_cli.hpp"
-#include "numeric/input_error.hpp"
-#include "numeric/limits.hpp"
-#include "numeric/synthesis.hpp"
+#include "numeric/io/input_error.hpp"
+#include "numeric/criteria/limits.hpp"
+#include "numeric/synthesis/multistart.hpp"
 
 namespace scalcal::cli {
 namespace {

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "experiments/json.hpp"
-#include "numeric/evaluation.hpp"
+#include "numeric/criteria/evaluation.hpp"
 
 namespace scalcal::cli {
 

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "experiments/command.hpp"
-#include "numeric/input_error.hpp"
+#include "numeric/io/input_error.hpp"
 
 namespace {
 

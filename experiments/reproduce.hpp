@@ -11,9 +11,9 @@
 #include <vector>
 
 #include "experiments/reproduce_report.hpp"
-#include "numeric/criterion_kind.hpp"
-#include "numeric/evaluation.hpp"
-#include "numeric/program.hpp"
+#include "numeric/criteria/criterion_kind.hpp"
+#include "numeric/criteria/evaluation.hpp"
+#include "numeric/program/program.hpp"
 
 namespace scalcal::reproduce {
 

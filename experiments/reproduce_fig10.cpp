@@ -1,7 +1,7 @@
 // fig10 (new): the optimum of each criterion (D, A, E, S) against N, with its N -> infinity limit
 // (numeric/limits.hpp) and the paper's Tables 1-3 programs at N = 18. Data: fig10.csv.
 #include "experiments/reproduce.hpp"
-#include "numeric/limits.hpp"
+#include "numeric/criteria/limits.hpp"
 #include "plots/csv_writer.hpp"
 #include "plots/figure.hpp"
 

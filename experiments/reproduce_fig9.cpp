@@ -7,7 +7,7 @@
 #include <cmath>
 
 #include "experiments/reproduce.hpp"
-#include "numeric/parameters.hpp"
+#include "numeric/model/parameters.hpp"
 #include "plots/csv_writer.hpp"
 #include "plots/figure.hpp"
 

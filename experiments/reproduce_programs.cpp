@@ -10,10 +10,10 @@
 
 
 #include "experiments/reproduce.hpp"
-#include "numeric/catalogue.hpp"
-#include "numeric/design.hpp"
+#include "numeric/program/catalogue.hpp"
+#include "numeric/model/design.hpp"
 
-#include "numeric/synthesis.hpp"
+#include "numeric/synthesis/multistart.hpp"
 
 namespace scalcal::reproduce {
 

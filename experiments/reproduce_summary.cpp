@@ -2,7 +2,7 @@
 #include <cmath>
 
 #include "experiments/reproduce.hpp"
-#include "numeric/limits.hpp"
+#include "numeric/criteria/limits.hpp"
 
 namespace scalcal::reproduce {
 

@@ -2,8 +2,8 @@
 // optimised programs for the same criterion, both evaluated on every criterion.
 // Data: tables.csv, and scalcal's programs as table{1,2,3}_scalcal.csv (x, y, z, azimuth, elevation).
 #include "experiments/reproduce.hpp"
-#include "numeric/limits.hpp"
-#include "numeric/program_csv.hpp"
+#include "numeric/criteria/limits.hpp"
+#include "numeric/io/program_csv.hpp"
 #include "plots/csv_writer.hpp"
 
 namespace scalcal::reproduce {

@@ -1,7 +1,7 @@
 #include "experiments/synthesis_cli.hpp"
 
-#include "numeric/input_error.hpp"
-#include "numeric/program_csv.hpp"
+#include "numeric/io/input_error.hpp"
+#include "numeric/io/program_csv.hpp"
 
 namespace scalcal::cli {
 

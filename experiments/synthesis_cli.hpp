@@ -6,8 +6,8 @@
 
 #include "experiments/command.hpp"
 #include "experiments/json.hpp"
-#include "numeric/criterion_kind.hpp"
-#include "numeric/program.hpp"
+#include "numeric/criteria/criterion_kind.hpp"
+#include "numeric/program/program.hpp"
 
 namespace scalcal::cli {
 

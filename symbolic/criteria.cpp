@@ -57,12 +57,12 @@ ex display(const ex& e) {
 std::string ExactValue::str() const {
   std::ostringstream s;
   if (resolved()) {
-    s << value();
+    s << canonical_text(value());
   } else if (candidates.size() == 1) {
-    s << display(candidates[0]);
+    s << canonical_text(display(candidates[0]));
   } else {
     s << "max(";
-    for (std::size_t i = 0; i < candidates.size(); ++i) s << (i ? ", " : "") << display(candidates[i]);
+    for (std::size_t i = 0; i < candidates.size(); ++i) s << (i ? ", " : "") << canonical_text(display(candidates[i]));
     s << ")";
   }
   return s.str();

@@ -3,6 +3,7 @@
 // symbols), and a canonical form that rationalises square roots out of denominators.
 #pragma once
 #include <array>
+#include <string>
 #include <vector>
 
 #include <ginac/ginac.h>
@@ -26,6 +27,10 @@ GiNaC::matrix moment_matrix(const std::vector<WeightedPoint>& points);
 // Expanded numerator over a denominator free of square roots of numbers: two equal elements of
 // Q(sqrt p, sqrt q, ...)(symbols) then print alike, and a zero test is `canonical(x).is_zero()`.
 GiNaC::ex canonical(const GiNaC::ex& e);
+
+// The text of an expression for output: the same expression prints the same bytes on every run
+// (scalcal's reproducibility rule), whatever GiNaC's internal term order.
+std::string canonical_text(const GiNaC::ex& e);
 
 // True when e is provably zero after canonical().
 inline bool is_zero_exact(const GiNaC::ex& e) { return canonical(e).is_zero(); }

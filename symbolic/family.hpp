@@ -10,7 +10,7 @@
 
 #include <ginac/ginac.h>
 
-#include "numeric/program.hpp"
+#include "numeric/program/program.hpp"
 
 namespace scalcal::symbolic {
 

@@ -1,7 +1,7 @@
 // The registry of families: adding a family adds one X(name) line here (see ADDING_A_FAMILY.md).
 #include <stdexcept>
 
-#include "numeric/input_error.hpp"
+#include "numeric/io/input_error.hpp"
 #include "symbolic/family.hpp"
 
 #define SCALCAL_FAMILY_LIST(X) \

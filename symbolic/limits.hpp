@@ -7,7 +7,7 @@
 
 #include <ginac/ginac.h>
 
-#include "numeric/criterion_kind.hpp"
+#include "numeric/criteria/criterion_kind.hpp"
 
 namespace scalcal::symbolic {
 

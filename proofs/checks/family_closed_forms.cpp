@@ -2,7 +2,7 @@
 // b = (e + 8d/9)/(6a + 12e + 8d); rotation(k, phase) for every k >= 5 has M/N equal to the
 // symmetric model with b = 1/24 whatever the phase, while k = 3, 4 depend on the phase; and
 // every family member's criteria are at least the limits (Theorem 7 on examples).
-#include "numeric/limits.hpp"
+#include "numeric/criteria/limits.hpp"
 #include "proofs/checks/check.hpp"
 #include "symbolic/criteria.hpp"
 #include "symbolic/exact.hpp"

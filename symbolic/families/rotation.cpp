@@ -4,7 +4,7 @@
 // w = e^{it}, a monomial cos^a t sin^b t (a + b <= 4) is a Laurent polynomial in w, and
 // sum_j w_j^n = k e^{i n phase} when k divides n and 0 otherwise. So for k >= 5 only n = 0
 // survives and every k >= 5 has the same normalised moments; k = 3 and 4 depend on the phase.
-#include "numeric/input_error.hpp"
+#include "numeric/io/input_error.hpp"
 #include "symbolic/exact.hpp"
 #include "symbolic/family.hpp"
 

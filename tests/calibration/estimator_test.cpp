@@ -4,8 +4,8 @@
 
 #include <cmath>
 
-#include "numeric/evaluation.hpp"
-#include "numeric/scalar_calibration.hpp"
+#include "numeric/criteria/evaluation.hpp"
+#include "numeric/calibration/scalar_calibration.hpp"
 #include "tests/calibration/independent_simulator.hpp"
 
 namespace {

@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "numeric/meter_model.hpp"
+#include "numeric/calibration/meter_model.hpp"
 
 namespace {
 

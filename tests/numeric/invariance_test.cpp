@@ -10,7 +10,7 @@
 
 #include <Eigen/Geometry>
 
-#include "numeric/evaluation.hpp"
+#include "numeric/criteria/evaluation.hpp"
 
 namespace scalcal {
 namespace {

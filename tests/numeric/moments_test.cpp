@@ -9,7 +9,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "numeric/evaluation.hpp"
+#include "numeric/criteria/evaluation.hpp"
 
 namespace scalcal {
 namespace {

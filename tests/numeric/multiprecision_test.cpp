@@ -4,8 +4,8 @@
 
 #include <boost/multiprecision/cpp_bin_float.hpp>
 
-#include "numeric/evaluation.hpp"
-#include "numeric/limits.hpp"
+#include "numeric/criteria/evaluation.hpp"
+#include "numeric/criteria/limits.hpp"
 
 namespace scalcal {
 namespace {

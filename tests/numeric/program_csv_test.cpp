@@ -4,8 +4,8 @@
 
 #include <cmath>
 
-#include "numeric/input_error.hpp"
-#include "numeric/program_csv.hpp"
+#include "numeric/io/input_error.hpp"
+#include "numeric/io/program_csv.hpp"
 
 namespace scalcal {
 namespace {

@@ -12,7 +12,7 @@
 
 #include <Eigen/Geometry>
 
-#include "numeric/program_equivalence.hpp"
+#include "numeric/program/program_equivalence.hpp"
 
 namespace scalcal {
 namespace {

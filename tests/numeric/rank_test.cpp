@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "numeric/evaluation.hpp"
+#include "numeric/criteria/evaluation.hpp"
 
 namespace scalcal {
 namespace {

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <vector>
 
-#include "numeric/synthesis_problems.hpp"
+#include "numeric/synthesis/ipopt_problems.hpp"
 
 namespace scalcal {
 namespace {

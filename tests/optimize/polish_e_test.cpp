@@ -11,9 +11,9 @@
 
 #include <boost/multiprecision/cpp_bin_float.hpp>
 
-#include "numeric/evaluation.hpp"
-#include "numeric/polish.hpp"
-#include "numeric/synthesis.hpp"
+#include "numeric/criteria/evaluation.hpp"
+#include "numeric/polish/polish.hpp"
+#include "numeric/synthesis/multistart.hpp"
 
 namespace scalcal {
 namespace {

@@ -5,9 +5,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "numeric/evaluation.hpp"
-#include "numeric/random_search_kernel.hpp"
-#include "numeric/synthesis.hpp"
+#include "numeric/criteria/evaluation.hpp"
+#include "numeric/synthesis/random_search_kernel.hpp"
+#include "numeric/synthesis/multistart.hpp"
 
 namespace scalcal {
 namespace {

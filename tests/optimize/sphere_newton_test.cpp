@@ -9,9 +9,9 @@
 #include <boost/multiprecision/cpp_bin_float.hpp>
 #include <Eigen/Eigenvalues>
 
-#include "numeric/program.hpp"
-#include "numeric/sphere_newton.hpp"
-#include "numeric/synthesis_local.hpp"
+#include "numeric/program/program.hpp"
+#include "numeric/synthesis/sphere_newton.hpp"
+#include "numeric/synthesis/ipopt_local.hpp"
 
 namespace scalcal {
 namespace {

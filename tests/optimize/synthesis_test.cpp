@@ -5,10 +5,10 @@
 
 #include <boost/multiprecision/cpp_bin_float.hpp>
 
-#include "numeric/catalogue.hpp"
-#include "numeric/evaluation.hpp"
-#include "numeric/polish.hpp"
-#include "numeric/synthesis.hpp"
+#include "numeric/program/catalogue.hpp"
+#include "numeric/criteria/evaluation.hpp"
+#include "numeric/polish/polish.hpp"
+#include "numeric/synthesis/multistart.hpp"
 
 namespace scalcal {
 namespace {

@@ -2,8 +2,8 @@
 // evaluate on the program built by numeric/program.hpp), two independent derivations.
 #include <gtest/gtest.h>
 
-#include "numeric/evaluation.hpp"
-#include "numeric/input_error.hpp"
+#include "numeric/criteria/evaluation.hpp"
+#include "numeric/io/input_error.hpp"
 #include "symbolic/exact.hpp"
 #include "symbolic/criteria.hpp"
 #include "symbolic/family.hpp"

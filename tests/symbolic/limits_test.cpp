@@ -2,8 +2,8 @@
 // parsed by GiNaC), and against the numeric core on programs that attain them.
 #include <gtest/gtest.h>
 
-#include "numeric/evaluation.hpp"
-#include "numeric/limits.hpp"
+#include "numeric/criteria/evaluation.hpp"
+#include "numeric/criteria/limits.hpp"
 #include "symbolic/exact.hpp"
 #include "symbolic/limits.hpp"
 

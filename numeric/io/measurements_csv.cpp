@@ -1,0 +1,65 @@
+#include "numeric/io/measurements_csv.hpp"
+
+#include <cmath>
+#include <map>
+
+#include "numeric/io/input_error.hpp"
+
+namespace scalcal {
+
+std::vector<PositionSamples> measurements_from_table(const CsvTable& table, bool need_nominal) {
+  for (const char* c : {"ix", "iy", "iz"})
+    if (!table.has(c)) throw InputError(table.file, 1, std::string("missing column '") + c + "' (need ix,iy,iz)");
+  const bool has_nominal = table.has("x") || table.has("y") || table.has("z");
+  if (has_nominal || need_nominal)
+    for (const char* c : {"x", "y", "z"})
+      if (!table.has(c))
+        throw InputError(table.file, 1, std::string("missing column '") + c + "'" +
+                                            (need_nominal ? " (the projection modulus needs the nominal direction x,y,z)"
+                                                          : " (give all of x,y,z or none)"));
+  const int ix = table.column("ix"), iy = table.column("iy"), iz = table.column("iz");
+  const int cp = table.column("position");
+  const int cx = table.column("x"), cy = table.column("y"), cz = table.column("z");
+  if (table.rows.empty()) throw InputError(table.file, 0, "no measurements after the header");
+
+  std::vector<PositionSamples> out;
+  std::map<long long, std::size_t> index;
+  for (const auto& row : table.rows) {
+    const auto& v = row.values;
+    std::size_t k = out.size();
+    if (cp >= 0) {
+      const double p = v[cp];
+      if (p != std::floor(p) || std::abs(p) > 9e15)
+        throw InputError(table.file, row.line, "position must be an integer, found " + std::to_string(p));
+      const auto [it, fresh] = index.emplace(static_cast<long long>(p), out.size());
+      k = it->second;
+      if (fresh) out.emplace_back();
+    } else {
+      out.emplace_back();
+    }
+    PositionSamples& pos = out[k];
+    if (pos.samples.empty()) pos.line = row.line;
+    pos.samples.push_back(Vec3(v[ix], v[iy], v[iz]));
+    if (cx >= 0) {
+      const Vec3 n(v[cx], v[cy], v[cz]);
+      if (n.norm() == 0.0) throw InputError(table.file, row.line, "nominal direction x,y,z is the zero vector");
+      const Vec3 u = n.normalized();
+      if (!pos.nominal) {
+        pos.nominal = u;
+      } else if ((*pos.nominal - u).norm() > 1e-9) {
+        throw InputError(table.file, row.line,
+                         "nominal direction differs from that of line " + std::to_string(pos.line) + " of the same position");
+      }
+    }
+  }
+  for (const auto& p : out)
+    if (p.mean().norm() == 0.0)
+      throw InputError(table.file, p.line, "the mean measurement of this position is the zero vector");
+  return out;
+}
+
+std::vector<PositionSamples> read_measurements_csv(const std::string& path, bool need_nominal) {
+  return measurements_from_table(read_csv(path), need_nominal);
+}
+
+}  // namespace scalcal

@@ -1,0 +1,59 @@
+#include "numeric/io/program_csv.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+
+#include "numeric/io/input_error.hpp"
+
+namespace scalcal {
+
+Program program_from_table(const CsvTable& t) {
+  Program p;
+  const int x = t.column("x"), y = t.column("y"), z = t.column("z");
+  const int a1 = t.column("alpha1_deg"), a2 = t.column("alpha2_deg");
+  const bool cartesian = x >= 0 && y >= 0 && z >= 0;
+  if (!cartesian && !(a1 >= 0 && a2 >= 0))
+    throw InputError(t.file, 1, "header must name columns x,y,z or alpha1_deg,alpha2_deg");
+  for (const auto& row : t.rows) {
+    Vec3 eta;
+    if (cartesian) {
+      eta = Vec3(row.values[x], row.values[y], row.values[z]);
+      const double n = eta.norm();
+      if (!(n > 0.0)) throw InputError(t.file, row.line, "zero vector: a position needs a direction");
+      if (!std::isfinite(n)) throw InputError(t.file, row.line, "vector too large to normalise");
+      eta /= n;
+    } else {
+      eta = Program::from_angles_deg(row.values[a1], row.values[a2]);
+    }
+    p.positions.push_back(eta);
+  }
+  if (p.size() < kMinimumPositions)
+    throw InputError(t.file, 0, "only " + std::to_string(p.size()) + " positions; a program needs at least " +
+                                    std::to_string(kMinimumPositions) + " (one per parameter)");
+  return p;
+}
+
+Program read_program_csv(const std::string& path) { return program_from_table(read_csv(path)); }
+
+Eigen::Vector2d angles_deg(const Vec3& eta) {
+  const double deg = 180.0 / M_PI;
+  return {std::atan2(eta(1), eta(0)) * deg, std::asin(std::clamp(eta(2), -1.0, 1.0)) * deg};
+}
+
+void write_program_csv(std::ostream& out, const Program& program) {
+  out << "x,y,z,alpha1_deg,alpha2_deg\n" << std::setprecision(17);
+  for (const auto& eta : program.positions) {
+    const auto a = angles_deg(eta);
+    out << eta(0) << ',' << eta(1) << ',' << eta(2) << ',' << a(0) << ',' << a(1) << '\n';
+  }
+}
+
+bool write_program_csv(const std::string& path, const Program& program) {
+  std::ofstream out(path);
+  if (!out) return false;
+  write_program_csv(out, program);
+  return static_cast<bool>(out);
+}
+
+}  // namespace scalcal

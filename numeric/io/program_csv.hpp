@@ -1,0 +1,24 @@
+// Programs as CSV files: read with columns x,y,z (normalised on reading) or
+// alpha1_deg,alpha2_deg (azimuth, elevation); written with x,y,z,alpha1_deg,alpha2_deg.
+#pragma once
+#include <ostream>
+#include <string>
+
+#include "numeric/io/csv_table.hpp"
+#include "numeric/program/program.hpp"
+
+namespace scalcal {
+
+inline constexpr int kMinimumPositions = 9;
+
+// Throws InputError for a bad file, a zero vector, or fewer than 9 positions.
+Program read_program_csv(const std::string& path);
+Program program_from_table(const CsvTable& table);
+
+void write_program_csv(std::ostream& out, const Program& program);
+bool write_program_csv(const std::string& path, const Program& program);
+
+// Azimuth alpha1 and elevation alpha2 in degrees of a unit vector (inverse of from_angles_deg).
+Eigen::Vector2d angles_deg(const Vec3& eta);
+
+}  // namespace scalcal

@@ -1,0 +1,114 @@
+#include "numeric/program/catalogue.hpp"
+
+#include <cstdlib>
+#include <filesystem>
+#include <regex>
+
+#include "numeric/io/input_error.hpp"
+#include "numeric/io/program_csv.hpp"
+
+namespace scalcal {
+
+// Found beside the running executable, not at a path compiled in, so a moved or installed binary
+// still finds it: <prefix>/bin/scalcal reads <prefix>/share/scalcal/data, and the build tree
+// mirrors that layout (build/share/scalcal/data, copied at configure time).
+std::string data_dir() {
+  if (const char* env = std::getenv("SCALCAL_DATA"); env && *env) return env;
+  std::error_code ec;
+  const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+  if (!ec)
+    for (const char* up : {"..", "../.."}) {
+      const std::filesystem::path candidate = exe.parent_path() / up / "share/scalcal/data";
+      if (std::filesystem::exists(candidate / "table1_A.csv", ec)) return candidate.lexically_normal().string();
+    }
+  throw InputError("", 0, "cannot find the data folder with Tables 1-3 (looked in ../share/scalcal/data beside the "
+                          "executable); set SCALCAL_DATA to the folder holding table1_A.csv");
+}
+
+namespace {
+
+struct TableSource {
+  const char* name;
+  const char* file;
+  const char* description;
+};
+
+constexpr TableSource kTables[] = {
+    {"table1-A", "table1_A.csv", "18 positions optimised for the A-criterion (trace K)"},
+    {"table2-E", "table2_E.csv", "18 positions optimised for the E-criterion (max eigenvalue of K)"},
+    {"table3-S", "table3_S.csv", "18 positions optimised for the max-diagonal criterion (Xi_B)"},
+};
+
+int parse_int(const std::string& s, const std::string& name) {
+  try {
+    std::size_t used = 0;
+    const int v = std::stoi(s, &used);
+    if (used == s.size()) return v;
+  } catch (const std::exception&) {
+  }
+  throw InputError(name, 0, "'" + s + "' is not an integer");
+}
+
+}  // namespace
+
+std::optional<Program> named_program(const std::string& name) {
+  std::smatch m;
+  if (name == "classic18") return Program::classic18();
+  if (name == "nine-2axes") return Program::nine_two_axes();
+  if (name == "nine-3axes") return Program::nine_three_axes();
+  if (name == "dodecahedral-12") return Program::dodecahedral();
+  if (name == "icosahedral-20") return Program::icosahedral();
+  for (const auto& t : kTables)
+    if (name == t.name) return read_program_csv(data_dir() + "/" + t.file);
+  if (std::regex_match(name, m, std::regex(R"(rotation-(\d+)(?:-p(-?[0-9.]+))?)"))) {
+    const int k = parse_int(m[1], name);
+    if (k < 3) throw InputError(name, 0, "a rotation program needs k >= 3 positions per ring");
+    const double phase = m[2].matched ? std::stod(m[2]) : 0.0;
+    return Program::rotation(k, phase);
+  }
+  if (std::regex_match(name, m, std::regex(R"(octahedral-(\d+)-(\d+)-(\d+))")))
+    return Program::octahedral(parse_int(m[1], name), parse_int(m[2], name), parse_int(m[3], name));
+  if (std::regex_match(name, m, std::regex(R"(random-(\d+)(?:-s(\d+))?)"))) {
+    const int n = parse_int(m[1], name);
+    if (n < 1 || n > 100000) throw InputError(name, 0, "random program size must be 1..100000");
+    const std::uint64_t seed = m[2].matched ? std::stoull(m[2]) : 1;
+    return Program::random(n, seed);
+  }
+  return std::nullopt;
+}
+
+Program resolve_program(const std::string& argument) {
+  if (auto p = named_program(argument)) return *p;
+  if (std::filesystem::exists(argument) || argument.find('/') != std::string::npos ||
+      argument.ends_with(".csv"))
+    return read_program_csv(argument);
+  throw InputError(argument, 0, "neither a catalogue name nor a file (see `scalcal catalogue`)");
+}
+
+std::vector<CatalogueEntry> catalogue() {
+  std::vector<CatalogueEntry> c;
+  auto add = [&](const std::string& name, const std::string& description, const std::string& source) {
+    c.push_back({name, description, source, *named_program(name)});
+  };
+  add("classic18", "axes along/against the vector + 4 positions at 45 deg per axis pair", "Fig. 1, ref. [14]");
+  add("nine-2axes", "6 axis positions + 3 projecting on two axes", "refs. [8, 14]");
+  add("nine-3axes", "6 axis positions + 3 projecting on three axes", "ref. [13], Fig. 8b");
+  for (int k = 3; k <= 12; ++k)
+    add("rotation-" + std::to_string(k), std::to_string(k) + " positions per ring about each axis",
+        k == 6 ? "Fig. 2, ref. [12]" : "Fig. 4 (stars), ref. [12]");
+  add("rotation-4-p45", "4 positions per ring, phase 45 deg (the 12 edge positions)", "Fig. 4 (stars)");
+  const int octa[][3] = {{0, 1, 0}, {1, 0, 1}, {1, 1, 0}, {0, 1, 1}, {1, 1, 1}, {2, 1, 0},
+                         {1, 2, 0}, {0, 2, 1}, {2, 2, 1}, {1, 1, 2}};
+  for (const auto& o : octa)
+    add("octahedral-" + std::to_string(o[0]) + "-" + std::to_string(o[1]) + "-" + std::to_string(o[2]),
+        "uniform projections: axes x" + std::to_string(o[0]) + ", edges x" + std::to_string(o[1]) +
+            ", diagonals x" + std::to_string(o[2]),
+        "Fig. 4 (squares)");
+  add("dodecahedral-12", "dodecahedral jig: 12 face normals", "Fig. 4, ref. [25]");
+  add("icosahedral-20", "icosahedral jig: 20 face normals", "Fig. 4, ref. [25]");
+  for (const auto& t : kTables) add(t.name, t.description, std::string("Table ") + t.name[5]);
+  add("random-18-s1", "18 positions uniform on the sphere, seed 1", "Fig. 4 (dashed: best of many)");
+  return c;
+}
+
+}  // namespace scalcal

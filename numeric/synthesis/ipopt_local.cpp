@@ -1,0 +1,183 @@
+// Ipopt TNLP over x = (eta_1, ..., eta_N, extra...), with N norm constraints |eta_i|^2 = 1
+// followed by the criterion's own constraints (dense rows). The criterion is a SmoothProblem:
+// the adapter never knows which one it runs.
+#include "numeric/synthesis/ipopt_local.hpp"
+
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <vector>
+
+#include <Eigen/Eigenvalues>
+#include <IpIpoptApplication.hpp>
+#include <IpSolveStatistics.hpp>
+#include <IpTNLP.hpp>
+
+#include "numeric/criteria/derivatives.hpp"
+#include "numeric/criteria/evaluation.hpp"
+#include "numeric/synthesis/ipopt_problems.hpp"
+
+namespace scalcal {
+
+namespace {
+
+using Ipopt::Index;
+using Ipopt::Number;
+
+class ProgramNlp : public Ipopt::TNLP {
+ public:
+  ProgramNlp(const SmoothProblem& problem, std::vector<double> start)
+      : p_(problem), x0_(std::move(start)), n_(static_cast<int>(x0_.size())) {}
+
+  const std::vector<double>& solution() const { return xs_; }
+
+  bool get_nlp_info(Index& n, Index& m, Index& nnz_jac, Index& nnz_h, IndexStyleEnum& style) override {
+    n = n_;
+    m = p_.positions() + p_.constraints();
+    nnz_jac = 3 * p_.positions() + p_.constraints() * n_;
+    nnz_h = p_.has_hessian() ? n_ * (n_ + 1) / 2 : 0;
+    style = TNLP::C_STYLE;
+    return true;
+  }
+
+  bool get_bounds_info(Index n, Number* x_l, Number* x_u, Index m, Number* g_l, Number* g_u) override {
+    for (Index i = 0; i < n; ++i) {
+      x_l[i] = -2e19;
+      x_u[i] = 2e19;
+    }
+    for (int i = 0; i < p_.positions(); ++i) g_l[i] = g_u[i] = 1.0;
+    p_.constraint_bounds(g_l + p_.positions(), g_u + p_.positions());
+    (void)m;
+    return true;
+  }
+
+  bool get_starting_point(Index n, bool init_x, Number* x, bool init_z, Number*, Number*, Index, bool init_lambda,
+                          Number*) override {
+    if (!init_x || init_z || init_lambda) return false;
+    for (Index i = 0; i < n; ++i) x[i] = x0_[static_cast<std::size_t>(i)];
+    return true;
+  }
+
+  bool eval_f(Index, const Number* x, bool, Number& f) override { return p_.objective(x, f, nullptr); }
+
+  bool eval_grad_f(Index n, const Number* x, bool, Number* g) override {
+    double f;
+    std::fill(g, g + n, 0.0);
+    return p_.objective(x, f, g);
+  }
+
+  bool eval_g(Index, const Number* x, bool, Index, Number* g) override {
+    for (int i = 0; i < p_.positions(); ++i)
+      g[i] = x[3 * i] * x[3 * i] + x[3 * i + 1] * x[3 * i + 1] + x[3 * i + 2] * x[3 * i + 2];
+    return p_.constraints() == 0 || p_.constraint_values(x, g + p_.positions(), nullptr);
+  }
+
+  bool eval_jac_g(Index, const Number* x, bool, Index, Index, Index* rows, Index* cols, Number* values) override {
+    const int N = p_.positions(), mc = p_.constraints();
+    if (values == nullptr) {
+      Index k = 0;
+      for (int i = 0; i < N; ++i)
+        for (int c = 0; c < 3; ++c, ++k) {
+          rows[k] = i;
+          cols[k] = 3 * i + c;
+        }
+      for (int r = 0; r < mc; ++r)
+        for (int j = 0; j < n_; ++j, ++k) {
+          rows[k] = N + r;
+          cols[k] = j;
+        }
+      return true;
+    }
+    for (int i = 0; i < 3 * N; ++i) values[i] = 2.0 * x[i];
+    if (mc == 0) return true;
+    std::vector<double> g(static_cast<std::size_t>(mc));
+    std::fill(values + 3 * N, values + 3 * N + mc * n_, 0.0);
+    return p_.constraint_values(x, g.data(), values + 3 * N);
+  }
+
+  // Lower triangle, dense: the criterion's Lagrangian Hessian plus 2 lambda_i I_3 from the norm
+  // constraints |eta_i|^2 = 1.
+  bool eval_h(Index, const Number* x, bool, Number obj_factor, Index, const Number* lambda, bool, Index,
+              Index* rows, Index* cols, Number* values) override {
+    if (values == nullptr) {
+      for (Index r = 0, k = 0; r < n_; ++r)
+        for (Index c = 0; c <= r; ++c, ++k) {
+          rows[k] = r;
+          cols[k] = c;
+        }
+      return true;
+    }
+    if (!p_.lagrangian_hessian(x, obj_factor, lambda + p_.positions(), values)) return false;
+    for (Index r = 0; r < 3 * p_.positions(); ++r) values[r * (r + 1) / 2 + r] += 2.0 * lambda[r / 3];
+    return true;
+  }
+
+  void finalize_solution(Ipopt::SolverReturn, Index n, const Number* x, const Number*, const Number*, Index,
+                         const Number*, const Number*, Number, const Ipopt::IpoptData*,
+                         Ipopt::IpoptCalculatedQuantities*) override {
+    xs_.assign(x, x + n);
+  }
+
+ private:
+  const SmoothProblem& p_;
+  std::vector<double> x0_;
+  std::vector<double> xs_;
+  int n_;
+};
+
+}  // namespace
+
+double criterion_value(const Program& program, CriterionKind criterion) {
+  const Evaluation ev = evaluate(program);
+  switch (criterion) {
+    case CriterionKind::D: return ev.D;
+    case CriterionKind::A: return ev.A;
+    case CriterionKind::E: return ev.E;
+    case CriterionKind::S: return ev.S;
+  }
+  return std::numeric_limits<double>::infinity();
+}
+
+LocalResult optimize_locally(const Program& start, CriterionKind criterion, const LocalOptions& options) {
+  const std::unique_ptr<SmoothProblem> problem = make_problem(criterion, start.size());
+  LocalResult out;
+  out.program = start;
+  out.value = criterion_value(start, criterion);
+  if (!std::isfinite(out.value)) return out;  // a rank-deficient start cannot be optimised
+
+  Ipopt::SmartPtr<ProgramNlp> nlp = new ProgramNlp(*problem, problem->start(start));
+  // One application per thread, reused: creating and initialising Ipopt costs more than a whole
+  // D optimisation at N = 18. (Sequential MUMPS is not thread-safe: synthesize() forks instead.)
+  thread_local Ipopt::SmartPtr<Ipopt::IpoptApplication> app;
+  if (Ipopt::IsNull(app)) {
+    app = IpoptApplicationFactory();
+    app->Options()->SetIntegerValue("print_level", 0);
+    app->Options()->SetStringValue("sb", "yes");
+    app->Options()->SetStringValue("mu_strategy", "adaptive");
+    app->Options()->SetIntegerValue("min_refinement_steps", 0);  // refine only when the residual asks for it
+    if (app->Initialize() != Ipopt::Solve_Succeeded) {
+      app = nullptr;
+      return out;
+    }
+  }
+  app->Options()->SetStringValue("hessian_approximation", problem->has_hessian() ? "exact" : "limited-memory");
+  app->Options()->SetNumericValue("tol", options.tolerance);
+  const bool long_runs = criterion == CriterionKind::E || criterion == CriterionKind::S;
+  app->Options()->SetIntegerValue("max_iter", options.max_iterations > 0 ? options.max_iterations : long_runs ? 300 : 200);
+  const Ipopt::ApplicationReturnStatus status = app->OptimizeTNLP(Ipopt::SmartPtr<Ipopt::TNLP>(GetRawPtr(nlp)));
+  out.status = static_cast<int>(status);
+  out.converged = status == Ipopt::Solve_Succeeded || status == Ipopt::Solved_To_Acceptable_Level;
+  if (Ipopt::IsValid(app->Statistics())) out.iterations = app->Statistics()->IterationCount();
+  const std::vector<double>& x = nlp->solution();
+  if (x.empty()) return out;
+  Program result;
+  for (int i = 0; i < start.size(); ++i) result.positions.push_back(Vec3(x[3 * i], x[3 * i + 1], x[3 * i + 2]).normalized());
+  const double value = criterion_value(result, criterion);
+  if (std::isfinite(value)) {
+    out.program = std::move(result);
+    out.value = value;
+  }
+  return out;
+}
+
+}  // namespace scalcal

@@ -1,0 +1,124 @@
+// Random search on all cores. The R programs are cut into fixed chunks; chunk k has its own
+// generator seeded by (seed, k), threads take chunks from an atomic counter, and the best is the
+// lowest value, ties to the lowest (chunk, index): the result never depends on scheduling.
+// Programs are drawn kLanes at a time; for D their LDL^T factorisations run side by side (one SIMD
+// lane each) and stop early when none of them can beat the thread's best so far (a program that
+// is strictly worse than some program can never be the overall best, so this is scheduling-proof).
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <stdexcept>
+#include <thread>
+#include <vector>
+
+#include "numeric/synthesis/random_search_kernel.hpp"
+#include "numeric/synthesis/multistart.hpp"
+#include "numeric/synthesis/ipopt_local.hpp"
+
+namespace scalcal {
+
+namespace {
+
+constexpr long long kChunk = 1 << 14;
+constexpr std::uint64_t kRandomStream = 0x5241'4E44'4F4D'0001ull;  // keeps apart from multistart seeds
+
+struct Best {
+  double value = std::numeric_limits<double>::infinity();
+  long long index = -1;  // global program index (chunk * kChunk + i)
+  std::vector<double> eta;  // xyz triples
+};
+
+struct Buffers {
+  explicit Buffers(int n) : stride(sample_buffer_size(n)), xyz(static_cast<std::size_t>(3 * kLanes * stride)) {}
+  double* x(int lane) { return xyz.data() + static_cast<std::size_t>(3 * lane * stride); }
+  double* y(int lane) { return x(lane) + stride; }
+  double* z(int lane) { return x(lane) + 2 * stride; }
+  int stride;
+  std::vector<double> xyz;
+};
+
+void consider(Best& mine, double v, long long k, Buffers& buf, int lane, int n) {
+  if (v < mine.value || (v == mine.value && k < mine.index)) {
+    mine.value = v;
+    mine.index = k;
+    for (int i = 0; i < n; ++i) {
+      mine.eta[static_cast<std::size_t>(3 * i)] = buf.x(lane)[i];
+      mine.eta[static_cast<std::size_t>(3 * i + 1)] = buf.y(lane)[i];
+      mine.eta[static_cast<std::size_t>(3 * i + 2)] = buf.z(lane)[i];
+    }
+  }
+}
+
+// Programs begin..end-1 of one chunk. Compiled twice on x86-64 (x86-64-v3: AVX2 + FMA, and the
+// baseline); the loader picks one for the machine. Both draw the same programs; values may differ
+// in the last bits (FMA), so only programs within rounding of each other could swap places.
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
+__attribute__((target_clones("arch=x86-64-v3", "default")))
+#endif
+void search_chunk(Xoshiro256x4& rng, long long begin, long long end, int n, CriterionKind criterion, Buffers& buf,
+                  Best& mine) {
+  const int np = padded_size(n);
+  alignas(32) double m[45][kLanes];
+  double m45[45];
+  for (long long k0 = begin; k0 < end; k0 += kLanes) {
+    const int lanes = static_cast<int>(std::min<long long>(kLanes, end - k0));
+    for (int l = 0; l < lanes; ++l) {
+      sample_sphere(rng, n, buf.x(l), buf.y(l), buf.z(l));
+      accumulate_information(buf.x(l), buf.y(l), buf.z(l), np, n, m45);
+      for (int e = 0; e < 45; ++e) m[e][l] = m45[e];
+    }
+    if (criterion == CriterionKind::D) {
+      for (int l = lanes; l < kLanes; ++l)
+        for (int e = 0; e < 45; ++e) m[e][l] = m[e][0];  // padding lanes repeat lane 0, then are ignored
+      double v[kLanes];
+      d_criterion_batch(m, n, det_needed_for(mine.value, n), v);
+      for (int l = 0; l < lanes; ++l) consider(mine, v[l], k0 + l, buf, l, n);
+    } else {
+      for (int l = 0; l < lanes; ++l) {
+        for (int e = 0; e < 45; ++e) m45[e] = m[e][l];
+        consider(mine, score_information(m45, n, criterion), k0 + l, buf, l, n);
+      }
+    }
+  }
+}
+
+}  // namespace
+
+RandomSearchResult random_search(int positions, long long count, CriterionKind criterion, std::uint64_t seed,
+                                 int threads) {
+  if (positions < 9) throw std::invalid_argument("random_search: at least 9 positions are needed");
+  if (count < 1) throw std::invalid_argument("random_search: count must be positive");
+  const auto t0 = std::chrono::steady_clock::now();
+  const long long chunks = (count + kChunk - 1) / kChunk;
+  const int nthreads = static_cast<int>(std::min<long long>(thread_count(threads), chunks));
+  std::vector<Best> best(static_cast<std::size_t>(nthreads));
+  std::atomic<long long> next{0};
+  auto worker = [&](int t) {
+    Best& mine = best[static_cast<std::size_t>(t)];
+    Buffers buf(positions);  // reused by every program of this thread
+    mine.eta.assign(static_cast<std::size_t>(3 * positions), 0.0);
+    for (long long c; (c = next.fetch_add(1)) < chunks;) {
+      Xoshiro256x4 rng(start_seed(seed ^ kRandomStream, static_cast<std::uint64_t>(c)));
+      search_chunk(rng, c * kChunk, std::min(count, (c + 1) * kChunk), positions, criterion, buf, mine);
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int t = 1; t < nthreads; ++t) pool.emplace_back(worker, t);
+  worker(0);
+  for (auto& th : pool) th.join();
+
+  const Best* winner = &best[0];
+  for (const auto& b : best)
+    if (b.index >= 0 && (winner->index < 0 || b.value < winner->value ||
+                         (b.value == winner->value && b.index < winner->index)))
+      winner = &b;
+  RandomSearchResult out;
+  out.count = count;
+  for (int i = 0; i < positions; ++i)
+    out.program.positions.emplace_back(winner->eta[3 * i], winner->eta[3 * i + 1], winner->eta[3 * i + 2]);
+  out.best = winner->index >= 0 ? criterion_value(out.program, criterion) : winner->value;
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return out;
+}
+
+}  // namespace scalcal

@@ -1,0 +1,309 @@
+// The hot loop of random search: draw a program into fixed buffers, accumulate H^T H in place,
+// factor it and score it, with no allocation per program. Generator: four xoshiro256** streams
+// (Blackman & Vigna 2018) in SIMD lanes, seeded by splitmix64; sphere points by Marsaglia's (1972)
+// method, one 64-bit draw per candidate, rejection by branch-free compaction.
+#pragma once
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <vector>
+
+#include <Eigen/Eigenvalues>
+
+#include "numeric/criteria/criterion_kind.hpp"
+#include "numeric/synthesis/seeds.hpp"
+#include "numeric/model/types.hpp"
+
+namespace scalcal {
+
+// Positions are processed kLanes at a time; buffers hold a multiple of kLanes (padded with zero
+// vectors, which add nothing to H^T H: every entry is a monomial of degree 2 to 4).
+inline constexpr int kLanes = 4;
+constexpr int padded_size(int n) { return (n + kLanes - 1) / kLanes * kLanes; }
+// Room each coordinate buffer of sample_sphere needs for n points.
+constexpr int sample_buffer_size(int n) { return padded_size(n) + kLanes; }
+
+// Four xoshiro256** streams side by side (lane l of each state word; GCC/Clang vector extension),
+// seeded by one splitmix64 chain from the seed: stream l's four words follow stream l-1's.
+class Xoshiro256x4 {
+ public:
+  typedef std::uint64_t Words __attribute__((vector_size(4 * sizeof(std::uint64_t))));
+  explicit Xoshiro256x4(std::uint64_t seed) {
+    for (int l = 0; l < 4; ++l)
+      for (auto& w : s_) w[l] = seed = splitmix64(seed);
+  }
+  // (Results go through a reference: vector types by value would change the ABI without AVX.)
+  void next(Words& result) {
+    const Words m = s_[1] * 5;
+    result = ((m << 7) | (m >> 57)) * 9;
+    const Words t = s_[1] << 17;
+    s_[2] ^= s_[0];
+    s_[3] ^= s_[1];
+    s_[1] ^= s_[2];
+    s_[0] ^= s_[3];
+    s_[2] ^= t;
+    s_[3] = (s_[3] << 45) | (s_[3] >> 19);
+  }
+
+ private:
+  Words s_[4];
+};
+
+// n points uniform on the sphere into x, y, z (each with room for sample_buffer_size(n)).
+// Marsaglia: (u, v) uniform in the unit disc, s = u^2 + v^2, gives
+// (2u sqrt(1-s), 2v sqrt(1-s), 1 - 2s) uniform on the sphere. Each 64-bit draw of each stream is
+// one candidate: u from its high and v from its low 32 bits, as 2^-31 fixed point in [-1, 1) (put
+// into the mantissa of a double in [2, 4), minus 3). Candidates go in order (draw, stream); the
+// accepted ones are kept by branch-free compaction, and those past the n-th are dropped.
+inline void sample_sphere(Xoshiro256x4& rng, int n, double* x, double* y, double* z) {
+  typedef double Reals __attribute__((vector_size(4 * sizeof(double))));
+  typedef std::int64_t Mask __attribute__((vector_size(4 * sizeof(std::int64_t))));
+  const Xoshiro256x4::Words two = Xoshiro256x4::Words{} + 0x4000000000000000ull;
+  for (int k = 0; k < n;) {
+    Xoshiro256x4::Words r;
+    rng.next(r);
+    Reals u, v;
+    const Xoshiro256x4::Words ub = ((r >> 32) << 20) | two, vb = ((r & 0xFFFFFFFFull) << 20) | two;
+    std::memcpy(&u, &ub, sizeof u);
+    std::memcpy(&v, &vb, sizeof v);
+    u -= 3.0;
+    v -= 3.0;
+    const Reals s = u * u + v * v;
+    const Mask accept = (s < 1.0) & (s > 0.0);  // -1 where accepted
+    for (int l = 0; l < 4; ++l) {
+      x[k] = u[l];
+      y[k] = v[l];
+      z[k] = s[l];
+      k -= static_cast<int>(accept[l]);
+    }
+  }
+  // 2 sqrt(1 - s) four at a time: std::sqrt does not vectorise (errno), so 1/sqrt(a) comes from
+  // the bit-level estimate (relative error < 3.5e-2) and four Newton steps (< 1e-20 before
+  // rounding), and sqrt(a) = a / sqrt(a): points are unit vectors to a few ulp.
+  for (int k = n; k < padded_size(n); ++k) z[k] = 0.0;
+  for (int k = 0; k < padded_size(n); k += 4) {
+    Reals X, Y, S;
+    std::memcpy(&X, x + k, sizeof X);
+    std::memcpy(&Y, y + k, sizeof Y);
+    std::memcpy(&S, z + k, sizeof S);
+    const Reals a = 1.0 - S;
+    Xoshiro256x4::Words bits;
+    std::memcpy(&bits, &a, sizeof bits);
+    bits = 0x5FE6EB50C7B537A9ull - (bits >> 1);
+    Reals q;
+    std::memcpy(&q, &bits, sizeof q);
+    for (int it = 0; it < 4; ++it) q = q * (1.5 - 0.5 * a * q * q);
+    const Reals r = 2.0 * a * q;
+    X *= r;
+    Y *= r;
+    S = 1.0 - 2.0 * S;
+    std::memcpy(x + k, &X, sizeof X);
+    std::memcpy(y + k, &Y, sizeof Y);
+    std::memcpy(z + k, &S, sizeof S);
+  }
+  for (int k = n; k < padded_size(n); ++k) x[k] = y[k] = z[k] = 0.0;
+}
+
+// H^T H has only 31 distinct entries: the sums of the monomials of degree 2, 3 and 4 in
+// (x, y, z), listed by degree, then by decreasing power of x, then of y (xx, xy, xz, yy, ...).
+// Accumulating those does 31 multiply-adds per position instead of the 45 + 6 of h_a h_b.
+struct MomentTable {
+  int entry[9][9];  // H^T H(a, b) = moment[entry[a][b]]
+};
+
+constexpr MomentTable make_moment_table() {
+  MomentTable t{};
+  int exps[31][3] = {};
+  int count = 0;
+  for (int degree = 2; degree <= 4; ++degree)
+    for (int a = degree; a >= 0; --a)
+      for (int b = degree - a; b >= 0; --b) {
+        const int e[3] = {a, b, degree - a - b};
+        exps[count][0] = e[0];
+        exps[count][1] = e[1];
+        exps[count][2] = e[2];
+        ++count;
+      }
+  const int h[9][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {2, 0, 0}, {0, 2, 0},
+                       {0, 0, 2}, {1, 1, 0}, {0, 1, 1}, {1, 0, 1}};
+  for (int a = 0; a < 9; ++a)
+    for (int b = 0; b < 9; ++b)
+      for (int k = 0; k < 31; ++k)
+        if (exps[k][0] == h[a][0] + h[b][0] && exps[k][1] == h[a][1] + h[b][1] && exps[k][2] == h[a][2] + h[b][2])
+          t.entry[a][b] = k;
+  return t;
+}
+
+inline constexpr MomentTable kMoments = make_moment_table();
+
+// The 45 entries of the lower triangle of H^T H, packed (a, b), b <= a, at a(a+1)/2 + b.
+constexpr int packed(int a, int b) { return a * (a + 1) / 2 + b; }
+
+// Moments of `count` unit vectors in structure-of-arrays form (n, a multiple of kLanes, includes
+// the zero padding), kLanes partial sums per moment held in one vector (GCC/Clang vector
+// extension: AVX where compiled for it, else pairs of SSE2 registers); the partial sums are added
+// in a fixed order. Only 24 of the 31 moments are accumulated (fewer registers spilled): on the
+// sphere x^2 + y^2 + z^2 = 1, so sum z^2 = count - sum x^2 - sum y^2 and every quartic moment with
+// a factor z^2 is m - m x^2 - m y^2 for a quadratic monomial m.
+inline void accumulate_information(const double* x, const double* y, const double* z, int n, int count,
+                                   double* m45) {
+  typedef double Lanes __attribute__((vector_size(kLanes * sizeof(double))));
+  Lanes acc[24] = {};
+  for (int i = 0; i < n; i += kLanes) {
+    Lanes X, Y, Z;
+    std::memcpy(&X, x + i, sizeof X);
+    std::memcpy(&Y, y + i, sizeof Y);
+    std::memcpy(&Z, z + i, sizeof Z);
+    const Lanes xx = X * X, xy = X * Y, xz = X * Z, yy = Y * Y, yz = Y * Z, zz = Z * Z;
+    acc[0] += xx, acc[1] += xy, acc[2] += xz, acc[3] += yy, acc[4] += yz;
+    acc[5] += X * xx, acc[6] += X * xy, acc[7] += X * xz, acc[8] += X * yy, acc[9] += X * yz;
+    acc[10] += X * zz, acc[11] += Y * yy, acc[12] += Y * yz, acc[13] += Y * zz, acc[14] += Z * zz;
+    acc[15] += xx * xx, acc[16] += xx * xy, acc[17] += xx * xz, acc[18] += xx * yy, acc[19] += xx * yz;
+    acc[20] += xy * yy, acc[21] += xy * yz, acc[22] += yy * yy, acc[23] += yy * yz;
+  }
+  double a[24];
+  for (int k = 0; k < 24; ++k) {
+    double s = 0.0;
+    for (int l = 0; l < kLanes; ++l) s += acc[k][l];
+    a[k] = s;
+  }
+  // The 31 moments in kMoments' order (degree, then decreasing powers of x, then of y).
+  double m[31];
+  for (int k = 0; k < 5; ++k) m[k] = a[k];                   // xx xy xz yy yz
+  m[5] = count - a[0] - a[3];                                 // zz
+  for (int k = 6; k <= 15; ++k) m[k] = a[k - 1];              // the ten cubic moments
+  m[16] = a[15], m[17] = a[16], m[18] = a[17], m[19] = a[18];  // xxxx xxxy xxxz xxyy
+  m[20] = a[19], m[22] = a[20], m[23] = a[21], m[26] = a[22];  // xxyz xyyy xyyz yyyy
+  m[27] = a[23];                                              // yyyz
+  m[21] = m[0] - m[16] - m[19];                               // xxzz
+  m[24] = m[1] - m[17] - m[22];                               // xyzz
+  m[25] = m[2] - m[18] - m[23];                               // xzzz
+  m[28] = m[3] - m[19] - m[26];                               // yyzz
+  m[29] = m[4] - m[20] - m[27];                               // yzzz
+  m[30] = m[5] - m[21] - m[28];                               // zzzz
+  for (int r = 0; r < 9; ++r)
+    for (int c = 0; c <= r; ++c) m45[packed(r, c)] = m[kMoments.entry[r][c]];
+}
+
+// D = N^9 / det(H^T H) of kLanes programs at once (m[entry][program], packed lower triangles), by
+// right-looking LDL^T across the programs: the same operations, in the same order, as one program
+// alone, so a program's value does not depend on its neighbours. +infinity for a pivot <= 1e-12 N.
+// Early exit: after pivot j, det M <= d_0 ... d_j S_{j+1,j+1} ... S_88 (Hadamard's inequality on
+// the Schur complement S; in floating point too, since every update only subtracts d_j l^2 >= 0 from
+// a diagonal entry and products of smaller positive factors are smaller). When that bound is below
+// `det_needed` for every program, none of them can be a new best, and all get +infinity.
+inline void d_criterion_batch(double (*m)[kLanes], int n, double det_needed, double* out) {
+  const double N = n;
+  double n9 = 1.0;
+  for (int k = 0; k < 9; ++k) n9 *= N;
+  double det[kLanes], ok[kLanes];
+  for (int l = 0; l < kLanes; ++l) det[l] = 1.0, ok[l] = 1.0;
+  const double tiny = 1e-12 * N;
+  for (int j = 0; j < 9; ++j) {
+    double inv[kLanes];
+    for (int l = 0; l < kLanes; ++l) {
+      const double d = m[packed(j, j)][l];
+      ok[l] = d > tiny ? ok[l] : 0.0;
+      det[l] *= d;
+      inv[l] = 1.0 / d;
+    }
+    for (int i = j + 1; i < 9; ++i) {
+      double lij[kLanes];
+      for (int l = 0; l < kLanes; ++l) lij[l] = m[packed(i, j)][l] * inv[l];
+      for (int k = j + 1; k <= i; ++k)
+        for (int l = 0; l < kLanes; ++l) m[packed(i, k)][l] -= lij[l] * m[packed(k, j)][l];
+    }
+    if (j == 2 || j == 5) {
+      bool any = false;
+      for (int l = 0; l < kLanes; ++l) {
+        double bound = det[l];
+        for (int k = j + 1; k < 9; ++k) bound *= m[packed(k, k)][l];
+        any |= ok[l] != 0.0 && !(bound < det_needed);
+      }
+      if (!any) {
+        for (int l = 0; l < kLanes; ++l) out[l] = std::numeric_limits<double>::infinity();
+        return;
+      }
+    }
+  }
+  for (int l = 0; l < kLanes; ++l) out[l] = ok[l] != 0.0 ? n9 / det[l] : std::numeric_limits<double>::infinity();
+}
+
+// The determinant a program must exceed to have D below `best` (with a relative margin of 1e-12,
+// so that rounding can never exit early on a program that would win).
+inline double det_needed_for(double best, int n) {
+  if (!(best < std::numeric_limits<double>::infinity())) return 0.0;
+  double n9 = 1.0;
+  for (int k = 0; k < 9; ++k) n9 *= n;
+  return n9 / best * (1.0 - 1e-12);
+}
+
+// The normalised criterion from the packed lower triangle of H^T H; +infinity when H^T H is not
+// numerically positive definite.
+inline double score_information(const double* m45, int n, CriterionKind criterion) {
+  double m[9][9];
+  for (int a = 0; a < 9; ++a)
+    for (int b = 0; b <= a; ++b) m[a][b] = m45[packed(a, b)];
+  const double N = n;
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  if (criterion == CriterionKind::E) {
+    Mat9 M;
+    for (int a = 0; a < 9; ++a)
+      for (int b = 0; b <= a; ++b) M(a, b) = M(b, a) = m[a][b];
+    const double lmin = Eigen::SelfAdjointEigenSolver<Mat9>(M, Eigen::EigenvaluesOnly).eigenvalues()(0);
+    return lmin > 0 ? N / lmin : inf;
+  }
+  // In-place LDL^T (no square roots on the critical path): the strict lower triangle of m becomes
+  // L, d the pivots; det M = prod d.
+  double d[9];
+  double det = 1.0;
+  for (int j = 0; j < 9; ++j) {
+    double dj = m[j][j];
+    for (int k = 0; k < j; ++k) dj -= m[j][k] * m[j][k] * d[k];
+    if (!(dj > 1e-12 * N)) return inf;
+    d[j] = dj;
+    det *= dj;
+    const double inv = 1.0 / dj;
+    for (int i = j + 1; i < 9; ++i) {
+      double s = m[i][j];
+      for (int k = 0; k < j; ++k) s -= m[i][k] * m[j][k] * d[k];
+      m[i][j] = s * inv;
+    }
+  }
+  if (criterion == CriterionKind::D) {
+    double n9 = 1.0;
+    for (int k = 0; k < 9; ++k) n9 *= N;
+    return n9 / det;
+  }
+  // W = L^-1 (unit lower triangular); K = W^T D^-1 W, so K(r,r) = sum_k W_kr^2 / d_k.
+  double w[9][9] = {};
+  for (int j = 0; j < 9; ++j) {
+    w[j][j] = 1.0;
+    for (int i = j + 1; i < 9; ++i) {
+      double s = 0.0;
+      for (int k = j; k < i; ++k) s -= m[i][k] * w[k][j];
+      w[i][j] = s;
+    }
+  }
+  double result = 0.0;
+  for (int r = 0; r < 9; ++r) {
+    double krr = 0.0;
+    for (int k = r; k < 9; ++k) krr += w[k][r] * w[k][r] / d[k];
+    result = criterion == CriterionKind::A ? result + krr : std::max(result, krr);
+  }
+  return N * result;
+}
+
+// The normalised criterion of n unit vectors stored as xyz triples (the kernel's reference entry).
+inline double score_positions(const double* eta, int n, CriterionKind criterion) {
+  const int np = padded_size(n);
+  std::vector<double> x(static_cast<std::size_t>(np), 0.0), y(x), z(x);
+  for (int i = 0; i < n; ++i) x[i] = eta[3 * i], y[i] = eta[3 * i + 1], z[i] = eta[3 * i + 2];
+  double m45[45];
+  accumulate_information(x.data(), y.data(), z.data(), np, n, m45);
+  return score_information(m45, n, criterion);
+}
+
+}  // namespace scalcal
