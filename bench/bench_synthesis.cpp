@@ -4,7 +4,9 @@
 #include <benchmark/benchmark.h>
 
 #include "numeric/synthesis/multistart.hpp"
+#include "numeric/synthesis/random_search.hpp"
 #include "numeric/synthesis/ipopt_local.hpp"
+#include "numeric/synthesis/newton_local.hpp"
 
 namespace {
 
@@ -18,7 +20,7 @@ BENCHMARK(BM_RandomSearchD18)->Unit(benchmark::kMillisecond)->UseRealTime();
 void BM_NewtonStartD18(benchmark::State& state) {
   std::uint64_t seed = 1;
   for (auto _ : state)
-    benchmark::DoNotOptimize(scalcal::optimize_by_newton(scalcal::Program::random(18, seed++), scalcal::CriterionKind::D));
+    benchmark::DoNotOptimize(scalcal::optimize_with_newton<scalcal::DCriterion>(scalcal::Program::random(18, seed++)));
 }
 BENCHMARK(BM_NewtonStartD18)->Unit(benchmark::kMillisecond)->UseRealTime();
 
@@ -42,7 +44,7 @@ BENCHMARK(BM_MultistartD18)->Unit(benchmark::kMillisecond)->UseRealTime();
 void BM_IpoptStartD18(benchmark::State& state) {
   std::uint64_t seed = 1;
   for (auto _ : state)
-    benchmark::DoNotOptimize(scalcal::optimize_locally(scalcal::Program::random(18, seed++), scalcal::CriterionKind::D));
+    benchmark::DoNotOptimize(scalcal::optimize_with_ipopt<scalcal::DCriterion>(scalcal::Program::random(18, seed++)));
 }
 BENCHMARK(BM_IpoptStartD18)->Unit(benchmark::kMillisecond)->UseRealTime();
 

@@ -34,16 +34,13 @@ int run(Args& args) {
     opt.progress = [](int done, int total) { std::cerr << "\rstart " << done << "/" << total << std::flush; };
   const SynthesisResult r = synthesize(opt);
   if (opt.progress) std::cerr << "\n";
-  if (!r.confirmed)
-    std::cerr << "scalcal optimize: warning: Ipopt did not confirm the best program as a converged optimum (" << r.local_solver
-              << " multistart)\n";
+  if (!r.summary.converged())
+    std::cerr << "scalcal optimize: warning: " << r.summary.message << " (" << r.local_solver << " multistart)\n";
   std::optional<PolishResult> polished;
   if (digits > 0) {
     if (opt.progress) std::cerr << "polishing at " << digits << " digits\n";
     polished = polish(r.program, opt.criterion, PolishOptions{digits, 40});
-    if (!polished->supported)
-      std::cerr << "scalcal optimize: warning: no high-precision polish for criterion E yet; value_digits is the double optimum\n";
-    else if (!polished->converged)
+    if (!polished->converged())
       std::cerr << "scalcal optimize: warning: the polish did not converge (residual " << polished->residual << "); value_digits keeps "
                 << polished->digits << " digits\n";
   }
@@ -59,7 +56,7 @@ int run(Args& args) {
     j.set("distinct", r.distinct);
     j.set("seconds", r.seconds);
     j.set("local_solver", r.local_solver);
-    j.set("confirmed", r.confirmed);
+    j.set("confirmed", r.summary.converged());
     if (polished) {
       j.set("value_digits", polished->value_digits);
       j.set("residual", polished->residual);
@@ -73,7 +70,7 @@ int run(Args& args) {
               << " s)\n";
     if (polished)
       std::cout << criterion_name(opt.criterion) << " = " << polished->value_digits << "  (" << polished->digits
-                << " digits, residual " << std::setprecision(3) << polished->residual << ", " << polished->iterations
+                << " digits, residual " << std::setprecision(3) << polished->residual << ", " << polished->summary.iterations
                 << " Newton steps)\n";
   }
   return 0;

@@ -7,6 +7,7 @@
 #include "experiments/json.hpp"
 #include "experiments/synthesis_cli.hpp"
 #include "numeric/synthesis/multistart.hpp"
+#include "numeric/synthesis/random_search.hpp"
 
 namespace scalcal::cli {
 namespace {

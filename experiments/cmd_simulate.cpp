@@ -12,7 +12,7 @@
 #include "numeric/criteria/evaluation.hpp"
 #include "numeric/io/input_error.hpp"
 #include "numeric/calibration/monte_carlo.hpp"
-#include "numeric/model/parameters.hpp"
+#include "numeric/model/paper9.hpp"
 
 namespace scalcal::cli {
 namespace {

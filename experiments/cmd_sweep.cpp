@@ -8,7 +8,7 @@
 #include "experiments/command.hpp"
 #include "experiments/synthesis_cli.hpp"
 #include "numeric/io/input_error.hpp"
-#include "numeric/criteria/limits.hpp"
+#include "numeric/criteria/registry.hpp"
 #include "numeric/synthesis/multistart.hpp"
 
 namespace scalcal::cli {

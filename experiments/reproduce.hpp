@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "experiments/reproduce_report.hpp"
-#include "numeric/criteria/criterion_kind.hpp"
+#include "numeric/criteria/registry.hpp"
 #include "numeric/criteria/evaluation.hpp"
 #include "numeric/program/program.hpp"
 

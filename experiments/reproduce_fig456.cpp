@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "experiments/reproduce.hpp"
-#include "numeric/criteria/limits.hpp"
+#include "numeric/criteria/registry.hpp"
 #include "plots/csv_writer.hpp"
 #include "plots/figure.hpp"
 

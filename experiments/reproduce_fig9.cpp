@@ -7,7 +7,7 @@
 #include <cmath>
 
 #include "experiments/reproduce.hpp"
-#include "numeric/model/parameters.hpp"
+#include "numeric/model/paper9.hpp"
 #include "plots/csv_writer.hpp"
 #include "plots/figure.hpp"
 

@@ -14,6 +14,7 @@
 #include "numeric/model/design.hpp"
 
 #include "numeric/synthesis/multistart.hpp"
+#include "numeric/synthesis/random_search.hpp"
 
 namespace scalcal::reproduce {
 
@@ -168,8 +169,7 @@ void compute_optimised(Context& ctx) {
       e.seconds = r.seconds;
       // A result is kept only if scalcal's own evaluation confirms it: full rank and a positive,
       // finite criterion. Anything else is reported as a failed optimisation, never plotted.
-      const double values[] = {e.ev.D, e.ev.A, e.ev.E, e.ev.S};
-      const double v = values[static_cast<int>(plan.criterion)];
+      const double v = e.ev.value(plan.criterion);
       if (!e.ev.full_rank() || !std::isfinite(v) || v <= 0 || e.ev.lambda_max_K <= 0) {
         ctx.optimiser_note = "the optimiser's result was rejected (see the list of optimiser failures at the top).";
         ctx.optimiser_failures.push_back(std::string(criterion_name(plan.criterion)) + ", N = " + std::to_string(n) +

@@ -2,7 +2,7 @@
 #include <cmath>
 
 #include "experiments/reproduce.hpp"
-#include "numeric/criteria/limits.hpp"
+#include "numeric/criteria/registry.hpp"
 
 namespace scalcal::reproduce {
 

@@ -2,7 +2,7 @@
 // optimised programs for the same criterion, both evaluated on every criterion.
 // Data: tables.csv, and scalcal's programs as table{1,2,3}_scalcal.csv (x, y, z, azimuth, elevation).
 #include "experiments/reproduce.hpp"
-#include "numeric/criteria/limits.hpp"
+#include "numeric/criteria/registry.hpp"
 #include "numeric/io/program_csv.hpp"
 #include "plots/csv_writer.hpp"
 
@@ -11,15 +11,7 @@ namespace scalcal::reproduce {
 using plots::CsvWriter;
 
 namespace {
-double value(const Evaluation& ev, CriterionKind c) {
-  switch (c) {
-    case CriterionKind::D: return ev.D;
-    case CriterionKind::A: return ev.A;
-    case CriterionKind::E: return ev.E;
-    case CriterionKind::S: return ev.S;
-  }
-  return NAN;
-}
+double value(const Evaluation& ev, CriterionKind c) { return ev.value(c); }
 }  // namespace
 
 void tables_1_2_3(Context& ctx) {

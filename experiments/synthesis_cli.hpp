@@ -6,7 +6,7 @@
 
 #include "experiments/command.hpp"
 #include "experiments/json.hpp"
-#include "numeric/criteria/criterion_kind.hpp"
+#include "numeric/criteria/registry.hpp"
 #include "numeric/program/program.hpp"
 
 namespace scalcal::cli {

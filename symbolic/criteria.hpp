@@ -7,6 +7,8 @@
 
 #include <ginac/ginac.h>
 
+#include "numeric/criteria/registry.hpp"
+
 namespace scalcal::symbolic {
 
 // A criterion that is the largest of a few closed forms. When the closed forms hold free
@@ -27,6 +29,11 @@ struct ExactCriteria {
   ExactValue theta_bias, theta_scale, theta_nonorth;
   std::vector<GiNaC::ex> eigenvalues;  // of M (one per eigenvalue with multiplicity) when exact
   std::vector<GiNaC::ex> K_diagonal;    // K(r, r), r = 0..8
+
+  // The paper's four criteria by their numeric handle; nullptr for a criterion with no closed form here.
+  const ExactValue* of(CriterionKind c) const {
+    return c == CriterionKind::D ? &D : c == CriterionKind::A ? &A : c == CriterionKind::E ? &E : c == CriterionKind::S ? &S : nullptr;
+  }
 };
 
 // Throws std::invalid_argument when M is singular (a block has zero determinant).

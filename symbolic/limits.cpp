@@ -28,13 +28,8 @@ GiNaC::matrix symmetric_moment_matrix(const ex& b) {
 std::vector<ex> criterion_pieces(CriterionKind c, const symbol& b) {
   // N = 1: the criteria of M/N are the normalised criteria.
   const ExactCriteria k = exact_criteria(symmetric_moment_matrix(b), 1);
-  switch (c) {
-    case CriterionKind::D: return k.D.candidates;
-    case CriterionKind::A: return k.A.candidates;
-    case CriterionKind::E: return k.E.candidates;
-    case CriterionKind::S: return k.S.candidates;
-  }
-  return {};
+  const ExactValue* v = k.of(c);
+  return v ? v->candidates : std::vector<ex>{};
 }
 
 namespace {

@@ -7,7 +7,7 @@
 
 #include <ginac/ginac.h>
 
-#include "numeric/criteria/criterion_kind.hpp"
+#include "numeric/criteria/registry.hpp"
 
 namespace scalcal::symbolic {
 

@@ -8,7 +8,7 @@
 #include <Eigen/Dense>
 
 #include "numeric/program/random_sphere.hpp"
-#include "numeric/model/types.hpp"
+#include "numeric/model/paper9.hpp"
 
 namespace scalcal {
 

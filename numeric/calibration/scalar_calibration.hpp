@@ -11,7 +11,7 @@
 
 #include "numeric/model/design.hpp"
 #include "numeric/calibration/meter_model.hpp"
-#include "numeric/model/types.hpp"
+#include "numeric/model/paper9.hpp"
 
 namespace scalcal {
 
@@ -115,7 +115,7 @@ CalibrationResultTpl<Scalar> calibrate(const std::vector<PositionSamplesTpl<Scal
                                                                  : Vec3T<Scalar>(data[i].nominal->normalized());
       J[i] = detail::modulus_of(c, data[i], options.modulus) / M - Scalar(1);
       const Scalar w(static_cast<int>(data[i].samples.size()));
-      const Vec9T<Scalar> h = design_row(eta);
+      const Vec9T<Scalar> h = Paper9Model::row(eta);
       info += w * h * h.transpose();
       rhs += w * J[i] * h;
     }

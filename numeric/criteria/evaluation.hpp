@@ -1,37 +1,48 @@
-// Evaluation of a program as the paper compares programs: K = (H^T H)^-1 and the D, A, E and
-// max-diagonal criteria, normalised by N (D by N^9), and the RMS errors theta_q (eq. 7). A
-// program whose H is rank-deficient is reported with its rank and the parameters it cannot
-// identify; criteria are then +infinity, never a regularised number.
+// Evaluation of a program as the paper compares programs: K = (H^T H)^-1 and every registered
+// criterion, normalised by N (D by N^P), and the RMS errors theta_q (eq. 7). A program whose H is
+// rank-deficient is reported with its rank and the parameters it cannot identify; criteria are then
+// +infinity, never a regularised number.
 #pragma once
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <vector>
 
 #include <Eigen/SVD>
 
+#include "numeric/criteria/registry.hpp"
 #include "numeric/model/design.hpp"
-#include "numeric/model/parameters.hpp"
 #include "numeric/program/program.hpp"
 
 namespace scalcal {
 
-template <class Scalar>
+template <class Scalar, class Model = Paper9Model>
 struct EvaluationTpl {
+  static constexpr int P = Model::kParameters;
   int positions = 0;
   int rank = 0;
   Scalar condition;  // 2-norm condition number of H^T H: lambda_max / lambda_min
-  // Normalised criteria: D = N^9 det K, A = N trace K, E = N lambda_max(K), S = N max_r K(r,r).
+  // Every registered criterion, normalised, by CriterionKind index.
+  std::array<Scalar, kCriterionCount> values;
+  // The paper's four (the same numbers as values[], by name): D = N^P det K, A = N trace K,
+  // E = N lambda_max(K), S = N max_r K(r,r).
   Scalar D, A, E, S;
-  // theta_q = sqrt(N max K(r,r)) over the three parameters of each group (eq. 7, times sqrt N).
+  // theta_q = sqrt(N max K(r,r)) over the parameters of each group (eq. 7, times sqrt N); NaN for a
+  // group the model does not have.
   Scalar theta_bias, theta_scale, theta_nonorth;
   // The same criteria without normalisation.
   Scalar det_K, trace_K, lambda_max_K, max_diag_K;
-  Mat9T<Scalar> information;      // H^T H
-  Mat9T<Scalar> K;                // (H^T H)^-1, zero when rank < 9
-  std::vector<int> unidentifiable;  // indices into kParameterNames, empty when rank == 9
+  InformationT<Model, Scalar> information;  // H^T H
+  InformationT<Model, Scalar> K;            // (H^T H)^-1, zero when rank < P
+  RowT<Model, Scalar> K_eigenvalues;        // ascending, zero when rank < P
+  std::vector<int> unidentifiable;          // indices into Model::parameter_names, empty at full rank
 
-  bool full_rank() const { return rank == kParameters; }
+  bool full_rank() const { return rank == P; }
+  const Scalar& value(CriterionKind c) const { return values[static_cast<std::size_t>(c.index())]; }
+  Scalar theta(ParameterGroup g) const {
+    return g == ParameterGroup::bias ? theta_bias : g == ParameterGroup::scale ? theta_scale : theta_nonorth;
+  }
 };
 
 using Evaluation = EvaluationTpl<double>;
@@ -41,76 +52,105 @@ namespace detail {
 // Everything comes from the SVD of H, not from an eigen-decomposition of H^T H: squaring H
 // squares its condition number, and a nearly singular program would otherwise get a tiny or even
 // negative eigenvalue (and so a negative det K or lambda_max K). With H = U diag(sigma) V^T,
-// K = V diag(sigma^-2) V^T exactly. The rank uses the usual tolerance max(N, 9) eps sigma_max;
+// K = V diag(sigma^-2) V^T exactly. The rank uses the usual tolerance max(N, P) eps sigma_max;
 // a parameter whose unit vector has a component in the null space is not identifiable.
-template <class Scalar>
-Vec9T<Scalar> singular_values(const std::vector<Vec3T<Scalar>>& positions, EvaluationTpl<Scalar>& ev,
-                              Mat9T<Scalar>& V) {
+template <class Model, class Scalar>
+RowT<Model, Scalar> singular_values(const PositionsT<Scalar>& positions, EvaluationTpl<Scalar, Model>& ev,
+                                    InformationT<Model, Scalar>& V) {
+  constexpr int P = Model::kParameters;
   using std::sqrt;
-  const DesignMatrixT<Scalar> H = design_matrix(positions);
-  Eigen::JacobiSVD<DesignMatrixT<Scalar>> svd(H, Eigen::ComputeFullV);
-  Vec9T<Scalar> sigma = Vec9T<Scalar>::Zero();
+  const auto H = design_matrix<Model>(positions);
+  Eigen::JacobiSVD<Eigen::Matrix<Scalar, Eigen::Dynamic, P>> svd(H, Eigen::ComputeFullV);
+  RowT<Model, Scalar> sigma = RowT<Model, Scalar>::Zero();
   sigma.head(svd.singularValues().size()) = svd.singularValues();
   V = svd.matrixV();
   const Scalar eps = Eigen::NumTraits<Scalar>::epsilon();
-  const Scalar tol = Scalar(std::max<int>(static_cast<int>(positions.size()), 9)) * eps * sigma(0);
+  const Scalar tol = Scalar(std::max<int>(static_cast<int>(positions.size()), P)) * eps * sigma(0);
   int rank = 0;
-  for (int i = 0; i < kParameters; ++i)
+  for (int i = 0; i < P; ++i)
     if (sigma(i) > tol) ++rank;
   ev.rank = rank;
   ev.unidentifiable.clear();
-  if (rank < kParameters) {
-    const auto null_space = V.rightCols(kParameters - rank);
+  if (rank < P) {
+    const auto null_space = V.rightCols(P - rank);
     const Scalar threshold = sqrt(eps);
-    for (int r = 0; r < kParameters; ++r)
+    for (int r = 0; r < P; ++r)
       if (null_space.row(r).norm() > threshold) ev.unidentifiable.push_back(r);
   }
   return sigma;
 }
 
+template <class Model, class Scalar>
+Scalar group_theta(const RowT<Model, Scalar>& diag, const Scalar& n, ParameterGroup g) {
+  using std::sqrt;
+  const std::vector<int> members = group_members<Model>(g);
+  if (members.empty()) return std::numeric_limits<Scalar>::quiet_NaN();
+  Scalar worst = diag(members.front());
+  for (int r : members) worst = std::max(worst, Scalar(diag(r)));
+  return sqrt(n * worst);
+}
+
 }  // namespace detail
 
-template <class Scalar>
-EvaluationTpl<Scalar> evaluate(const ProgramTpl<Scalar>& program) {
-  using std::sqrt;
-  EvaluationTpl<Scalar> ev;
+template <class Model = Paper9Model, class Scalar>
+EvaluationTpl<Scalar, Model> evaluate(const ProgramTpl<Scalar>& program) {
+  constexpr int P = Model::kParameters;
+  EvaluationTpl<Scalar, Model> ev;
   ev.positions = program.size();
-  ev.information = information_matrix(program.positions);
-  Mat9T<Scalar> V;
-  const Vec9T<Scalar> sigma = detail::singular_values(program.positions, ev, V);  // descending
   const Scalar inf = std::numeric_limits<Scalar>::infinity();
-  if (!ev.full_rank()) {
-    ev.condition = inf;
-    ev.D = ev.A = ev.E = ev.S = inf;
-    ev.theta_bias = ev.theta_scale = ev.theta_nonorth = inf;
-    ev.det_K = ev.trace_K = ev.lambda_max_K = ev.max_diag_K = inf;
-    ev.K.setZero();
+  ev.values.fill(inf);
+  ev.D = ev.A = ev.E = ev.S = inf;
+  ev.theta_bias = ev.theta_scale = ev.theta_nonorth = inf;
+  ev.det_K = ev.trace_K = ev.lambda_max_K = ev.max_diag_K = inf;
+  ev.condition = inf;
+  ev.K.setZero();
+  ev.K_eigenvalues.setZero();
+  if (program.size() == 0) {  // nothing measured: nothing identifiable
+    ev.information.setZero();
+    for (int r = 0; r < P; ++r) ev.unidentifiable.push_back(r);
     return ev;
   }
-  const Vec9T<Scalar> inv_lambda = sigma.cwiseProduct(sigma).cwiseInverse();  // eigenvalues of K
+  ev.information = information_matrix<Model>(program.positions);
+  InformationT<Model, Scalar> V;
+  const RowT<Model, Scalar> sigma = detail::singular_values(program.positions, ev, V);  // descending
+  if (!ev.full_rank()) return ev;
+  const RowT<Model, Scalar> inv_lambda = sigma.cwiseProduct(sigma).cwiseInverse();  // eigenvalues of K
   ev.K = V * inv_lambda.asDiagonal() * V.transpose();
+  ev.K_eigenvalues = inv_lambda;
   const Scalar N(program.size());
-  Scalar det_K(1), trace_K(0);
-  for (int i = 0; i < kParameters; ++i) {
-    det_K *= inv_lambda(i);
-    trace_K += inv_lambda(i);
-  }
-  ev.condition = (sigma(0) / sigma(8)) * (sigma(0) / sigma(8));
-  ev.det_K = det_K;
-  ev.trace_K = trace_K;
-  ev.lambda_max_K = inv_lambda(8);
-  const Vec9T<Scalar> diag = ev.K.diagonal();
+  const InverseInformation<Scalar, P> k{ev.K, inv_lambda};
+  for (CriterionKind c : kCriteria)
+    ev.values[static_cast<std::size_t>(c.index())] =
+        visit_criterion(c, [&](auto C) { return decltype(C)::template value<Model>(k, N); });
+  ev.D = ev.value(CriterionKind::D);
+  ev.A = ev.value(CriterionKind::A);
+  ev.E = ev.value(CriterionKind::E);
+  ev.S = ev.value(CriterionKind::S);
+  ev.condition = (sigma(0) / sigma(P - 1)) * (sigma(0) / sigma(P - 1));
+  ev.det_K = k.det();
+  ev.trace_K = k.trace();
+  ev.lambda_max_K = inv_lambda(P - 1);
+  const RowT<Model, Scalar> diag = ev.K.diagonal();
   ev.max_diag_K = diag.maxCoeff();
-  Scalar N9(1);
-  for (int i = 0; i < kParameters; ++i) N9 *= N;
-  ev.D = N9 * ev.det_K;
-  ev.A = N * ev.trace_K;
-  ev.E = N * ev.lambda_max_K;
-  ev.S = N * ev.max_diag_K;
-  ev.theta_bias = sqrt(N * diag.template segment<3>(0).maxCoeff());
-  ev.theta_scale = sqrt(N * diag.template segment<3>(3).maxCoeff());
-  ev.theta_nonorth = sqrt(N * diag.template segment<3>(6).maxCoeff());
+  ev.theta_bias = detail::group_theta<Model>(diag, N, ParameterGroup::bias);
+  ev.theta_scale = detail::group_theta<Model>(diag, N, ParameterGroup::scale);
+  ev.theta_nonorth = detail::group_theta<Model>(diag, N, ParameterGroup::nonorth);
   return ev;
+}
+
+// The normalised value of one registered criterion (+infinity when rank < P).
+template <class Model = Paper9Model, class Scalar>
+Scalar criterion_value(const ProgramTpl<Scalar>& program, CriterionKind c) {
+  return evaluate<Model>(program).value(c);
+}
+
+// The normalised value of any criterion type, registered or not (+infinity when rank < P).
+template <Criterion C, class Model = Paper9Model, class Scalar>
+Scalar criterion_value(const ProgramTpl<Scalar>& program) {
+  const EvaluationTpl<Scalar, Model> ev = evaluate<Model>(program);
+  if (!ev.full_rank()) return std::numeric_limits<Scalar>::infinity();
+  const InverseInformation<Scalar, Model::kParameters> k{ev.K, ev.K_eigenvalues};
+  return C::template value<Model>(k, Scalar(program.size()));
 }
 
 }  // namespace scalcal

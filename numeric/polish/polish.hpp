@@ -1,12 +1,12 @@
 // High-precision confirmation of an optimum: Newton's method on the first-order (KKT) conditions
-// in MPFR arithmetic, with least-squares (minimum-norm) steps because symmetries (rotations for D,
-// manifolds of 4-designs for N >= 16) make the Jacobian singular. All four criteria: E, whose
-// optimum is a multiple eigenvalue, on the nonsmooth conditions of polish_e.cpp.
+// in MPFR arithmetic, from a double optimum, for every criterion form (polish_form.hpp). The
+// polished program comes back with the value to the digits its residual vouches for.
 #pragma once
 #include <string>
 
-#include "numeric/criteria/criterion_kind.hpp"
+#include "numeric/criteria/registry.hpp"
 #include "numeric/program/program.hpp"
+#include "numeric/program/summary.hpp"
 
 namespace scalcal {
 
@@ -16,21 +16,23 @@ struct PolishOptions {
 };
 
 struct PolishResult {
-  bool supported = false;   // true for every criterion (kept for callers that still check it)
-  // Residual small enough that every printed digit is true; for E also that the root passes the
-  // checks of a maximum (its lambda is lambda_min, a positive semidefinite dual exists, its E is no
-  // worse than the start's); first-order checks, so a saddle can still pass.
-  bool converged = false;
-  int iterations = 0;       // Jacobians formed (E: summed over the multiplicities tried)
-  double residual = 0;      // 2-norm of the first-order conditions at the polished program (NaN: rank < 9)
+  // converged: the residual is small enough that every printed digit is true; for the eigenvalue
+  // form also that the root passes the checks of a maximum (its lambda is lambda_min, a positive
+  // semidefinite dual exists, its E is no worse than the start's). First-order checks: a saddle can
+  // still pass. summary.iterations counts Jacobians (E: summed over the multiplicities tried).
+  Summary summary;
+  double residual = 0;      // 2-norm of the first-order conditions at the polished program (NaN: rank < P)
   int digits = 0;           // significant digits in value_digits (fewer than asked when not converged)
   std::string value_digits; // the normalised criterion, decimal
   Program program;          // the polished program, rounded to double
-  int active = 0;           // S: number of active diagonal elements K(r,r) at the optimum
+  int active = 0;           // max-diagonal form: number of active diagonal elements K(r,r)
+
+  bool converged() const { return summary.converged(); }
 };
 
 // Starts from `program` (a double optimum, e.g. from synthesize). Uses the process-wide MPFR
 // default precision while it runs (restored afterwards): call it from one thread at a time.
+// Throws std::invalid_argument for digits < 1 or a program with fewer positions than parameters.
 PolishResult polish(const Program& program, CriterionKind criterion, const PolishOptions& options = {});
 
 }  // namespace scalcal

@@ -9,13 +9,13 @@
 #include <boost/math/constants/constants.hpp>
 
 #include "numeric/program/random_sphere.hpp"
-#include "numeric/model/types.hpp"
+#include "numeric/model/paper9.hpp"
 
 namespace scalcal {
 
 template <class Scalar>
 struct ProgramTpl {
-  std::vector<Vec3T<Scalar>> positions;
+  PositionsT<Scalar> positions;
 
   int size() const { return static_cast<int>(positions.size()); }
 

@@ -11,7 +11,7 @@
 namespace scalcal {
 namespace {
 
-using Positions = std::vector<Vec3>;
+using Positions = PositionsT<double>;
 using Pairing = std::vector<int>;  // pairing[i] = index in b of the partner of a_i
 
 // --- one-to-one matching -------------------------------------------------------------------------
@@ -266,10 +266,6 @@ std::optional<Mat3> orthogonal_map(const Positions& a, const Positions& b, doubl
 }
 
 }  // namespace
-
-ProgramSymmetry symmetry_of(CriterionKind c) {
-  return c == CriterionKind::D ? ProgramSymmetry::Orthogonal : ProgramSymmetry::SignedPermutations;
-}
 
 namespace {
 

@@ -5,17 +5,11 @@
 #include <optional>
 #include <vector>
 
-#include "numeric/criteria/criterion_kind.hpp"
+#include "numeric/criteria/criterion.hpp"
 #include "numeric/program/program.hpp"
-#include "numeric/model/types.hpp"
+#include "numeric/model/paper9.hpp"
 
 namespace scalcal {
-
-// The group under which a criterion is invariant: O(3) for D (det K moves by det(g)^2 = 1), the
-// 48 signed permutations of the axes for A, E and S (they act on K by a signed permutation).
-enum class ProgramSymmetry { SignedPermutations, Orthogonal };
-
-ProgramSymmetry symmetry_of(CriterionKind c);
 
 // A g of the group and a one-to-one pairing pi with |g a_i - b_pi(i)| <= tol for every i, or
 // nullopt. Every map returned has been checked against that definition, so a wrong "yes" cannot

@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <random>
 
-#include "numeric/model/types.hpp"
+#include "numeric/model/paper9.hpp"
 
 namespace scalcal {
 

@@ -3,6 +3,9 @@
 // the adapter never knows which one it runs.
 #include "numeric/synthesis/ipopt_local.hpp"
 
+#include <functional>
+#include <string>
+
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -13,9 +16,6 @@
 #include <IpSolveStatistics.hpp>
 #include <IpTNLP.hpp>
 
-#include "numeric/criteria/derivatives.hpp"
-#include "numeric/criteria/evaluation.hpp"
-#include "numeric/synthesis/ipopt_problems.hpp"
 
 namespace scalcal {
 
@@ -35,7 +35,7 @@ class ProgramNlp : public Ipopt::TNLP {
     n = n_;
     m = p_.positions() + p_.constraints();
     nnz_jac = 3 * p_.positions() + p_.constraints() * n_;
-    nnz_h = p_.has_hessian() ? n_ * (n_ + 1) / 2 : 0;
+    nnz_h = n_ * (n_ + 1) / 2;
     style = TNLP::C_STYLE;
     return true;
   }
@@ -127,25 +127,16 @@ class ProgramNlp : public Ipopt::TNLP {
 
 }  // namespace
 
-double criterion_value(const Program& program, CriterionKind criterion) {
-  const Evaluation ev = evaluate(program);
-  switch (criterion) {
-    case CriterionKind::D: return ev.D;
-    case CriterionKind::A: return ev.A;
-    case CriterionKind::E: return ev.E;
-    case CriterionKind::S: return ev.S;
-  }
-  return std::numeric_limits<double>::infinity();
-}
-
-LocalResult optimize_locally(const Program& start, CriterionKind criterion, const LocalOptions& options) {
-  const std::unique_ptr<SmoothProblem> problem = make_problem(criterion, start.size());
+LocalResult run_ipopt(const SmoothProblem& problem, const Program& start, const LocalOptions& options,
+                      const std::function<double(const Program&)>& value_of) {
   LocalResult out;
   out.program = start;
-  out.value = criterion_value(start, criterion);
-  if (!std::isfinite(out.value)) return out;  // a rank-deficient start cannot be optimised
-
-  Ipopt::SmartPtr<ProgramNlp> nlp = new ProgramNlp(*problem, problem->start(start));
+  out.value = value_of(start);
+  if (!std::isfinite(out.value)) {
+    out.summary.message = "rank-deficient start: no local model";
+    return out;
+  }
+  Ipopt::SmartPtr<ProgramNlp> nlp = new ProgramNlp(problem, problem.start(start));
   // One application per thread, reused: creating and initialising Ipopt costs more than a whole
   // D optimisation at N = 18. (Sequential MUMPS is not thread-safe: synthesize() forks instead.)
   thread_local Ipopt::SmartPtr<Ipopt::IpoptApplication> app;
@@ -157,25 +148,26 @@ LocalResult optimize_locally(const Program& start, CriterionKind criterion, cons
     app->Options()->SetIntegerValue("min_refinement_steps", 0);  // refine only when the residual asks for it
     if (app->Initialize() != Ipopt::Solve_Succeeded) {
       app = nullptr;
+      out.summary.message = "Ipopt could not be initialised";
       return out;
     }
   }
-  app->Options()->SetStringValue("hessian_approximation", problem->has_hessian() ? "exact" : "limited-memory");
+  app->Options()->SetStringValue("hessian_approximation", "exact");
   app->Options()->SetNumericValue("tol", options.tolerance);
-  const bool long_runs = criterion == CriterionKind::E || criterion == CriterionKind::S;
-  app->Options()->SetIntegerValue("max_iter", options.max_iterations > 0 ? options.max_iterations : long_runs ? 300 : 200);
+  app->Options()->SetIntegerValue("max_iter", options.max_iterations > 0 ? options.max_iterations : problem.long_runs() ? 300 : 200);
   const Ipopt::ApplicationReturnStatus status = app->OptimizeTNLP(Ipopt::SmartPtr<Ipopt::TNLP>(GetRawPtr(nlp)));
-  out.status = static_cast<int>(status);
-  out.converged = status == Ipopt::Solve_Succeeded || status == Ipopt::Solved_To_Acceptable_Level;
-  if (Ipopt::IsValid(app->Statistics())) out.iterations = app->Statistics()->IterationCount();
+  const bool converged = status == Ipopt::Solve_Succeeded || status == Ipopt::Solved_To_Acceptable_Level;
+  if (Ipopt::IsValid(app->Statistics())) out.summary.iterations = app->Statistics()->IterationCount();
+  out.summary.message = "Ipopt status " + std::to_string(static_cast<int>(status));
   const std::vector<double>& x = nlp->solution();
   if (x.empty()) return out;
   Program result;
   for (int i = 0; i < start.size(); ++i) result.positions.push_back(Vec3(x[3 * i], x[3 * i + 1], x[3 * i + 2]).normalized());
-  const double value = criterion_value(result, criterion);
+  const double value = value_of(result);
   if (std::isfinite(value)) {
     out.program = std::move(result);
     out.value = value;
+    out.summary.termination = converged ? Termination::converged : Termination::not_converged;
   }
   return out;
 }

@@ -1,11 +1,17 @@
-// The four criteria as smooth nonlinear programs over x = (eta_1..eta_N, extra variables):
-// D: min log D; A: min A; S: min t s.t. N K(r,r) <= t; E: max s s.t. M/N - s I = L L^T.
-// Values and first derivatives are exact (tests compare them with finite differences).
+// A criterion as a smooth nonlinear program over x = (eta_1..eta_N, extra variables), one class per
+// form (criteria/criterion.hpp): SmoothForm min phi; MaxDiagonalForm min t s.t. N K(r,r) <= t;
+// MaxEigenvalueForm max s s.t. M/N - s I = L L^T. Values, gradients and Hessians are exact (tests
+// compare them with finite differences). The Ipopt adapter (ipopt_local.cpp) sees only SmoothProblem.
 #pragma once
+#include <algorithm>
 #include <memory>
 #include <vector>
 
-#include "numeric/criteria/criterion_kind.hpp"
+#include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
+
+#include "numeric/criteria/derivatives.hpp"
+#include "numeric/criteria/registry.hpp"
 #include "numeric/program/program.hpp"
 
 namespace scalcal {
@@ -19,20 +25,22 @@ class SmoothProblem {
   int variables() const { return 3 * positions_ + extra(); }
   virtual int extra() const { return 0; }        // variables after the 3N coordinates
   virtual int constraints() const { return 0; }  // rows after the N norm constraints
+  virtual bool long_runs() const { return true; }  // nonsmooth reformulations get a larger iteration cap
 
   // x for a program: its coordinates, then extra variables that make the start feasible.
-  virtual std::vector<double> start(const Program& program) const;
+  virtual std::vector<double> start(const Program& program) const {
+    std::vector<double> x(static_cast<std::size_t>(variables()), 0.0);
+    for (int i = 0; i < positions_; ++i)
+      for (int c = 0; c < 3; ++c) x[static_cast<std::size_t>(3 * i + c)] = program.positions[static_cast<std::size_t>(i)](c);
+    return x;
+  }
   virtual void constraint_bounds(double* lower, double* upper) const { (void)lower; (void)upper; }
   // f(x) and, when grad is non-null, its gradient (grad is zeroed by the caller). False: undefined.
   virtual bool objective(const double* x, double& f, double* grad) const = 0;
   // The exact Hessian of obj_factor f + sum_r lambda_r g_r (the criterion's own constraints; the
   // norm constraints are the adapter's) over all variables, as the packed lower triangle, row by
-  // row: (r, c), c <= r, at r(r+1)/2 + c. False: not supplied (quasi-Newton) or undefined at x.
-  virtual bool has_hessian() const { return false; }
-  virtual bool lagrangian_hessian(const double* x, double obj_factor, const double* lambda, double* lower) const {
-    (void)x; (void)obj_factor; (void)lambda; (void)lower;
-    return false;
-  }
+  // row: (r, c), c <= r, at r(r+1)/2 + c. False: undefined at x.
+  virtual bool lagrangian_hessian(const double* x, double obj_factor, const double* lambda, double* lower) const = 0;
   // The criterion's constraints; jac (row-major, constraints() x variables(), zeroed by the caller).
   virtual bool constraint_values(const double* x, double* g, double* jac) const {
     (void)x; (void)g; (void)jac;
@@ -40,12 +48,207 @@ class SmoothProblem {
   }
 
  protected:
-  std::vector<Vec3> positions_of(const double* x) const;
+  PositionsT<double> positions_of(const double* x) const {
+    PositionsT<double> eta(static_cast<std::size_t>(positions_));
+    for (int i = 0; i < positions_; ++i) eta[static_cast<std::size_t>(i)] = Vec3(x[3 * i], x[3 * i + 1], x[3 * i + 2]);
+    return eta;
+  }
+  static void scatter(const PositionsT<double>& grad, double* out) {
+    for (std::size_t i = 0; i < grad.size(); ++i)
+      for (int c = 0; c < 3; ++c) out[3 * i + static_cast<std::size_t>(c)] += grad[i](c);
+  }
+  // Writes factor * H (the 3N x 3N position block) into the packed lower triangle of all variables.
+  static void pack_lower(const MatXT<double>& H, double factor, int variables, double* lower) {
+    std::fill(lower, lower + variables * (variables + 1) / 2, 0.0);
+    for (int r = 0, k = 0; r < H.rows(); ++r)
+      for (int c = 0; c <= r; ++c, ++k) lower[k] = factor * H(r, c);
+  }
 
  private:
   int positions_;
 };
 
-std::unique_ptr<SmoothProblem> make_problem(CriterionKind criterion, int positions);
+template <SmoothCriterion C, class Model>
+class SmoothCriterionProblem : public SmoothProblem {
+ public:
+  using SmoothProblem::SmoothProblem;
+  bool long_runs() const override { return false; }
+  bool objective(const double* x, double& f, double* grad) const override {
+    bool ok;
+    PositionsT<double> g;
+    f = smooth_objective<C, Model>(positions_of(x), grad ? &g : nullptr, ok);
+    if (ok && grad) scatter(g, grad);
+    return ok;
+  }
+  bool lagrangian_hessian(const double* x, double obj_factor, const double*, double* lower) const override {
+    bool ok;
+    const MatXT<double> H = smooth_hessian<C, Model>(positions_of(x), ok);
+    if (ok) pack_lower(H, obj_factor, variables(), lower);
+    return ok;
+  }
+};
+
+// Epigraph of a max-diagonal criterion: min t s.t. N K(r,r) - t <= 0 for r in C::rows<Model>().
+template <MaxDiagonalCriterion C, class Model>
+class MaxDiagonalProblem : public SmoothProblem {
+ public:
+  static constexpr int P = Model::kParameters;
+  explicit MaxDiagonalProblem(int positions) : SmoothProblem(positions), rows_(C::template rows<Model>()) {}
+  int extra() const override { return 1; }
+  int constraints() const override { return static_cast<int>(rows_.size()); }
+  std::vector<double> start(const Program& program) const override {
+    std::vector<double> x = SmoothProblem::start(program);
+    bool ok;
+    const std::vector<double> d = diagonal_pieces<Model>(program.positions, rows_, nullptr, ok);
+    x.back() = ok ? 1.01 * *std::max_element(d.begin(), d.end()) : 1e6;
+    return x;
+  }
+  // sum_r lambda_r N K(r,r): G = -N K diag(lambda) K, dG = N (K dM B + B dM K), B = K diag(lambda) K
+  // (hessian_from_dM is linear in (G, B) for fixed A and c); t enters linearly.
+  bool lagrangian_hessian(const double* x, double, const double* lambda, double* lower) const override {
+    const PositionsT<double> eta = positions_of(x);
+    bool ok;
+    const InformationT<Model, double> K = inverse_information(information_matrix<Model>(eta), ok);
+    if (!ok) return false;
+    const double N = positions();
+    RowT<Model, double> l = RowT<Model, double>::Zero();
+    for (std::size_t a = 0; a < rows_.size(); ++a) l(rows_[a]) = lambda[a];
+    const InformationT<Model, double> B = K * l.asDiagonal() * K;
+    pack_lower(hessian_from_dM<Model>(eta, InformationT<Model, double>(-N * B), K, B, N), 1.0, variables(), lower);
+    return true;
+  }
+  void constraint_bounds(double* lower, double* upper) const override {
+    std::fill(lower, lower + constraints(), -2e19);
+    std::fill(upper, upper + constraints(), 0.0);
+  }
+  bool objective(const double* x, double& f, double* grad) const override {
+    f = x[3 * positions()];
+    if (grad) grad[3 * positions()] = 1.0;
+    return true;
+  }
+  bool constraint_values(const double* x, double* g, double* jac) const override {
+    bool ok;
+    std::vector<PositionsT<double>> grads;
+    const std::vector<double> d = diagonal_pieces<Model>(positions_of(x), rows_, jac ? &grads : nullptr, ok);
+    if (!ok) return false;
+    const int n = variables(), t = 3 * positions();
+    for (int r = 0; r < constraints(); ++r) {
+      g[r] = d[static_cast<std::size_t>(r)] - x[t];
+      if (!jac) continue;
+      scatter(grads[static_cast<std::size_t>(r)], jac + r * n);
+      jac[r * n + t] = -1.0;
+    }
+    return true;
+  }
+
+ private:
+  std::vector<int> rows_;
+};
+
+// E without smoothing: lambda_min(M/N) >= s exactly when M/N - s I = L L^T for some lower
+// triangular L, so max s over (eta, s, L) gives E = 1/s at the optimum, multiple eigenvalues or not.
+template <class Model>
+class MaxEigenvalueProblem : public SmoothProblem {
+ public:
+  static constexpr int P = Model::kParameters;
+  static constexpr int kPairs = P * (P + 1) / 2;  // (a, b), b <= a, at index a(a+1)/2 + b
+  using MatP = InformationT<Model, double>;
+  using RowP = RowT<Model, double>;
+  using SmoothProblem::SmoothProblem;
+  static int pair(int a, int b) { return a >= b ? a * (a + 1) / 2 + b : b * (b + 1) / 2 + a; }
+  int extra() const override { return 1 + kPairs; }
+  int constraints() const override { return kPairs; }
+  std::vector<double> start(const Program& program) const override {
+    std::vector<double> x = SmoothProblem::start(program);
+    const MatP A = information_matrix<Model>(program.positions) / static_cast<double>(program.size());
+    const double s = 0.5 * Eigen::SelfAdjointEigenSolver<MatP>(A, Eigen::EigenvaluesOnly).eigenvalues()(0);
+    const MatP L = Eigen::LLT<MatP>(A - s * MatP::Identity()).matrixL();
+    const std::size_t base = static_cast<std::size_t>(3 * positions());
+    x[base] = s;
+    for (int a = 0; a < P; ++a)
+      for (int b = 0; b <= a; ++b) x[base + 1 + static_cast<std::size_t>(pair(a, b))] = L(a, b);
+    return x;
+  }
+  void constraint_bounds(double* lower, double* upper) const override {
+    std::fill(lower, lower + kPairs, 0.0);
+    std::fill(upper, upper + kPairs, 0.0);
+  }
+  bool objective(const double* x, double& f, double* grad) const override {
+    f = -x[3 * positions()];
+    if (grad) grad[3 * positions()] = -1.0;
+    return true;
+  }
+  // sum_ab lambda_ab g_ab = tr(Lambda M)/N - s tr(Lambda) - tr(Lambda L L^T), Lambda symmetric with
+  // the off-diagonal multipliers halved: position block i is (2/N)(J_i^T Lambda J_i + T(Lambda h_i)),
+  // and d^2 / dL(a,m) dL(b,m) = -2 Lambda(a,b).
+  bool lagrangian_hessian(const double* x, double, const double* lambda, double* lower) const override {
+    const int N = positions(), n = variables(), l0 = 3 * N + 1;
+    std::fill(lower, lower + n * (n + 1) / 2, 0.0);
+    auto at = [lower](int r, int c) -> double& { return r >= c ? lower[r * (r + 1) / 2 + c] : lower[c * (c + 1) / 2 + r]; };
+    MatP Lambda;
+    for (int a = 0; a < P; ++a)
+      for (int b = 0; b <= a; ++b) Lambda(a, b) = Lambda(b, a) = a == b ? lambda[pair(a, b)] : 0.5 * lambda[pair(a, b)];
+    for (int i = 0; i < N; ++i) {
+      const Vec3 e(x[3 * i], x[3 * i + 1], x[3 * i + 2]);
+      const JacobianT<Model, double> J = Model::jacobian(e);
+      const RowP w = Lambda * Model::row(e);
+      const Mat3 block = (2.0 / N) * (J.transpose() * Lambda * J + Model::curvature(w));
+      for (int r = 0; r < 3; ++r)
+        for (int c = 0; c <= r; ++c) at(3 * i + r, 3 * i + c) = block(r, c);
+    }
+    for (int m = 0; m < P; ++m)
+      for (int a = m; a < P; ++a)
+        for (int b = m; b <= a; ++b) at(l0 + pair(a, m), l0 + pair(b, m)) = -2.0 * Lambda(a, b);
+    return true;
+  }
+  bool constraint_values(const double* x, double* g, double* jac) const override {
+    const int N = positions(), n = variables(), s = 3 * N, l0 = 3 * N + 1;
+    const PositionsT<double> eta = positions_of(x);
+    const MatP A = information_matrix<Model>(eta) / static_cast<double>(N);
+    MatP L = MatP::Zero();
+    for (int a = 0; a < P; ++a)
+      for (int b = 0; b <= a; ++b) L(a, b) = x[l0 + pair(a, b)];
+    const MatP LLt = L * L.transpose();
+    for (int a = 0; a < P; ++a)
+      for (int b = 0; b <= a; ++b) g[pair(a, b)] = A(a, b) - (a == b ? x[s] : 0.0) - LLt(a, b);
+    if (!jac) return true;
+    std::vector<RowP> h(static_cast<std::size_t>(N));
+    std::vector<JacobianT<Model, double>> J(static_cast<std::size_t>(N));
+    for (int i = 0; i < N; ++i) {
+      h[static_cast<std::size_t>(i)] = Model::row(eta[static_cast<std::size_t>(i)]);
+      J[static_cast<std::size_t>(i)] = Model::jacobian(eta[static_cast<std::size_t>(i)]);
+    }
+    for (int a = 0; a < P; ++a)
+      for (int b = 0; b <= a; ++b) {
+        double* row = jac + pair(a, b) * n;
+        for (int i = 0; i < N; ++i) {
+          const auto& hi = h[static_cast<std::size_t>(i)];
+          const auto& Ji = J[static_cast<std::size_t>(i)];
+          const Vec3 d = (Ji.row(a).transpose() * hi(b) + hi(a) * Ji.row(b).transpose()) / static_cast<double>(N);
+          for (int c = 0; c < 3; ++c) row[3 * i + c] += d(c);
+        }
+        if (a == b) row[s] -= 1.0;
+        for (int m = 0; m <= b; ++m) {
+          row[l0 + pair(a, m)] -= L(b, m);
+          row[l0 + pair(b, m)] -= L(a, m);
+        }
+      }
+    return true;
+  }
+};
+
+// The nonlinear program of criterion C under the model, chosen by the criterion's form.
+template <Criterion C, class Model = Paper9Model>
+std::unique_ptr<SmoothProblem> make_problem(int positions) {
+  if constexpr (SmoothCriterion<C>) return std::make_unique<SmoothCriterionProblem<C, Model>>(positions);
+  else if constexpr (MaxDiagonalCriterion<C>) return std::make_unique<MaxDiagonalProblem<C, Model>>(positions);
+  else if constexpr (MaxEigenvalueCriterion<C>) return std::make_unique<MaxEigenvalueProblem<Model>>(positions);
+  else static_assert(!kUnknownForm<C>, "a criterion needs one of the forms of criteria/criterion.hpp");
+}
+
+// The same for a registered criterion chosen at run time, under the paper's model.
+inline std::unique_ptr<SmoothProblem> make_problem(CriterionKind criterion, int positions) {
+  return visit_criterion(criterion, [positions](auto C) { return make_problem<decltype(C)>(positions); });
+}
 
 }  // namespace scalcal

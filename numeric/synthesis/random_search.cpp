@@ -12,8 +12,10 @@
 #include <vector>
 
 #include "numeric/synthesis/random_search_kernel.hpp"
-#include "numeric/synthesis/multistart.hpp"
-#include "numeric/synthesis/ipopt_local.hpp"
+#include "numeric/synthesis/random_search.hpp"
+
+#include "numeric/criteria/evaluation.hpp"
+#include "numeric/synthesis/seeds.hpp"
 
 namespace scalcal {
 
@@ -55,7 +57,9 @@ void consider(Best& mine, double v, long long k, Buffers& buf, int lane, int n) 
 #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
 __attribute__((target_clones("arch=x86-64-v3", "default")))
 #endif
-void search_chunk(Xoshiro256x4& rng, long long begin, long long end, int n, CriterionKind criterion, Buffers& buf,
+// `score` is the criterion's score_information<C>; `batched` its kDeterminantOnly path.
+void search_chunk(Xoshiro256x4& rng, long long begin, long long end, int n, double (*score)(const double*, int),
+                  bool batched, Buffers& buf,
                   Best& mine) {
   const int np = padded_size(n);
   alignas(32) double m[45][kLanes];
@@ -67,7 +71,7 @@ void search_chunk(Xoshiro256x4& rng, long long begin, long long end, int n, Crit
       accumulate_information(buf.x(l), buf.y(l), buf.z(l), np, n, m45);
       for (int e = 0; e < 45; ++e) m[e][l] = m45[e];
     }
-    if (criterion == CriterionKind::D) {
+    if (batched) {
       for (int l = lanes; l < kLanes; ++l)
         for (int e = 0; e < 45; ++e) m[e][l] = m[e][0];  // padding lanes repeat lane 0, then are ignored
       double v[kLanes];
@@ -76,7 +80,7 @@ void search_chunk(Xoshiro256x4& rng, long long begin, long long end, int n, Crit
     } else {
       for (int l = 0; l < lanes; ++l) {
         for (int e = 0; e < 45; ++e) m45[e] = m[e][l];
-        consider(mine, score_information(m45, n, criterion), k0 + l, buf, l, n);
+        consider(mine, score(m45, n), k0 + l, buf, l, n);
       }
     }
   }
@@ -90,6 +94,8 @@ RandomSearchResult random_search(int positions, long long count, CriterionKind c
   if (count < 1) throw std::invalid_argument("random_search: count must be positive");
   const auto t0 = std::chrono::steady_clock::now();
   const long long chunks = (count + kChunk - 1) / kChunk;
+  const auto score = visit_criterion(criterion, [](auto C) { return &score_information<decltype(C)>; });
+  const bool batched = visit_criterion(criterion, [](auto C) { return kDeterminantOnly<decltype(C)>; });
   const int nthreads = static_cast<int>(std::min<long long>(thread_count(threads), chunks));
   std::vector<Best> best(static_cast<std::size_t>(nthreads));
   std::atomic<long long> next{0};
@@ -99,7 +105,7 @@ RandomSearchResult random_search(int positions, long long count, CriterionKind c
     mine.eta.assign(static_cast<std::size_t>(3 * positions), 0.0);
     for (long long c; (c = next.fetch_add(1)) < chunks;) {
       Xoshiro256x4 rng(start_seed(seed ^ kRandomStream, static_cast<std::uint64_t>(c)));
-      search_chunk(rng, c * kChunk, std::min(count, (c + 1) * kChunk), positions, criterion, buf, mine);
+      search_chunk(rng, c * kChunk, std::min(count, (c + 1) * kChunk), positions, score, batched, buf, mine);
     }
   };
   std::vector<std::thread> pool;

@@ -12,9 +12,9 @@
 
 #include <Eigen/Eigenvalues>
 
-#include "numeric/criteria/criterion_kind.hpp"
+#include "numeric/criteria/registry.hpp"
 #include "numeric/synthesis/seeds.hpp"
-#include "numeric/model/types.hpp"
+#include "numeric/model/paper9.hpp"
 
 namespace scalcal {
 
@@ -240,60 +240,86 @@ inline double det_needed_for(double best, int n) {
   return n9 / best * (1.0 - 1e-12);
 }
 
-// The normalised criterion from the packed lower triangle of H^T H; +infinity when H^T H is not
-// numerically positive definite.
-inline double score_information(const double* m45, int n, CriterionKind criterion) {
-  double m[9][9];
-  for (int a = 0; a < 9; ++a)
-    for (int b = 0; b <= a; ++b) m[a][b] = m45[packed(a, b)];
-  const double N = n;
-  constexpr double inf = std::numeric_limits<double>::infinity();
-  if (criterion == CriterionKind::E) {
-    Mat9 M;
+// K = M^-1 read off the LDL^T factorisation of M (no square roots on the critical path), computed
+// only as far as the criterion asks: det K from the pivots, K(r,r) = sum_k W_kr^2 / d_k with
+// W = L^-1, lambda_max(K) from an eigen-decomposition of M.
+class LdltInverseInformation {
+ public:
+  LdltInverseInformation(const double* m45, int n) {
     for (int a = 0; a < 9; ++a)
-      for (int b = 0; b <= a; ++b) M(a, b) = M(b, a) = m[a][b];
-    const double lmin = Eigen::SelfAdjointEigenSolver<Mat9>(M, Eigen::EigenvaluesOnly).eigenvalues()(0);
-    return lmin > 0 ? N / lmin : inf;
-  }
-  // In-place LDL^T (no square roots on the critical path): the strict lower triangle of m becomes
-  // L, d the pivots; det M = prod d.
-  double d[9];
-  double det = 1.0;
-  for (int j = 0; j < 9; ++j) {
-    double dj = m[j][j];
-    for (int k = 0; k < j; ++k) dj -= m[j][k] * m[j][k] * d[k];
-    if (!(dj > 1e-12 * N)) return inf;
-    d[j] = dj;
-    det *= dj;
-    const double inv = 1.0 / dj;
-    for (int i = j + 1; i < 9; ++i) {
-      double s = m[i][j];
-      for (int k = 0; k < j; ++k) s -= m[i][k] * m[j][k] * d[k];
-      m[i][j] = s * inv;
+      for (int b = 0; b <= a; ++b) m_[a][b] = M_(a, b) = M_(b, a) = m45[packed(a, b)];
+    det_M_ = 1.0;
+    for (int j = 0; j < 9; ++j) {
+      double dj = m_[j][j];
+      for (int k = 0; k < j; ++k) dj -= m_[j][k] * m_[j][k] * d_[k];
+      if (!(dj > 1e-12 * n)) return;
+      d_[j] = dj;
+      det_M_ *= dj;
+      const double inv = 1.0 / dj;
+      for (int i = j + 1; i < 9; ++i) {
+        double s = m_[i][j];
+        for (int k = 0; k < j; ++k) s -= m_[i][k] * m_[j][k] * d_[k];
+        m_[i][j] = s * inv;
+      }
     }
+    positive_definite_ = true;
   }
-  if (criterion == CriterionKind::D) {
-    double n9 = 1.0;
-    for (int k = 0; k < 9; ++k) n9 *= N;
-    return n9 / det;
+
+  bool positive_definite() const { return positive_definite_; }
+  int parameters() const { return 9; }
+  double det() const { return 1.0 / det_M_; }
+  double diagonal(int r) const {
+    if (!have_diagonal_) fill_diagonal();
+    return diagonal_[r];
   }
-  // W = L^-1 (unit lower triangular); K = W^T D^-1 W, so K(r,r) = sum_k W_kr^2 / d_k.
-  double w[9][9] = {};
-  for (int j = 0; j < 9; ++j) {
-    w[j][j] = 1.0;
-    for (int i = j + 1; i < 9; ++i) {
-      double s = 0.0;
-      for (int k = j; k < i; ++k) s -= m[i][k] * w[k][j];
-      w[i][j] = s;
+  double trace() const {
+    double t = 0.0;
+    for (int r = 0; r < 9; ++r) t += diagonal(r);
+    return t;
+  }
+  double max_eigenvalue() const {
+    return 1.0 / Eigen::SelfAdjointEigenSolver<Mat9>(M_, Eigen::EigenvaluesOnly).eigenvalues()(0);
+  }
+
+ private:
+  void fill_diagonal() const {
+    double w[9][9] = {};
+    for (int j = 0; j < 9; ++j) {
+      w[j][j] = 1.0;
+      for (int i = j + 1; i < 9; ++i) {
+        double s = 0.0;
+        for (int k = j; k < i; ++k) s -= m_[i][k] * w[k][j];
+        w[i][j] = s;
+      }
     }
+    for (int r = 0; r < 9; ++r) {
+      double krr = 0.0;
+      for (int k = r; k < 9; ++k) krr += w[k][r] * w[k][r] / d_[k];
+      diagonal_[r] = krr;
+    }
+    have_diagonal_ = true;
   }
-  double result = 0.0;
-  for (int r = 0; r < 9; ++r) {
-    double krr = 0.0;
-    for (int k = r; k < 9; ++k) krr += w[k][r] * w[k][r] / d[k];
-    result = criterion == CriterionKind::A ? result + krr : std::max(result, krr);
-  }
-  return N * result;
+
+  double m_[9][9] = {};  // lower triangle: M, then L strictly below the diagonal
+  double d_[9] = {};
+  double det_M_ = 0.0;
+  Mat9 M_;
+  bool positive_definite_ = false;
+  mutable bool have_diagonal_ = false;
+  mutable double diagonal_[9] = {};
+};
+
+// The normalised criterion C from the packed lower triangle of H^T H; +infinity when H^T H is not
+// numerically positive definite.
+template <Criterion C>
+double score_information(const double* m45, int n) {
+  const LdltInverseInformation k(m45, n);
+  if (!k.positive_definite()) return std::numeric_limits<double>::infinity();
+  return C::template value<Paper9Model>(k, static_cast<double>(n));
+}
+
+inline double score_information(const double* m45, int n, CriterionKind criterion) {
+  return visit_criterion(criterion, [&](auto C) { return score_information<decltype(C)>(m45, n); });
 }
 
 // The normalised criterion of n unit vectors stored as xyz triples (the kernel's reference entry).

@@ -3,8 +3,6 @@
 #pragma once
 #include <cstdint>
 
-#include "numeric/criteria/criterion_kind.hpp"
-
 namespace scalcal {
 
 // Relative distance to the best value within which a start counts as a hit.
@@ -21,7 +19,7 @@ constexpr std::uint64_t start_seed(std::uint64_t seed, std::uint64_t index) {
   return splitmix64(splitmix64(seed) ^ (index * 0xD1B54A32D192ED03ull));
 }
 
-int default_starts(CriterionKind criterion, int positions);
+// The number of workers for `requested` (0: every core).
 int thread_count(int requested);
 
 }  // namespace scalcal

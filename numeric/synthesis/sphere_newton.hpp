@@ -1,4 +1,4 @@
-// Riemannian Newton over N unit vectors for a smooth criterion of M (matrix_criteria.hpp): the
+// Riemannian Newton over N unit vectors for a smooth criterion of M (criteria/criterion.hpp): the
 // exact Hessian in 2N tangent coordinates, a Levenberg-Marquardt shift mu = theta |grad| (so the
 // rank-deficient Hessian at a D optimum, singular along rotations, still gives quadratic
 // convergence), and normalisation as the retraction. The fast local solver of the D and A
@@ -14,7 +14,6 @@
 
 #include "numeric/criteria/derivatives.hpp"
 #include "numeric/model/design.hpp"
-#include "numeric/criteria/smooth_criteria.hpp"
 
 namespace scalcal {
 
@@ -52,12 +51,14 @@ Eigen::Matrix<Scalar, 3, 2> tangent_basis(const Vec3T<Scalar>& e) {
   return basis;
 }
 
-template <class Criterion, class Scalar = double>
+template <SmoothCriterion Criterion, class Model = Paper9Model, class Scalar = double>
 class SphereNewton {
  public:
   using MatX = Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic>;
   using VecX = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;
-  using Mat9X = Eigen::Matrix<Scalar, 9, Eigen::Dynamic>;
+  static constexpr int P = Model::kParameters;
+  using MatPX = Eigen::Matrix<Scalar, P, Eigen::Dynamic>;
+  using MatP = InformationT<Model, Scalar>;
   using Basis = Eigen::Matrix<Scalar, 3, 2>;
 
   explicit SphereNewton(SphereNewtonOptions options = {}) : options_(options) {}
@@ -66,8 +67,8 @@ class SphereNewton {
   // in the coordinates t of eta_i(t) = normalise(eta_i + tangent_basis(eta_i) t_i). False when
   // M is not positive definite.
   bool local_model(const std::vector<Vec3T<Scalar>>& eta, Scalar& value, VecX& gradient, MatX& hessian) {
-    MatrixDerivatives<Scalar> d;
-    if (!Criterion::derivatives(information_matrix(eta), static_cast<int>(eta.size()), d)) return false;
+    MatrixDerivatives<Scalar, P> d;
+    if (!Criterion::derivatives(information_matrix<Model>(eta), static_cast<int>(eta.size()), d)) return false;
     assemble(eta, d);
     value = d.value;
     gradient = g_;
@@ -83,10 +84,10 @@ class SphereNewton {
     Scalar theta(options_.initial_shift);
     std::vector<Vec3T<Scalar>> trial(eta.size());
     int stalled = 0;  // consecutive accepted steps that changed the value by rounding only
-    Mat9T<Scalar> M = information_matrix(eta), M_trial;  // M of an accepted trial is kept, not rebuilt
+    MatP M = information_matrix<Model>(eta), M_trial;  // M of an accepted trial is kept, not rebuilt
     while (true) {
-      MatrixDerivatives<Scalar> d;
-      if (!Criterion::derivatives(M, n, d)) return out;  // rank < 9: no Newton model
+      MatrixDerivatives<Scalar, P> d;
+      if (!Criterion::derivatives(M, n, d)) return out;  // rank < P: no Newton model
       assemble(eta, d);
       const Scalar gnorm = g_.norm();
       out.value = static_cast<double>(d.value);
@@ -126,8 +127,8 @@ class SphereNewton {
         Scalar f_trial;
         ++out.evaluations;
         const Scalar predicted = -(g_.dot(step_) + Scalar(0.5) * step_.dot(H_.template selfadjointView<Eigen::Lower>() * step_));
-        M_trial = information_matrix(trial);
-        if (Criterion::value(M_trial, n, f_trial) && predicted > Scalar(0)) {
+        M_trial = information_matrix<Model>(trial);
+        if (Criterion::objective(M_trial, n, f_trial) && predicted > Scalar(0)) {
           // Below rounding the ratio test is noise: a step that leaves the value unchanged to
           // rounding is taken, and the gradient decides convergence.
           const Scalar rounding = Scalar(8) * std::numeric_limits<Scalar>::epsilon() * std::max(Scalar(1), abs(d.value));
@@ -151,34 +152,34 @@ class SphereNewton {
   }
 
  private:
-  // P = X^T W X for X = [T U] (9 x 3N) as a lower triangle: through the Cholesky factor of W
-  // when it has one (a symmetric rank-9 update, half the products), else a plain product.
-  void gram(const Mat9T<Scalar>& W, MatX& P) {
+  // out = X^T W X for X = [T U] (P x 3N) as a lower triangle: through the Cholesky factor of W
+  // when it has one (a symmetric rank-P update, half the products), else a plain product.
+  void gram(const MatP& W, MatX& out) {
     const int cols = static_cast<int>(X_.cols());
-    P.setZero(cols, cols);
-    Eigen::LLT<Mat9T<Scalar>> factor(W);
+    out.setZero(cols, cols);
+    Eigen::LLT<MatP> factor(W);
     if (factor.info() == Eigen::Success) {
       V_.noalias() = factor.matrixU() * X_;
-      P.template selfadjointView<Eigen::Lower>().rankUpdate(V_.transpose());
+      out.template selfadjointView<Eigen::Lower>().rankUpdate(V_.transpose());
     } else {
       V_.noalias() = W * X_;
-      P.noalias() = X_.transpose() * V_;
+      out.noalias() = X_.transpose() * V_;
     }
   }
 
   // The Riemannian gradient g_ and Hessian H_ (lower triangle) in the tangent bases of every
-  // position. With U = [h_i], T = [J_i B_i], block (i, j) of the Euclidean Hessian is (criteria.hpp)
+  // position. With U = [h_i], T = [J_i B_i], block (i, j) of the Euclidean Hessian is (derivatives.hpp)
   //   2c [ (h_j^T B h_i) T_i^T A T_j + (h_j^T A h_i) T_i^T B T_j + (T_i^T A h_j)(T_j^T B h_i)^T + (A <-> B) ],
   // so the Gram matrices X^T A X and X^T B X of X = [T U] give all of it.
-  void assemble(const std::vector<Vec3T<Scalar>>& eta, const MatrixDerivatives<Scalar>& d) {
+  void assemble(const std::vector<Vec3T<Scalar>>& eta, const MatrixDerivatives<Scalar, P>& d) {
     const int n = static_cast<int>(eta.size()), m = 2 * n;
-    X_.resize(9, 3 * n);
+    X_.resize(P, 3 * n);
     bases_.resize(eta.size());
     J_.resize(eta.size());
     for (int i = 0; i < n; ++i) {
       const auto& e = eta[static_cast<std::size_t>(i)];
-      X_.col(m + i) = design_row(e);
-      J_[static_cast<std::size_t>(i)] = design_jacobian(e);
+      X_.col(m + i) = Model::row(e);
+      J_[static_cast<std::size_t>(i)] = Model::jacobian(e);
       bases_[static_cast<std::size_t>(i)] = tangent_basis(e);
       X_.template middleCols<2>(2 * i) = J_[static_cast<std::size_t>(i)] * bases_[static_cast<std::size_t>(i)];
     }
@@ -208,14 +209,11 @@ class SphereNewton {
     for (int i = 0; i < n; ++i) {
       const auto& Ji = J_[static_cast<std::size_t>(i)];
       const auto& Bi = bases_[static_cast<std::size_t>(i)];
-      const Vec9T<Scalar> w = d.G * X_.col(m + i);
+      const RowT<Model, Scalar> w = d.G * X_.col(m + i);
       const Vec3T<Scalar> egrad = two * (Ji.transpose() * w);
       g_.template segment<2>(2 * i) = Bi.transpose() * egrad;
-      Mat3T<Scalar> curvature;
-      curvature << two * w(3), w(6), w(8),
-                   w(6), two * w(4), w(7),
-                   w(8), w(7), two * w(5);
-      const Eigen::Matrix<Scalar, 9, 2> Ti = X_.template middleCols<2>(2 * i);
+      const Mat3T<Scalar> curvature = Model::curvature(w);
+      const Eigen::Matrix<Scalar, P, 2> Ti = X_.template middleCols<2>(2 * i);
       const Eigen::Matrix<Scalar, 2, 2> extra = two * (Bi.transpose() * curvature * Bi) + two * (Ti.transpose() * d.G * Ti) -
                                                 eta[static_cast<std::size_t>(i)].dot(egrad) * Eigen::Matrix<Scalar, 2, 2>::Identity();
       H_(2 * i, 2 * i) += extra(0, 0);
@@ -225,9 +223,9 @@ class SphereNewton {
   }
 
   SphereNewtonOptions options_;
-  Mat9X X_, V_;
+  MatPX X_, V_;
   std::vector<Basis> bases_;
-  std::vector<Mat93T<Scalar>> J_;
+  std::vector<JacobianT<Model, Scalar>> J_;
   MatX PA_, PB_, H_, shifted_;
   VecX g_, step_;
   Eigen::LLT<MatX> llt_;

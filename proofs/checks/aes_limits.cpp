@@ -1,6 +1,6 @@
 // Theorem 4 (A, E, S limits): for the symmetric measure, the pieces of each criterion as
 // functions of b, their exact minimisers over (0, 1/9), and agreement with numeric/limits.hpp.
-#include "numeric/criteria/limits.hpp"
+#include "numeric/criteria/registry.hpp"
 #include "proofs/checks/check.hpp"
 #include "symbolic/exact.hpp"
 #include "symbolic/limits.hpp"

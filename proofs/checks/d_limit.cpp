@@ -3,7 +3,7 @@
 // h(eta)^T M_u^-1 h(xi) = (15 t^2 + 6 t - 3)/2, t = eta . xi, used by Theorem 3.
 #include <ginac/ginac.h>
 
-#include "numeric/criteria/limits.hpp"
+#include "numeric/criteria/registry.hpp"
 #include "proofs/checks/check.hpp"
 #include "symbolic/criteria.hpp"
 #include "symbolic/exact.hpp"

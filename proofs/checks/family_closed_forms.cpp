@@ -2,7 +2,7 @@
 // b = (e + 8d/9)/(6a + 12e + 8d); rotation(k, phase) for every k >= 5 has M/N equal to the
 // symmetric model with b = 1/24 whatever the phase, while k = 3, 4 depend on the phase; and
 // every family member's criteria are at least the limits (Theorem 7 on examples).
-#include "numeric/criteria/limits.hpp"
+#include "numeric/criteria/registry.hpp"
 #include "proofs/checks/check.hpp"
 #include "symbolic/criteria.hpp"
 #include "symbolic/exact.hpp"
@@ -67,10 +67,9 @@ int main() {
            {"rotation", {"k=4", "phase=10"}}, {"rotation", {"k=9"}}, {"dodecahedral", {}}, {"icosahedral", {}}}) {
     const auto in = member(name, params);
     const auto c = sym::exact_criteria(in.M, in.N);
-    const sym::ExactValue* v[4] = {&c.D, &c.A, &c.E, &c.S};
     for (auto k : scalcal::kCriteria) {
       const double limit = scalcal::criterion_limit<double>(k).value;
-      above = above && v[static_cast<int>(k)]->number() >= limit * (1 - 1e-12);
+      above = above && c.of(k)->number() >= limit * (1 - 1e-12);
     }
   }
   check(above, "every tested member's D, A, E, S is at least the limit");

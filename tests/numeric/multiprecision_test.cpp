@@ -5,7 +5,7 @@
 #include <boost/multiprecision/cpp_bin_float.hpp>
 
 #include "numeric/criteria/evaluation.hpp"
-#include "numeric/criteria/limits.hpp"
+#include "numeric/criteria/registry.hpp"
 
 namespace scalcal {
 namespace {

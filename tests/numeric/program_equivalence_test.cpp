@@ -13,6 +13,7 @@
 #include <Eigen/Geometry>
 
 #include "numeric/program/program_equivalence.hpp"
+#include "numeric/criteria/registry.hpp"
 
 namespace scalcal {
 namespace {

@@ -8,6 +8,7 @@
 #include "numeric/criteria/evaluation.hpp"
 #include "numeric/synthesis/random_search_kernel.hpp"
 #include "numeric/synthesis/multistart.hpp"
+#include "numeric/synthesis/random_search.hpp"
 
 namespace scalcal {
 namespace {

@@ -29,7 +29,7 @@ Real pulled_back(const std::vector<Vec3T<Real>>& eta, const RealVec& t) {
   for (std::size_t i = 0; i < eta.size(); ++i)
     moved[i] = (eta[i] + tangent_basis(eta[i]) * t.segment<2>(2 * static_cast<int>(i))).normalized();
   Real f = 0;
-  EXPECT_TRUE(Criterion::value(information_matrix(moved), static_cast<int>(eta.size()), f));
+  EXPECT_TRUE(Criterion::objective(information_matrix(moved), static_cast<int>(eta.size()), f));
   return f;
 }
 
@@ -41,13 +41,13 @@ void check_model(int n, std::uint64_t seed) {
   std::vector<Vec3> start = Program::random(n, seed).positions;
   SphereNewtonOptions few;
   few.max_iterations = 3;
-  SphereNewton<LogDetCriterion>(few).run(start);
+  SphereNewton<DCriterion>(few).run(start);
   std::vector<Vec3T<Real>> eta;
   for (const auto& e : start) eta.push_back(e.cast<Real>().normalized());
   Real f = 0;
   RealVec g;
   RealMat H;
-  ASSERT_TRUE((SphereNewton<Criterion, Real>().local_model(eta, f, g, H)));
+  ASSERT_TRUE((SphereNewton<Criterion, Paper9Model, Real>().local_model(eta, f, g, H)));
   EXPECT_LT(abs(f - pulled_back<Criterion>(eta, RealVec::Zero(2 * n))), Real(1e-45) * abs(f));
   const Real h("1e-15");
   for (int a = 0; a < 2 * n; ++a) {
@@ -68,8 +68,8 @@ void check_model(int n, std::uint64_t seed) {
   }
 }
 
-TEST(SphereNewton, LogDetModelMatchesDifferences) { check_model<LogDetCriterion>(10, 3); }
-TEST(SphereNewton, TraceModelMatchesDifferences) { check_model<TraceCriterion>(11, 4); }
+TEST(SphereNewton, LogDetModelMatchesDifferences) { check_model<DCriterion>(10, 3); }
+TEST(SphereNewton, TraceModelMatchesDifferences) { check_model<ACriterion>(11, 4); }
 
 const double kLimitD = 61509375.0 / 4.0;  // proofs/d_limit.md
 const double kLimitA = 45.0 + 18.0 * std::sqrt(2.0);
@@ -78,7 +78,7 @@ TEST(SphereNewton, ReachesTheDLimitFromRandomStarts) {
   for (int n : {12, 18, 25})
     for (std::uint64_t seed = 1; seed <= 3; ++seed) {
       Program p = Program::random(n, seed);
-      const SphereNewtonResult r = SphereNewton<LogDetCriterion>().run(p.positions);
+      const SphereNewtonResult r = SphereNewton<DCriterion>().run(p.positions);
       EXPECT_TRUE(r.converged) << n << " " << seed;
       for (const auto& e : p.positions) EXPECT_NEAR(e.norm(), 1.0, 1e-14);
       EXPECT_NEAR(std::exp(r.value), kLimitD, 1e-9 * kLimitD) << n << " " << seed;
@@ -88,7 +88,7 @@ TEST(SphereNewton, ReachesTheDLimitFromRandomStarts) {
 
 TEST(SphereNewton, ReachesTheALimit) {
   Program p = Program::random(18, 9);
-  const SphereNewtonResult r = SphereNewton<TraceCriterion>().run(p.positions);
+  const SphereNewtonResult r = SphereNewton<ACriterion>().run(p.positions);
   EXPECT_TRUE(r.converged);
   EXPECT_NEAR(r.value, kLimitA, 1e-10 * kLimitA);
 }
@@ -97,7 +97,7 @@ TEST(SphereNewton, ReachesTheALimit) {
 // eta_i -> w x eta_i are null vectors of the Hessian, and no direction has negative curvature.
 TEST(SphereNewton, DHessianIsSingularAlongRotationsAtTheOptimum) {
   Program p = Program::random(13, 2);
-  SphereNewton<LogDetCriterion> solver;
+  SphereNewton<DCriterion> solver;
   ASSERT_TRUE(solver.run(p.positions).converged);
   double f = 0;
   VecX g;
@@ -119,16 +119,16 @@ TEST(SphereNewton, DHessianIsSingularAlongRotationsAtTheOptimum) {
 // The same template at 50 digits: the D limit to 40 places (the double run gives the start).
 TEST(SphereNewton, ReachesTheDLimitAt50Digits) {
   Program start = Program::random(12, 5);
-  ASSERT_TRUE(SphereNewton<LogDetCriterion>().run(start.positions).converged);
+  ASSERT_TRUE(SphereNewton<DCriterion>().run(start.positions).converged);
   std::vector<Vec3T<Real>> eta;
   for (const auto& e : start.positions) eta.push_back(e.cast<Real>());
   SphereNewtonOptions options;
   options.gradient_tolerance = 1e-45;
   options.max_iterations = 20;
-  const SphereNewtonResult r = SphereNewton<LogDetCriterion, Real>(options).run(eta);
+  const SphereNewtonResult r = SphereNewton<DCriterion, Paper9Model, Real>(options).run(eta);
   EXPECT_TRUE(r.converged) << r.gradient_norm << " after " << r.iterations << " steps";
   Real value;
-  ASSERT_TRUE(LogDetCriterion::value(information_matrix(eta), 12, value));
+  ASSERT_TRUE(DCriterion::objective(information_matrix(eta), 12, value));
   const Real limit = Real(61509375) / 4;
   EXPECT_LT(abs(exp(value) - limit) / limit, Real(1e-40));
 }
@@ -137,7 +137,7 @@ TEST(SphereNewton, RankDeficientStartIsLeftAlone) {
   Program planar;
   for (int i = 0; i < 12; ++i) planar.positions.emplace_back(std::cos(0.5 * i), std::sin(0.5 * i), 0.0);
   const Program before = planar;
-  const SphereNewtonResult r = SphereNewton<LogDetCriterion>().run(planar.positions);
+  const SphereNewtonResult r = SphereNewton<DCriterion>().run(planar.positions);
   EXPECT_FALSE(r.converged);
   EXPECT_EQ(r.iterations, 0);
   for (std::size_t i = 0; i < before.positions.size(); ++i) EXPECT_LT((planar.positions[i] - before.positions[i]).norm(), 1e-15);

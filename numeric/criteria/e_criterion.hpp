@@ -1,0 +1,33 @@
+// E: N lambda_max(K) = N / lambda_min(M), the largest variance in any direction of parameter space.
+// Not differentiable where lambda_min(M) is multiple, which is where its optima are.
+#pragma once
+#include "numeric/criteria/criterion.hpp"
+#include "numeric/criteria/starts.hpp"
+
+namespace scalcal {
+
+struct ECriterion {
+  static constexpr std::string_view name = "E";
+  static constexpr std::string_view summary = "N lambda_max(K)";
+  static constexpr ProgramSymmetry symmetry = ProgramSymmetry::SignedPermutations;
+  using Form = MaxEigenvalueForm;
+
+  template <class Model, InverseInformationView View, class Scalar>
+  static Scalar value(const View& k, const Scalar& n) {
+    return n * k.max_eigenvalue();
+  }
+
+  // Narrow basins at small N (N = 9: about 1 start in 100 reaches the optimum).
+  static constexpr int default_starts(int positions) { return positions <= 11 ? 256 : grown_starts(32, positions); }
+
+  // N lambda_max(K) >= 12 (b = 1/12; proofs/aes_limits.md).
+  template <class Model, class Scalar>
+  static std::optional<CriterionLimitTpl<Scalar>> limit() {
+    if constexpr (std::is_same_v<Model, Paper9Model>)
+      return CriterionLimitTpl<Scalar>{Scalar(12), Scalar(1) / Scalar(12), "12"};
+    return std::nullopt;
+  }
+};
+static_assert(MaxEigenvalueCriterion<ECriterion>);
+
+}  // namespace scalcal

@@ -1,0 +1,134 @@
+// The registered criteria: one line each in RegisteredCriteria. A CriterionKind is a runtime handle
+// (an index into that list) for the CLI and for results; visit_criterion() turns it back into the
+// criterion's type, the one place where a runtime choice meets the templated solvers.
+#pragma once
+#include <array>
+#include <compare>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <type_traits>
+#include <utility>
+
+#include "numeric/criteria/a_criterion.hpp"
+#include "numeric/criteria/d_criterion.hpp"
+#include "numeric/criteria/e_criterion.hpp"
+#include "numeric/criteria/s_criterion.hpp"
+
+namespace scalcal {
+
+template <Criterion... Cs>
+struct CriterionList {
+  static constexpr int size = sizeof...(Cs);
+};
+
+using RegisteredCriteria = CriterionList<DCriterion, ACriterion, ECriterion, SCriterion>;
+
+namespace detail {
+template <class C, class... Cs>
+constexpr int index_in(CriterionList<Cs...>) {
+  int i = 0, found = -1;
+  ((std::is_same_v<C, Cs> ? (found = i, ++i) : ++i), ...);
+  return found;
+}
+}  // namespace detail
+
+class CriterionKind {
+ public:
+  constexpr explicit CriterionKind(int index) : index_(index) {}
+  constexpr int index() const { return index_; }
+  constexpr auto operator<=>(const CriterionKind&) const = default;
+
+  template <class C>
+  static constexpr CriterionKind of() {
+    constexpr int i = detail::index_in<C>(RegisteredCriteria{});
+    static_assert(i >= 0, "criterion not in RegisteredCriteria");
+    return CriterionKind(i);
+  }
+
+  // The paper's four criteria, named where the reproduction refers to one of them.
+  static const CriterionKind D, A, E, S;
+
+ private:
+  int index_;
+};
+
+inline constexpr CriterionKind CriterionKind::D = CriterionKind::of<DCriterion>();
+inline constexpr CriterionKind CriterionKind::A = CriterionKind::of<ACriterion>();
+inline constexpr CriterionKind CriterionKind::E = CriterionKind::of<ECriterion>();
+inline constexpr CriterionKind CriterionKind::S = CriterionKind::of<SCriterion>();
+
+namespace detail {
+template <class... Cs>
+constexpr auto all_kinds(CriterionList<Cs...>) {
+  return std::array<CriterionKind, sizeof...(Cs)>{CriterionKind::of<Cs>()...};
+}
+template <class F, class... Cs>
+auto visit(CriterionKind c, F&& f, CriterionList<Cs...>) {
+  using R = decltype(f(DCriterion{}));
+  if (c.index() < 0 || c.index() >= static_cast<int>(sizeof...(Cs))) throw std::out_of_range("visit_criterion: no such criterion");
+  if constexpr (std::is_void_v<R>) {
+    int i = 0;
+    ((i++ == c.index() ? (void)f(Cs{}) : (void)0), ...);
+  } else {
+    std::optional<R> out;
+    int i = 0;
+    ((i++ == c.index() ? (void)out.emplace(f(Cs{})) : (void)0), ...);
+    return R(std::move(*out));
+  }
+}
+}  // namespace detail
+
+inline constexpr auto kCriteria = detail::all_kinds(RegisteredCriteria{});
+inline constexpr int kCriterionCount = RegisteredCriteria::size;
+
+// f(C{}) for the criterion type C behind c; every registered criterion must give the same type.
+template <class F>
+auto visit_criterion(CriterionKind c, F&& f) {
+  return detail::visit(c, std::forward<F>(f), RegisteredCriteria{});
+}
+
+inline std::string_view criterion_name(CriterionKind c) {
+  return visit_criterion(c, [](auto C) { return std::string_view(decltype(C)::name); });
+}
+
+inline std::string_view criterion_summary(CriterionKind c) {
+  return visit_criterion(c, [](auto C) { return std::string_view(decltype(C)::summary); });
+}
+
+inline std::optional<CriterionKind> parse_criterion(std::string_view s) {
+  for (auto c : kCriteria)
+    if (criterion_name(c) == s) return c;
+  return std::nullopt;
+}
+
+// "D|A|E|S": the registered names, for usage lines.
+inline std::string criterion_names(std::string_view separator = "|") {
+  std::string out;
+  for (auto c : kCriteria) out += (out.empty() ? "" : std::string(separator)) + std::string(criterion_name(c));
+  return out;
+}
+
+inline ProgramSymmetry symmetry_of(CriterionKind c) {
+  return visit_criterion(c, [](auto C) { return decltype(C)::symmetry; });
+}
+
+inline int default_starts(CriterionKind c, int positions) {
+  return visit_criterion(c, [positions](auto C) { return decltype(C)::default_starts(positions); });
+}
+
+template <class Model = Paper9Model, class Scalar = double>
+bool has_limit(CriterionKind c) {
+  return visit_criterion(c, [](auto C) { return decltype(C)::template limit<Model, Scalar>().has_value(); });
+}
+
+// The exact N -> infinity limit of c under the model; throws for a criterion without a known limit.
+template <class Scalar = double, class Model = Paper9Model>
+CriterionLimitTpl<Scalar> criterion_limit(CriterionKind c) {
+  const auto limit = visit_criterion(c, [](auto C) { return decltype(C)::template limit<Model, Scalar>(); });
+  if (!limit) throw std::invalid_argument("no known limit for criterion " + std::string(criterion_name(c)));
+  return *limit;
+}
+
+}  // namespace scalcal

@@ -1,0 +1,29 @@
+// The result of one local optimisation (a start of the multistart) and the options of the local
+// solvers; shared by the Newton and Ipopt paths and carried across the worker pipe.
+#pragma once
+#include "numeric/program/program.hpp"
+#include "numeric/program/summary.hpp"
+
+namespace scalcal {
+
+enum class LocalSolver {
+  Automatic,  // Riemannian Newton where the criterion is smooth, else Ipopt
+  Ipopt,      // Ipopt for every start (slower; for comparison)
+};
+
+struct LocalOptions {
+  double tolerance = 1e-10;  // Ipopt's tol
+  // 0: 200 for smooth criteria, 300 for the others. With exact Hessians, starts at N = 24 took
+  // 12-18 Ipopt iterations for A, 26-67 for S, 15-197 for E from a random program (D at N = 18:
+  // 12-19); one that has not converged by the cap is abandoned: more starts find the optimum
+  // sooner than longer ones.
+  int max_iterations = 0;
+};
+
+struct LocalResult {
+  Program program;   // unit vectors
+  double value = 0;  // normalised criterion of `program`, from evaluate()
+  Summary summary;
+};
+
+}  // namespace scalcal

@@ -1,0 +1,22 @@
+// The best of R programs uniform on the sphere (the paper's dashed line): a fixed-size hot loop
+// (random_search_kernel.hpp) on all cores; the same seed gives the same answer on any thread count.
+#pragma once
+#include <cstdint>
+
+#include "numeric/criteria/registry.hpp"
+#include "numeric/program/program.hpp"
+
+namespace scalcal {
+
+struct RandomSearchResult {
+  Program program;  // the best of `count` random programs
+  double best = 0;
+  long long count = 0;
+  double seconds = 0;
+};
+
+// Throws std::invalid_argument when positions < 9 or count < 1.
+RandomSearchResult random_search(int positions, long long count, CriterionKind criterion, std::uint64_t seed,
+                                 int threads = 0);
+
+}  // namespace scalcal

@@ -1,0 +1,104 @@
+// The multistart for one criterion type and model: start k is the uniform random program of seed
+// start_seed(seed, k), optimised by the local solver the criterion's form calls for, in worker
+// processes; the best program (lowest value, then lowest start index) never depends on scheduling.
+#pragma once
+#include <chrono>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "numeric/program/program_equivalence.hpp"
+#include "numeric/synthesis/ipopt_local.hpp"
+#include "numeric/synthesis/multistart.hpp"
+#include "numeric/synthesis/newton_local.hpp"
+#include "numeric/synthesis/seeds.hpp"
+#include "numeric/synthesis/workers.hpp"
+
+namespace scalcal {
+
+// Positions of two runs that reach the same optimum agree to about 1e-7 (Newton, Ipopt on D and
+// A) or 1e-5 (Ipopt on the nonsmooth E and S); distinct optima seen so far differ by 1e-2 or more.
+inline constexpr double kSameProgramTolerance = 1e-4;
+
+template <Criterion C>
+constexpr bool uses_newton(LocalSolver solver) {
+  return SmoothCriterion<C> && solver == LocalSolver::Automatic;
+}
+
+// One local optimisation from `start` by the solver C's form calls for.
+template <Criterion C, class Model = Paper9Model>
+LocalResult local_start(const Program& start, LocalSolver solver) {
+  if constexpr (SmoothCriterion<C>) {
+    return uses_newton<C>(solver) ? optimize_with_newton<C, Model>(start) : optimize_with_ipopt<C, Model>(start);
+  } else if constexpr (MaxEigenvalueCriterion<C>) {
+    // The eigenvalue constraint converges poorly from a random program (N = 9: random starts ended
+    // near 68.7 where the A optimum alone has E = 12.9), so the smooth trace criterion runs first
+    // and its program is kept when the E stage does not improve on it.
+    const LocalResult warm = local_start<ACriterion, Model>(start, solver);
+    LocalResult out = optimize_with_ipopt<C, Model>(warm.program);
+    const double warm_value = criterion_value<C, Model>(warm.program);
+    if (!(out.value <= warm_value)) {
+      out.program = warm.program;
+      out.value = warm_value;
+    }
+    out.summary.iterations += warm.summary.iterations;
+    return out;
+  } else {
+    return optimize_with_ipopt<C, Model>(start);
+  }
+}
+
+template <Criterion C, class Model = Paper9Model>
+SynthesisResult synthesize(const SynthesisOptions& options) {
+  if (options.positions < Model::kParameters)
+    throw std::invalid_argument("synthesize: at least " + std::to_string(Model::kParameters) + " positions are needed");
+  if (options.starts < 0) throw std::invalid_argument("synthesize: the number of starts must not be negative");
+  const auto t0 = std::chrono::steady_clock::now();
+  const int starts = options.starts > 0 ? options.starts : C::default_starts(options.positions);
+  const int workers = thread_count(options.threads);
+  const std::vector<LocalResult> results = run_in_workers(
+      starts, workers, options.positions,
+      [&](int k) {
+        const Program start = Program::random(options.positions, start_seed(options.seed, static_cast<std::uint64_t>(k)));
+        return local_start<C, Model>(start, options.local);
+      },
+      options.progress);
+  SynthesisResult out;
+  std::size_t best = 0;
+  for (std::size_t k = 1; k < results.size(); ++k)
+    if (results[k].value < results[best].value) best = k;
+  out.program = results[best].program;
+  out.value = results[best].value;
+  out.starts = starts;
+  out.local_solver = uses_newton<C>(options.local) ? "newton" : "ipopt";
+  if (uses_newton<C>(options.local)) {
+    // Ipopt, from the best Newton program, must find it a KKT point of the constrained problem
+    // (same value); should it find a lower one, that is kept.
+    const Program best_program = out.program;
+    const LocalResult check = run_in_workers(1, 1, options.positions, [&](int) {
+      return optimize_with_ipopt<C, Model>(best_program);
+    })[0];
+    const bool confirmed = check.summary.converged() && check.value <= out.value * (1 + kHitTolerance);
+    out.summary.termination = confirmed ? Termination::converged : Termination::not_converged;
+    out.summary.message = confirmed ? "Ipopt confirmed the best Newton program as a KKT point"
+                                    : "Ipopt did not confirm the best Newton program as a converged optimum";
+    out.summary.iterations = check.summary.iterations;
+    if (check.value < out.value) {
+      out.program = check.program;
+      out.value = check.value;
+    }
+  } else {
+    out.summary = results[best].summary;
+    out.summary.message = out.summary.converged() ? "the best Ipopt start converged"
+                                                  : "the best Ipopt start did not converge";
+  }
+  std::vector<Program> optima;
+  for (const auto& r : results)
+    if (r.value <= out.value * (1 + kHitTolerance)) optima.push_back(r.program);
+  out.hits = static_cast<int>(optima.size());
+  out.distinct = count_distinct(optima, C::symmetry, kSameProgramTolerance);
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return out;
+}
+
+}  // namespace scalcal

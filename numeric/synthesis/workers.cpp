@@ -1,0 +1,149 @@
+#include "numeric/synthesis/workers.hpp"
+
+#include <algorithm>
+#include <cerrno>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <iostream>
+#include <stdexcept>
+#include <string>
+
+#include <poll.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace scalcal {
+
+namespace {
+
+// What crosses the pipe ahead of the 3N coordinates of a result.
+struct RecordHeader {
+  std::int32_t index;
+  std::int32_t termination;
+  std::int32_t iterations;
+  std::int32_t padding;
+  double value;
+};
+
+void write_all(int fd, const void* data, std::size_t bytes) {
+  const char* p = static_cast<const char*>(data);
+  while (bytes > 0) {
+    const ssize_t w = ::write(fd, p, bytes);
+    if (w < 0 && errno == EINTR) continue;
+    if (w <= 0) ::_exit(3);
+    p += w;
+    bytes -= static_cast<std::size_t>(w);
+  }
+}
+
+bool read_all(int fd, void* data, std::size_t bytes) {
+  char* p = static_cast<char*>(data);
+  while (bytes > 0) {
+    const ssize_t r = ::read(fd, p, bytes);
+    if (r < 0 && errno == EINTR) continue;
+    if (r <= 0) return false;
+    p += r;
+    bytes -= static_cast<std::size_t>(r);
+  }
+  return true;
+}
+
+std::vector<char> encode(int index, const LocalResult& r, int positions) {
+  std::vector<char> buf(sizeof(RecordHeader) + sizeof(double) * static_cast<std::size_t>(3 * positions));
+  const RecordHeader h{index, static_cast<std::int32_t>(r.summary.termination), r.summary.iterations, 0, r.value};
+  std::memcpy(buf.data(), &h, sizeof h);
+  double* xyz = reinterpret_cast<double*>(buf.data() + sizeof h);
+  for (int i = 0; i < positions; ++i)
+    for (int c = 0; c < 3; ++c) xyz[3 * i + c] = r.program.positions[static_cast<std::size_t>(i)](c);
+  return buf;
+}
+
+int decode(const std::vector<char>& buf, int positions, LocalResult& r) {
+  RecordHeader h;
+  std::memcpy(&h, buf.data(), sizeof h);
+  r.value = h.value;
+  r.summary.termination = static_cast<Termination>(h.termination);
+  r.summary.iterations = h.iterations;
+  r.program.positions.clear();
+  for (int i = 0; i < positions; ++i) {
+    double v[3];
+    std::memcpy(v, buf.data() + sizeof h + sizeof(double) * static_cast<std::size_t>(3 * i), sizeof v);
+    r.program.positions.emplace_back(v[0], v[1], v[2]);
+  }
+  return h.index;
+}
+
+}  // namespace
+
+std::vector<LocalResult> run_in_workers(int tasks, int workers, int positions,
+                                        const std::function<LocalResult(int)>& task,
+                                        const std::function<void(int, int)>& progress) {
+  std::vector<LocalResult> results(static_cast<std::size_t>(tasks));
+  workers = std::max(1, std::min(workers, tasks));
+  const std::size_t record = sizeof(RecordHeader) + sizeof(double) * static_cast<std::size_t>(3 * positions);
+  std::cout.flush();  // a forked worker must not inherit (and later repeat) buffered output
+  std::cerr.flush();
+  std::fflush(nullptr);
+  std::vector<pollfd> fds;
+  std::vector<pid_t> pids;
+  for (int w = 0; w < workers; ++w) {
+    int fd[2];
+    if (::pipe(fd) != 0) throw std::runtime_error("synthesize: pipe failed");
+    const pid_t pid = ::fork();
+    if (pid < 0) throw std::runtime_error("synthesize: fork failed");
+    if (pid == 0) {
+      ::close(fd[0]);
+      for (int k = w; k < tasks; k += workers) {
+        const LocalResult r = task(k);
+        if (r.program.size() != positions) ::_exit(4);
+        const std::vector<char> buf = encode(k, r, positions);
+        write_all(fd[1], buf.data(), buf.size());
+      }
+      ::close(fd[1]);
+      ::_exit(0);
+    }
+    ::close(fd[1]);
+    fds.push_back({fd[0], POLLIN, 0});
+    pids.push_back(pid);
+  }
+  std::vector<char> buf(record);
+  int open = workers, done = 0;
+  bool failed = false;
+  while (open > 0) {
+    if (::poll(fds.data(), fds.size(), -1) < 0) {
+      if (errno == EINTR) continue;
+      failed = true;
+      break;
+    }
+    for (auto& p : fds) {
+      if (p.fd < 0 || !(p.revents & (POLLIN | POLLHUP | POLLERR))) continue;
+      if (!read_all(p.fd, buf.data(), record)) {
+        ::close(p.fd);
+        p.fd = -1;
+        --open;
+        continue;
+      }
+      LocalResult r;
+      const int k = decode(buf, positions, r);
+      if (k < 0 || k >= tasks) {
+        failed = true;
+        continue;
+      }
+      results[static_cast<std::size_t>(k)] = std::move(r);
+      ++done;
+      if (progress && tasks > 1) progress(done, tasks);
+    }
+  }
+  for (const pid_t pid : pids) {
+    int status = 0;
+    ::waitpid(pid, &status, 0);
+    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) failed = true;
+  }
+  if (failed || done != tasks)
+    throw std::runtime_error("synthesize: a worker process failed (" + std::to_string(done) + " of " + std::to_string(tasks) +
+                             " starts returned)");
+  return results;
+}
+
+}  // namespace scalcal
