@@ -3,8 +3,6 @@
 // forms are equal.
 #include "symbolic/exact.hpp"
 
-#include <sstream>
-
 namespace scalcal::symbolic {
 
 using GiNaC::ex;
@@ -78,12 +76,6 @@ matrix moment_matrix(const std::vector<WeightedPoint>& points) {
       M(c, r) = v;
     }
   return M;
-}
-
-std::string canonical_text(const GiNaC::ex& e) {
-  std::ostringstream s;
-  s << e;
-  return s.str();
 }
 
 }  // namespace scalcal::symbolic

@@ -29,7 +29,12 @@ GiNaC::matrix moment_matrix(const std::vector<WeightedPoint>& points);
 GiNaC::ex canonical(const GiNaC::ex& e);
 
 // The text of an expression for output: the same expression prints the same bytes on every run
-// (scalcal's reproducibility rule), whatever GiNaC's internal term order.
+// (scalcal's reproducibility rule), whatever GiNaC's internal term order. The form is kept
+// (factored stays factored) and GiNaC's parser reads it back. Sums are expanded, terms ordered by
+// degree in the symbols, then by symbol names, then radicals, then coefficient; products print the
+// number first, then radicals, constants, symbols (by name), functions and sums; a sum raised to
+// an integer power in a product has its sign and rational content moved to the number:
+//   1889568*(2*a+e)^(-2)*(3*a+4*d+6*e)^5*(8*d+9*e)^(-3),   45+18*sqrt(2).
 std::string canonical_text(const GiNaC::ex& e);
 
 // True when e is provably zero after canonical().

@@ -35,7 +35,7 @@ int main() {
     const auto lim = sym::symbolic_limit(c);
     const auto stated = scalcal::criterion_limit<double>(c);
     const std::string name(scalcal::criterion_name(c));
-    std::cout << "  " << name << ": " << lim.value << " at b = " << lim.b << "\n";
+    std::cout << "  " << name << ": " << sym::canonical_text(lim.value) << " at b = " << sym::canonical_text(lim.b) << "\n";
     check(sym::is_zero_exact(reader(std::string(stated.exact)) - lim.value), (name + ": numeric/limits.hpp exact value agrees").c_str());
     check(std::abs(GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(lim.b)).to_double() - stated.moment_b) < 1e-15,
           (name + ": numeric/limits.hpp moment b agrees").c_str());

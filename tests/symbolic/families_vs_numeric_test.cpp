@@ -2,6 +2,10 @@
 // evaluate on the program built by numeric/program.hpp), two independent derivations.
 #include <gtest/gtest.h>
 
+#include <cctype>
+#include <ostream>
+#include <string>
+
 #include "numeric/criteria/evaluation.hpp"
 #include "numeric/io/input_error.hpp"
 #include "symbolic/exact.hpp"
@@ -16,6 +20,12 @@ struct Case {
   std::string family;
   std::vector<std::string> params;
 };
+
+// Also read by gtest_discover_tests, which appends the printed parameter to each CTest name.
+void PrintTo(const Case& c, std::ostream* os) {
+  *os << c.family;
+  for (const auto& p : c.params) *os << " " << p;
+}
 
 class FamilyVsNumeric : public ::testing::TestWithParam<Case> {};
 
@@ -48,7 +58,16 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{"rotation", {"k=3", "phase=10"}}, Case{"rotation", {"k=4", "phase=10"}},
                       Case{"rotation", {"k=4", "phase=45"}}, Case{"rotation", {"k=5", "phase=7"}},
                       Case{"rotation", {"k=6"}}, Case{"rotation", {"k=11", "phase=30"}}, Case{"dodecahedral", {}},
-                      Case{"icosahedral", {}}));
+                      Case{"icosahedral", {}}),
+    // Names from the parameters: without them (and PrintTo) the names held the Case's bytes,
+    // heap pointers included, so CTest's test names changed on every discovery.
+    [](const ::testing::TestParamInfo<Case>& info) {
+      std::string name = info.param.family;
+      for (const auto& p : info.param.params) name += "_" + p;
+      for (char& c : name)
+        if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+      return name;
+    });
 
 // The octahedral closed form in symbolic multiplicities, evaluated at numbers, equals the exact
 // criteria of the numeric-multiplicity member: the closed form is the function it claims to be.
