@@ -11,7 +11,8 @@ namespace scalcal::reproduce {
 std::string decimal(double x, int significant) {
   if (std::isnan(x)) return "n/a";
   if (std::isinf(x)) return x > 0 ? "inf" : "-inf";
-  for (int p = 1; p <= 12; ++p) {
+  // Up to 10 digits: a number that only agrees to 1e-12 at 11 or 12 digits is rounding, not a closed form.
+  for (int p = 1; p <= 10; ++p) {
     const std::string s = ::fmt::format("{:.{}g}", x, p);
     if (std::abs(std::strtod(s.c_str(), nullptr) - x) <= 1e-12 * std::abs(x)) return s;
   }

@@ -7,7 +7,7 @@
 
 namespace scalcal::reproduce {
 
-// A value within a relative 1e-12 of a decimal of at most 12 significant digits prints as that
+// A value within a relative 1e-12 of a decimal of at most 10 significant digits prints as that
 // decimal (an optimiser reached a closed form up to rounding); any other value is rounded to
 // `significant` digits, but never to fewer digits than it has before the decimal point.
 std::string decimal(double x, int significant = 6);

@@ -6,7 +6,7 @@
 #include <sstream>
 #include <nlohmann/json.hpp>
 
-#include "tests/cli/json_numbers.hpp"
+#include "tests/common/number_text.hpp"
 #include "tests/common/run_cli.hpp"
 
 namespace scalcal::testing {
