@@ -76,8 +76,10 @@ int main(int argc, char** argv) {
     return 0;
   }
   const std::string name = args[0];
-  if (args[0].rfind("-", 0) != 0 && !subs.count(name))
-    return fail("", "unknown command '" + name + "' (try `scalcal help`)", 2);
+  if (name != "--version" && !subs.count(name))
+    return fail("", (name.rfind("-", 0) == 0 ? "unknown option " : "unknown command ") + name +
+                        " (try `scalcal help`)",
+                2);
 
   try {
     app.parse(argc, argv);

@@ -29,6 +29,16 @@ TEST(OptionsCli, HelpListsEveryCommand) {
   EXPECT_EQ(run_cli("").status, 2);  // no command: the overview on stderr
 }
 
+TEST(OptionsCli, UnknownCommandsAndTopLevelOptionsExitTwo) {
+  auto r = run_cli("--bogus");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, "scalcal: unknown option --bogus (try `scalcal help`)\n");
+  r = run_cli("help nosuch");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(lines(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("nosuch"), std::string::npos) << r.err;
+}
+
 TEST(OptionsCli, EveryOptionShowsItsUnitAndDefault) {
   for (const char* c : kCommands) {
     SCOPED_TRACE(c);
