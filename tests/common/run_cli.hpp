@@ -38,15 +38,21 @@ inline std::string write_file(const std::string& name, const std::string& conten
   return path.string();
 }
 
-inline CliResult run_cli(const std::string& args) {
+struct CliOptions {
+  std::string cwd;          // run there (default: the test's own folder)
+  std::string stdout_path;  // send stdout there instead of capturing it (e.g. /dev/full)
+};
+
+inline CliResult run_cli(const std::string& args, const CliOptions& options = {}) {
   static int counter = 0;
   const auto base = scratch_dir() / ("run" + std::to_string(counter++));
-  const std::string cmd = std::string(SCALCAL_CLI) + " " + args + " >" + base.string() + ".out 2>" +
-                          base.string() + ".err </dev/null";
+  const std::string out = options.stdout_path.empty() ? base.string() + ".out" : options.stdout_path;
+  const std::string cmd = (options.cwd.empty() ? "" : "cd '" + options.cwd + "' && ") + std::string(SCALCAL_CLI) +
+                          " " + args + " >" + out + " 2>" + base.string() + ".err </dev/null";
   const int raw = std::system(cmd.c_str());
   CliResult r;
   r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  r.out = slurp(base.string() + ".out");
+  if (options.stdout_path.empty()) r.out = slurp(out);
   r.err = slurp(base.string() + ".err");
   return r;
 }

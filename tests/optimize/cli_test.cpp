@@ -1,7 +1,11 @@
-// The subcommands' JSON keys, as issue 3 names them, and exit status 2 on bad options.
+// The subcommands' JSON keys, as issue 3 names them, exit status 2 on bad options, and the
+// polished program as what `optimize --digits --out` writes.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
+
+#include <nlohmann/json.hpp>
 
 #include "tests/common/run_cli.hpp"
 
@@ -19,6 +23,35 @@ TEST(OptimizeCli, JsonKeys) {
                           "\"seconds\"", "\"value_digits\"", "\"residual\"", "\"distinct\"", "\"local_solver\"",
                           "\"confirmed\""})
     EXPECT_NE(out.find(key), std::string::npos) << key;
+}
+
+// S at N = 12 reaches its limit 6 + 3 sqrt 3 (proofs/; README). Ipopt stops about 1e-11 above it;
+// the polished program, rounded to double, is within rounding of it: that is the one written.
+TEST(OptimizeCli, DigitsWritesThePolishedProgram) {
+  const auto file = (scalcal::testing::scratch_dir() / "s12.csv").string();
+  const auto r = scalcal::testing::run_cli("optimize --positions 12 --criterion S --starts 2 --digits 30 --out " + file +
+                                           " --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j.at("converged"), true);
+  EXPECT_TRUE(j.contains("iterations"));
+  const double limit = 6 + 3 * std::sqrt(3.0);
+  EXPECT_EQ(j.at("value_digits").get<std::string>().substr(0, 14), "11.19615242270");
+  const auto e = scalcal::testing::run_cli("evaluate " + file + " --json");
+  ASSERT_EQ(e.status, 0) << e.err;
+  EXPECT_NEAR(nlohmann::json::parse(e.out).at("S").get<double>(), limit, 2e-14 * limit);
+  // The JSON program is the same polished program as the file.
+  const auto program = j.at("program");
+  std::string csv = scalcal::testing::slurp(file);
+  ASSERT_EQ(program.size(), 12u);
+  const auto first_row = csv.substr(csv.find('\n') + 1);
+  EXPECT_EQ(std::stod(first_row.substr(0, first_row.find(','))), program[0][0].get<double>());
+}
+
+TEST(OptimizeCli, UnwritableOutIsAnError) {
+  const auto r = scalcal::testing::run_cli("optimize --positions 9 --starts 1 --out /dev/full");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("/dev/full"), std::string::npos) << r.err;
 }
 
 TEST(RandomCli, JsonKeys) {

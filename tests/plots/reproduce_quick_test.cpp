@@ -13,6 +13,8 @@
 #include <string>
 #include <vector>
 
+#include "tests/common/number_text.hpp"
+
 namespace fs = std::filesystem;
 
 namespace {
@@ -91,6 +93,23 @@ TEST_F(ReproduceQuick, ReportEmbedsFiguresAndStatesThePapersNumbers) {
   const std::string md = slurp(dir_ / "REPORT.md");
   for (const char* s : {"fig4.png", "fig6.png", "fig9.png", "1.538e7", "9, 10, 11, 13, 15", "Table 3"})
     EXPECT_NE(md.find(s), std::string::npos) << s;
+}
+
+// Closed-form values stay exact in the report: the optimised N = 12 program reaches the D limit
+// 61509375/4 = 15377343.75, which must not print as 15377344, and the E limit 12 prints once.
+TEST_F(ReproduceQuick, ReportPrintsExactNumbersExactly) {
+  const std::string md = slurp(dir_ / "REPORT.md");
+  EXPECT_NE(md.find("61509375/4 = 15377343.75"), std::string::npos);
+  EXPECT_NE(md.find("| 12 | 15377343.75 |"), std::string::npos);
+  EXPECT_EQ(md.find("15377344"), std::string::npos);
+  EXPECT_EQ(md.find("12 = 12"), std::string::npos);
+  EXPECT_NE(md.find("Limit of E for N → ∞: 12."), std::string::npos);
+  EXPECT_NE(md.find("Limit of A for N → ∞: 45+18*sqrt(2) = 70.455844"), std::string::npos);
+}
+
+TEST_F(ReproduceQuick, CsvNumbersAreShortest) {
+  for (const char* f : {"fig4_programs.csv", "fig4_random.csv", "fig10.csv", "tables.csv"})
+    EXPECT_EQ(scalcal::testing::overlong_numbers(slurp(dir_ / f)), std::vector<std::string>{}) << f;
 }
 
 TEST_F(ReproduceQuick, ClosedFormsInTheCsv) {

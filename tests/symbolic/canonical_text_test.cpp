@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "numeric/criteria/criterion_kind.hpp"
+#include "numeric/criteria/registry.hpp"
 #include "symbolic/criteria.hpp"
 #include "symbolic/exact.hpp"
 #include "symbolic/family.hpp"

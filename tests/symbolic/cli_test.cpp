@@ -15,7 +15,8 @@ Run run(const std::string& args) { return scalcal::testing::run_cli(args); }
 TEST(FamilyCli, JsonKeys) {
   const auto r = run("family icosahedral --json");
   ASSERT_EQ(r.status, 0);
-  for (const char* key : {"\"family\": \"icosahedral\"", "\"positions\": 20", "\"D\": 15377343.75", "\"A\": 72",
+  for (const char* key : {"\"family\": \"icosahedral\"", "\"positions\": \"20\"", "\"positions_value\": 20,",
+                          "\"D\": 15377343.75", "\"A\": 72",
                           "\"E\": 15", "\"S\": 15", "\"exact\"", "\"D\": \"61509375/4\""})
     EXPECT_NE(r.out.find(key), std::string::npos) << key << "\n" << r.out;
 }
@@ -24,7 +25,10 @@ TEST(FamilyCli, SymbolicParameters) {
   const auto r = run("family octahedral --param axes=a --param edges=e --param diagonals=d --json");
   ASSERT_EQ(r.status, 0);
   EXPECT_NE(r.out.find("\"D\": null"), std::string::npos) << r.out;
+  // positions is always the exact text, here N = 6a + 12e + 8d; positions_value is null.
   EXPECT_NE(r.out.find("\"positions\": \""), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\"positions_value\": null"), std::string::npos) << r.out;
+  for (const char* term : {"6*a", "12*e", "8*d"}) EXPECT_NE(r.out.find(term), std::string::npos) << term;
 }
 
 TEST(FamilyCli, BadInputExits2) {

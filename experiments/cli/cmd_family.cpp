@@ -1,0 +1,111 @@
+// `scalcal family NAME [--param key=value ...] [--json]`: the exact criteria of a family member
+// (closed forms from symbolic/, numbers from them), or closed forms in symbolic parameters. Every
+// expression prints through symbolic::canonical_text, so equal runs print equal bytes.
+#include <iostream>
+#include <memory>
+
+#include "experiments/cli/command.hpp"
+#include "experiments/cli/json_output.hpp"
+#include "experiments/cli/options.hpp"
+#include "numeric/io/input_error.hpp"
+#include "symbolic/criteria.hpp"
+#include "symbolic/exact.hpp"
+#include "symbolic/family.hpp"
+
+namespace scalcal::cli {
+namespace {
+
+struct Options {
+  std::string name;
+  std::vector<std::string> params;
+  bool json = false;
+};
+
+Json number_or_null(const symbolic::ExactValue& v) { return v.resolved() ? Json(v.number()) : Json(nullptr); }
+
+Json positions_value(const GiNaC::ex& N) {
+  if (!symbolic::is_number(N)) return nullptr;
+  if (GiNaC::is_a<GiNaC::numeric>(N) && GiNaC::ex_to<GiNaC::numeric>(N).is_integer())
+    return GiNaC::ex_to<GiNaC::numeric>(N).to_long();
+  return GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(N)).to_double();
+}
+
+int run(const Options& o) {
+  const auto& family = symbolic::find_family(o.name);
+  const auto params = symbolic::parse_params(family, o.params);
+  const auto inst = family.instance(params);
+  symbolic::ExactCriteria c;
+  try {
+    c = symbolic::exact_criteria(inst.M, inst.N);
+  } catch (const std::invalid_argument&) {
+    throw InputError(o.name, 0, "the information matrix is singular: these parameters cannot identify all nine");
+  }
+  const std::string n = symbolic::canonical_text(inst.N);
+  const struct {
+    const char* key;
+    const symbolic::ExactValue* v;
+  } rows[] = {{"D", &c.D},
+              {"A", &c.A},
+              {"E", &c.E},
+              {"S", &c.S},
+              {"theta_bias", &c.theta_bias},
+              {"theta_scale", &c.theta_scale},
+              {"theta_nonorth", &c.theta_nonorth}};
+  if (o.json) {
+    Json ps = Json::object();
+    for (const auto& [k, v] : params) ps[k] = symbolic::canonical_text(v);
+    // positions is always the exact text; positions_value the number, null when N is symbolic.
+    Json out{{"family", family.name}, {"params", ps}, {"positions", n}};
+    out["positions_value"] = positions_value(inst.N);
+    for (const auto& r : rows) out[r.key] = number_or_null(*r.v);
+    Json exact = Json::object();
+    for (const auto& r : rows)
+      exact[r.key] = r.v->exact ? r.v->str() : std::string("no closed form (eigenvalue of an irregular block)");
+    out["exact"] = exact;
+    print_json(out);
+    return 0;
+  }
+  std::cout << "family " << family.name;
+  for (const auto& [k, v] : params) std::cout << " " << k << "=" << symbolic::canonical_text(v);
+  std::cout << "\npositions N = " << n << "\n";
+  for (const auto& r : rows) {
+    std::cout << "  " << r.key << " = " << (r.v->exact ? r.v->str() : std::string("(no closed form)"));
+    if (r.v->resolved()) std::cout << "  ~ " << r.v->number();
+    std::cout << "\n";
+  }
+  return 0;
+}
+
+std::string names() {
+  std::string u;
+  for (const auto& f : symbolic::families()) {
+    u += " " + f.name;
+    if (!f.params.empty()) {
+      u += "[";
+      for (std::size_t i = 0; i < f.params.size(); ++i)
+        u += (i ? "," : "") + f.params[i].key + "=" + f.params[i].fallback;
+      u += "]";
+    }
+  }
+  return u;
+}
+
+Runner setup(CLI::App& app) {
+  auto o = std::make_shared<Options>();
+  app.add_option("NAME", o->name, "the family:" + names())->required();
+  app.add_option("--param", o->params,
+                 describe({"a parameter of the family, a number or a symbol (repeatable)", "positions for "
+                           "multiplicities, degrees for a phase", "the family's own, listed above"},
+                          ""))
+      ->type_name("KEY=VALUE")
+      ->allow_extra_args(false);
+  add_switch(app, "--json", o->json, "print one JSON object");
+  return [o] { return run(*o); };
+}
+
+const Registration reg({"family", "family NAME [--param key=value ...] [--json]   (NAME:" + names() + ")",
+                        "exact closed forms of D, A, E, S and the thetas for a program family; symbolic values allowed",
+                        60, setup});
+
+}  // namespace
+}  // namespace scalcal::cli

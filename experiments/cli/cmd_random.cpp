@@ -1,0 +1,54 @@
+// `scalcal random --positions N --count R [--seed S] [--criterion C] [--threads T] [--json]`: the
+// best of R uniform random programs (the paper's dashed line, R = 100000), on all cores.
+#include <iomanip>
+#include <iostream>
+#include <memory>
+
+#include "experiments/cli/command.hpp"
+#include "experiments/cli/json_output.hpp"
+#include "experiments/cli/options.hpp"
+#include "experiments/cli/synthesis_cli.hpp"
+#include "numeric/synthesis/multistart.hpp"
+#include "numeric/synthesis/random_search.hpp"
+
+namespace scalcal::cli {
+namespace {
+
+struct Options {
+  int positions = 0, threads = 0;
+  long long count = 0;
+  std::uint64_t seed = 1;
+  std::string criterion = "D";
+  bool json = false;
+};
+
+int run(const Options& o) {
+  const CriterionKind c = criterion_of(o.criterion);
+  const RandomSearchResult r = random_search(o.positions, o.count, c, o.seed, o.threads);
+  if (o.json) {
+    print_json(Json{{"best", r.best}, {"count", r.count}, {"program", program_json(r.program)}, {"seconds", r.seconds}});
+  } else {
+    std::cout << "best " << criterion_name(c) << " = " << std::setprecision(12) << r.best << " of " << r.count
+              << " random programs of " << o.positions << " positions (" << std::setprecision(3) << r.seconds
+              << " s, " << r.count / r.seconds / 1e6 << " M programs/s)\n";
+  }
+  return 0;
+}
+
+Runner setup(CLI::App& app) {
+  auto o = std::make_shared<Options>();
+  add_integer(app, "--positions", o->positions, 9, 100000, {"number of positions N", "positions", kRequired})
+      ->required();
+  add_integer(app, "--count", o->count, 1, 1LL << 50, {"random programs drawn", "programs", kRequired})->required();
+  add_seed(app, o->seed);
+  add_criterion(app, o->criterion);
+  add_threads(app, o->threads);
+  add_switch(app, "--json", o->json, "print one JSON object");
+  return [o] { return run(*o); };
+}
+
+const Registration reg({"random", "random --positions N --count R [--seed S] [--criterion C] [--threads T] [--json]",
+                        "the best of R uniform random programs (the paper's dashed line), on all cores", 41, setup});
+
+}  // namespace
+}  // namespace scalcal::cli

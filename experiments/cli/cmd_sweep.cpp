@@ -1,0 +1,148 @@
+// `scalcal sweep --positions 9..40 --criteria D,A,E,S [--starts K] [--seed S] [--threads T]
+// [--out FILE] [--json] [--no-timing]`: the best program for every N and criterion, with its ratio
+// to the N -> infinity limit. --no-timing leaves out the only columns that differ between runs.
+#include <charconv>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "experiments/cli/command.hpp"
+#include "experiments/cli/json_output.hpp"
+#include "experiments/cli/options.hpp"
+#include "experiments/cli/output_file.hpp"
+#include "experiments/cli/synthesis_cli.hpp"
+#include "numeric/criteria/registry.hpp"
+#include "numeric/synthesis/multistart.hpp"
+
+namespace scalcal::cli {
+namespace {
+
+constexpr int kMinN = 9, kMaxN = 1000;
+
+struct Options {
+  std::string positions = "9..40", criteria = "D,A,E,S", out;
+  int starts = 0, threads = 0;
+  std::uint64_t seed = 1;
+  bool json = false, no_timing = false;
+};
+
+bool read_int(const std::string& s, int& x) {
+  const auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), x);
+  return !s.empty() && ec == std::errc() && ptr == s.data() + s.size();
+}
+
+// "N" or "A..B" with kMinN <= A <= B <= kMaxN; nullopt otherwise.
+std::optional<std::pair<int, int>> read_range(const std::string& s) {
+  const auto dots = s.find("..");
+  int lo = 0, hi = 0;
+  if (dots == std::string::npos ? !read_int(s, lo) : !read_int(s.substr(0, dots), lo) || !read_int(s.substr(dots + 2), hi))
+    return std::nullopt;
+  if (dots == std::string::npos) hi = lo;
+  if (lo < kMinN || hi < lo || hi > kMaxN) return std::nullopt;
+  return std::make_pair(lo, hi);
+}
+
+std::vector<CriterionKind> read_criteria(const std::string& s) {
+  std::vector<CriterionKind> out;
+  std::stringstream list(s);
+  for (std::string name; std::getline(list, name, ',');) {
+    const auto c = parse_criterion(name);
+    if (!c) return {};
+    out.push_back(*c);
+  }
+  if (!s.empty() && s.back() == ',') return {};
+  return out;
+}
+
+std::string program_cell(const Program& p) {
+  std::string s;
+  for (std::size_t i = 0; i < p.positions.size(); ++i)
+    s += fmt::format("{}{} {} {}", i ? ";" : "", p.positions[i](0), p.positions[i](1), p.positions[i](2));
+  return s;
+}
+
+int run(const Options& o) {
+  const auto [lo, hi] = *read_range(o.positions);
+  const auto criteria = read_criteria(o.criteria);
+  std::optional<OutputFile> file;
+  if (!o.out.empty()) {
+    file.emplace(o.out);
+    file->stream() << "criterion,positions,value,limit,ratio,starts,hits,distinct," << (o.no_timing ? "" : "seconds,")
+                   << "program\n";
+    file->flush();  // an unwritable file fails now, not after hours of work
+  }
+  Json all = Json::array();
+  if (!o.json)
+    std::cout << "crit   N            value        ratio   hits/starts  distinct" << (o.no_timing ? "" : "  seconds")
+              << "\n";
+  for (const CriterionKind c : criteria)
+    for (int n = lo; n <= hi; ++n) {
+      SynthesisOptions opt;
+      opt.positions = n;
+      opt.criterion = c;
+      opt.starts = o.starts;
+      opt.seed = o.seed;
+      opt.threads = o.threads;
+      const SynthesisResult r = synthesize(opt);
+      const double limit = criterion_limit(c).value;
+      const std::string name(criterion_name(c));
+      if (o.json) {
+        Json j{{"positions", n},  {"criterion", name},       {"value", r.value},
+               {"ratio", r.value / limit}, {"program", program_json(r.program)}, {"hits", r.hits},
+               {"starts", r.starts}, {"distinct", r.distinct}};
+        if (!o.no_timing) j["seconds"] = r.seconds;
+        all.push_back(std::move(j));
+      } else {
+        std::cout << fmt::format("{:>4}{:>4}{:>17.10g}{:>13.8g}{:>7}/{:<6}{:>9}", name, n, r.value, r.value / limit,
+                                 r.hits, r.starts, r.distinct)
+                  << (o.no_timing ? "" : fmt::format("{:>9.3g}", r.seconds)) << std::endl;
+      }
+      if (file) {
+        file->stream() << fmt::format("{},{},{},{},{},{},{},{},", name, n, r.value, limit, r.value / limit, r.starts,
+                                      r.hits, r.distinct)
+                       << (o.no_timing ? "" : fmt::format("{},", r.seconds)) << '"' << program_cell(r.program)
+                       << "\"\n";
+        file->flush();
+      }
+    }
+  if (file) file->close();
+  if (o.json) print_json(all);
+  return 0;
+}
+
+Runner setup(CLI::App& app) {
+  auto o = std::make_shared<Options>();
+  app.add_option("--positions", o->positions, describe({"N or a range A..B of N", "positions"}, o->positions))
+      ->type_name("A..B")
+      ->check(CLI::Validator(
+          [](std::string& s) -> std::string {
+            return read_range(s) ? "" : fmt::format("must be N or A..B with {} <= A <= B <= {}, got '{}'", kMinN, kMaxN, s);
+          },
+          ""));
+  app.add_option("--criteria", o->criteria, describe({"comma-separated criteria"}, o->criteria))
+      ->type_name("LIST")
+      ->check(CLI::Validator(
+          [](std::string& s) -> std::string {
+            return read_criteria(s).empty() ? "must be a comma-separated list of D, A, E, S, got '" + s + "'" : "";
+          },
+          ""));
+  add_starts(app, o->starts);
+  add_seed(app, o->seed);
+  add_threads(app, o->threads);
+  add_text(app, "--out", o->out, "FILE", {"also write the results as CSV, one row per N and criterion", "file path"});
+  add_switch(app, "--json", o->json, "print a JSON array, one object per N and criterion, instead of the table");
+  add_switch(app, "--no-timing", o->no_timing, "leave out the seconds (output identical between runs)");
+  return [o] { return run(*o); };
+}
+
+const Registration reg({"sweep",
+                        "sweep --positions 9..40 --criteria D,A,E,S [--starts K] [--seed S] [--threads T] [--out FILE] "
+                        "[--json] [--no-timing]",
+                        "the best program for every N and criterion, and its ratio to the N -> infinity limit", 42,
+                        setup});
+
+}  // namespace
+}  // namespace scalcal::cli

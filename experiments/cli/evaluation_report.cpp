@@ -1,0 +1,77 @@
+#include "experiments/cli/evaluation_report.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include <Eigen/Eigenvalues>
+
+namespace scalcal::cli {
+
+Json evaluation_json(const Evaluation& ev) {
+  Json names = Json::array();
+  for (int r : ev.unidentifiable) names.push_back(std::string(kParameterNames[r]));
+  return Json{{"positions", ev.positions},       {"rank", ev.rank},
+              {"condition", ev.condition},       {"D", ev.D},
+              {"A", ev.A},                       {"E", ev.E},
+              {"S", ev.S},                       {"theta_bias", ev.theta_bias},
+              {"theta_scale", ev.theta_scale},   {"theta_nonorth", ev.theta_nonorth},
+              {"det_K", ev.det_K},               {"trace_K", ev.trace_K},
+              {"lambda_max_K", ev.lambda_max_K}, {"max_diag_K", ev.max_diag_K},
+              {"unidentifiable", names}};
+}
+
+Json evaluation_json(const Evaluation& ev, const Program& program) {
+  Json j = evaluation_json(ev);
+  j["program"] = program_json(program);
+  j["K"] = matrix_json(ev.K);
+  return j;
+}
+
+std::string rank_deficiency(const Evaluation& ev) {
+  std::string s = "rank-deficient program: rank " + std::to_string(ev.rank) + " of 9";
+  if (!ev.unidentifiable.empty()) {
+    s += "; not identifiable:";
+    for (std::size_t k = 0; k < ev.unidentifiable.size(); ++k)
+      s += (k ? ", " : " ") + std::string(kParameterNames[ev.unidentifiable[k]]);
+  }
+  return s;
+}
+
+std::string ill_conditioning(const Evaluation& ev) {
+  // The eigenvector of the smallest eigenvalue of H^T H is the worst-determined combination.
+  Eigen::SelfAdjointEigenSolver<Mat9> eig(ev.information);
+  const Vec9 v = eig.eigenvectors().col(0);
+  std::ostringstream s;
+  s << "ill-conditioned program (condition " << ev.condition
+    << "): the combination poorly determined is mostly";
+  bool first = true;
+  for (int r = 0; r < kParameters; ++r)
+    if (std::abs(v(r)) > 0.3) {
+      s << (first ? " " : ", ") << kParameterNames[r];
+      first = false;
+    }
+  return s.str();
+}
+
+void print_evaluation(std::ostream& out, const std::string& name, const Evaluation& ev) {
+  char buf[160];
+  out << "program " << name << ": N = " << ev.positions << ", rank " << ev.rank
+      << ", condition of H^T H = ";
+  std::snprintf(buf, sizeof buf, "%.6g\n", ev.condition);
+  out << buf;
+  out << "  criterion         normalised              raw\n";
+  auto row = [&](const char* label, double normalised, const char* raw_label, double raw) {
+    std::snprintf(buf, sizeof buf, "  %-16s %-22.10g %s = %.10g\n", label, normalised, raw_label, raw);
+    out << buf;
+  };
+  row("D  N^9 det K", ev.D, "det K", ev.det_K);
+  row("A  N trace K", ev.A, "trace K", ev.trace_K);
+  row("E  N lambda_max", ev.E, "lambda_max K", ev.lambda_max_K);
+  row("S  N max K(r,r)", ev.S, "max K(r,r)", ev.max_diag_K);
+  std::snprintf(buf, sizeof buf, "  RMS errors sqrt(N max K(r,r)): theta_bias %.6g  theta_scale %.6g  theta_nonorth %.6g\n",
+                ev.theta_bias, ev.theta_scale, ev.theta_nonorth);
+  out << buf;
+}
+
+}  // namespace scalcal::cli

@@ -1,0 +1,25 @@
+#include "experiments/cli/json_output.hpp"
+
+#include <iostream>
+
+namespace scalcal::cli {
+
+Json program_json(const Program& program) {
+  Json list = Json::array();
+  for (const auto& p : program.positions) list.push_back({p(0), p(1), p(2)});
+  return list;
+}
+
+Json matrix_json(const Mat9& m) {
+  Json rows = Json::array();
+  for (int r = 0; r < m.rows(); ++r) {
+    Json row = Json::array();
+    for (int c = 0; c < m.cols(); ++c) row.push_back(m(r, c));
+    rows.push_back(std::move(row));
+  }
+  return rows;
+}
+
+void print_json(const Json& j) { std::cout << j.dump(2) << "\n"; }
+
+}  // namespace scalcal::cli

@@ -1,0 +1,17 @@
+// JSON output of the CLI through nlohmann::ordered_json: keys stay in the documented order, doubles
+// print in the shortest form that reads back to the same bits, NaN and infinity print as null.
+#pragma once
+#include <nlohmann/json.hpp>
+
+#include "numeric/model/paper9.hpp"
+#include "numeric/program/program.hpp"
+
+namespace scalcal::cli {
+
+using Json = nlohmann::ordered_json;
+
+Json program_json(const Program& program);  // [[x, y, z], ...]
+Json matrix_json(const Mat9& m);            // nine rows of nine numbers
+void print_json(const Json& j);             // to stdout, indented, one trailing newline
+
+}  // namespace scalcal::cli

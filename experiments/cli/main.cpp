@@ -1,0 +1,106 @@
+// scalcal: the one CLI of the toolkit. Builds the CLI11 parser from the registered subcommands and
+// dispatches. Bad options or input: one line on stderr, exit 2; a result that cannot be written:
+// exit 1; `--help`, `help` and `--version` print to stdout and exit 0.
+#include <iostream>
+#include <map>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "experiments/cli/command.hpp"
+#include "experiments/cli/options.hpp"
+#include "experiments/cli/output_file.hpp"
+#include "numeric/io/input_error.hpp"
+
+namespace {
+
+using scalcal::cli::commands;
+
+void print_overview(std::ostream& out) {
+  out << "scalcal " SCALCAL_VERSION ": scalar calibration programs for vector meters\n\n"
+      << "usage: scalcal COMMAND [options]   (scalcal help COMMAND, scalcal COMMAND --help: every option with "
+         "its unit and default)\n\n";
+  for (const auto& c : commands()) out << "  " << c.usage << "\n      " << c.summary << "\n";
+}
+
+// CLI11 says "--x: ..." or "--x is required"; scalcal's messages say "option --x ...".
+std::string option_message(const std::string& what) { return what.rfind("--", 0) == 0 ? "option " + what : what; }
+
+// Anything CLI11 left over is a mistake of the user's: an unknown option or a stray argument.
+void reject_leftovers(const CLI::App& sub) {
+  for (const auto& t : sub.remaining()) {
+    if (t.size() > 1 && t[0] == '-') throw scalcal::cli::UsageError("unknown option " + t);
+    throw scalcal::cli::UsageError("unexpected argument '" + t + "'");
+  }
+}
+
+int fail(const std::string& command, const std::string& message, int status) {
+  std::cerr << "scalcal" << (command.empty() ? "" : " " + command) << ": " << message << "\n";
+  return status;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::vector<std::string> args(argv + 1, argv + argc);
+  if (args.empty()) {
+    print_overview(std::cerr);
+    return 2;
+  }
+  if (args[0] == "--help" || args[0] == "-h" || (args[0] == "help" && args.size() == 1)) {
+    print_overview(std::cout);
+    return 0;
+  }
+
+  CLI::App app("scalar calibration programs for vector meters", "scalcal");
+  app.set_help_flag();
+  app.set_version_flag("--version", "scalcal " SCALCAL_VERSION);
+  app.require_subcommand(1, 1);
+  app.get_formatter()->column_width(30);
+  std::map<std::string, scalcal::cli::Runner> runners;
+  std::map<std::string, CLI::App*> subs;
+  for (const auto& c : commands()) {
+    CLI::App* sub = app.add_subcommand(c.name, c.summary);
+    sub->set_help_flag("-h,--help", scalcal::cli::describe({"print this help and exit"}, "off"));
+    sub->allow_extras();
+    runners[c.name] = c.setup(*sub);
+    subs[c.name] = sub;
+  }
+
+  if (args[0] == "help") {
+    const auto it = subs.find(args[1]);
+    if (args.size() > 2 || it == subs.end())
+      return fail("", "help takes one command name, got '" + args[1] + "' (try `scalcal help`)", 2);
+    std::cout << it->second->help("scalcal");
+    return 0;
+  }
+  const std::string name = args[0];
+  if (name != "--version" && !subs.count(name))
+    return fail("", (name.rfind("-", 0) == 0 ? "unknown option " : "unknown command ") + name +
+                        " (try `scalcal help`)",
+                2);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
+    return fail(subs.count(name) ? name : "", option_message(e.what()) + " (see `scalcal " +
+                                                  (subs.count(name) ? name + " --help`)" : "help`)"),
+                2);
+  }
+  try {
+    reject_leftovers(*subs.at(name));
+    const int status = runners.at(name)();
+    scalcal::cli::check_stdout();
+    return status;
+  } catch (const scalcal::cli::UsageError& e) {
+    return fail(name, e.what() + std::string(" (see `scalcal ") + name + " --help`)", 2);
+  } catch (const scalcal::InputError& e) {
+    return fail(name, e.what(), 2);
+  } catch (const scalcal::cli::OutputError& e) {
+    return fail(name, e.what(), 1);
+  } catch (const std::exception& e) {
+    return fail(name, std::string("internal error: ") + e.what(), 1);
+  }
+}

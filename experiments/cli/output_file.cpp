@@ -1,0 +1,54 @@
+#include "experiments/cli/output_file.hpp"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <iostream>
+
+#include "numeric/io/program_csv.hpp"
+
+namespace scalcal::cli {
+
+namespace {
+[[noreturn]] void fail(const std::string& path, const char* what) {
+  const std::string reason = errno ? std::string(": ") + std::strerror(errno) : std::string();
+  throw OutputError(path + ": " + what + reason);
+}
+}  // namespace
+
+OutputFile::OutputFile(const std::string& path) : path_(path) {
+  errno = 0;
+  out_.open(path);
+  if (!out_) fail(path_, "cannot create the file");
+}
+
+void OutputFile::flush() {
+  errno = 0;
+  out_.flush();
+  if (!out_) fail(path_, "cannot write the file");
+}
+
+void OutputFile::close() {
+  errno = 0;
+  out_.close();
+  if (!out_) fail(path_, "cannot write the file");
+}
+
+void write_output_file(const std::string& path, const std::function<void(std::ostream&)>& write) {
+  OutputFile file(path);
+  write(file.stream());
+  file.close();
+}
+
+void write_program_file(const std::string& path, const Program& program) {
+  write_output_file(path, [&](std::ostream& out) { write_program_csv(out, program); });
+}
+
+void check_stdout() {
+  errno = 0;
+  std::cout.flush();
+  // printf and std::cout share C's stdout: its error flag catches what either lost.
+  if (!std::cout || std::fflush(stdout) != 0 || std::ferror(stdout)) fail("standard output", "cannot write");
+}
+
+}  // namespace scalcal::cli

@@ -1,0 +1,20 @@
+// Options shared by the synthesis subcommands (optimize, random, sweep, polish): the criterion, the
+// seed, the number of starts and of threads, with one text, range and help line everywhere.
+#pragma once
+#include <cstdint>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "numeric/criteria/registry.hpp"
+
+namespace scalcal::cli {
+
+void add_criterion(CLI::App& app, std::string& target, const std::string& fallback_text = "");
+CriterionKind criterion_of(const std::string& name);  // a name add_criterion has checked
+
+void add_seed(CLI::App& app, std::uint64_t& seed);
+void add_starts(CLI::App& app, int& starts);
+void add_threads(CLI::App& app, int& threads);
+
+}  // namespace scalcal::cli

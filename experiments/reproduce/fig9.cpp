@@ -1,0 +1,81 @@
+// Fig. 9 of the paper: the error ellipse of each criterion's N = 18 program in the
+// (scale-factor deviation, non-orthogonality) plane, the projection of the 9-D error ellipsoid:
+// the marginal covariance N K restricted to the scale-factor parameter and the non-orthogonality
+// parameter with the largest variances (those that set theta_scale and theta_nonorth).
+// Data: fig9.csv (ellipse points), fig9_cov.csv (the 2x2 covariances).
+#include <algorithm>
+#include <cmath>
+
+#include "experiments/reproduce/figures.hpp"
+#include "experiments/reproduce/format.hpp"
+#include "numeric/model/paper9.hpp"
+#include "plots/csv_writer.hpp"
+#include "plots/figure.hpp"
+
+namespace scalcal::reproduce {
+
+using plots::CsvWriter;
+
+void figure_9(Context& ctx) {
+  struct Item {
+    std::string label;
+    const Entry* entry;
+    std::string colour, dash;
+  };
+  const char* colours[] = {"#1f4e9e", "#c51b1b", "#1b9e3e", "#d95f02"};  // D, A, E, S
+  std::vector<Item> items;
+  for (std::size_t i = 0; i < kCriteria.size(); ++i)
+    if (const Entry* e = ctx.optimum(kCriteria[i], 18))
+      items.push_back({"scalcal " + std::string(criterion_name(kCriteria[i])) + "-optimal", e, colours[i], "1"});
+  const char* paper_labels[] = {"paper Table 1 (A)", "paper Table 2 (E)", "paper Table 3 (S)"};
+  for (std::size_t i = 0; i < 3; ++i) items.push_back({paper_labels[i], &ctx.paper[i], colours[i + 1], "2"});
+  static const Entry classic = make_entry("analytic", "classic18", "ref. [14]", Program::classic18());
+  items.push_back({"[14] 45° (classic 18)", &classic, "#555555", "3"});
+
+  CsvWriter pts(ctx.file("fig9.csv"), {"program", "label", "k", "scale", "nonorth"});
+  CsvWriter cov(ctx.file("fig9_cov.csv"), {"program", "label", "scale_parameter", "nonorth_parameter", "var_scale",
+                                           "var_nonorth", "covariance", "correlation", "area_over_pi"});
+  std::string plot = "plot ";
+  double extent = 0;
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    const auto& it = items[i];
+    const Mat9 C = static_cast<double>(it.entry->ev.positions) * it.entry->ev.K;
+    int r = 3, s = 6;
+    for (int j = 3; j < 6; ++j) if (C(j, j) > C(r, r)) r = j;
+    for (int j = 6; j < 9; ++j) if (C(j, j) > C(s, s)) s = j;
+    const double a = C(r, r), b = C(s, s), c = C(r, s);
+    extent = std::max({extent, std::sqrt(a), std::sqrt(b)});
+    cov.row({it.entry->name, CsvWriter::text(it.label), std::string(kParameterNames[static_cast<std::size_t>(r)]),
+             std::string(kParameterNames[static_cast<std::size_t>(s)]), csv_num(a), csv_num(b),
+             csv_num(c), csv_num(c / std::sqrt(a * b)), csv_num(std::sqrt(a * b - c * c))});
+    // Points C^(1/2) (cos t, sin t) through the Cholesky factor: the 1-sigma ellipse x^T C^-1 x = 1.
+    const double l11 = std::sqrt(a), l21 = c / l11, l22 = std::sqrt(std::max(0.0, b - l21 * l21));
+    for (int k = 0; k <= 200; ++k) {
+      const double t = 2 * M_PI * k / 200;
+      pts.row({it.entry->name, CsvWriter::text(it.label), std::to_string(k), csv_num(l11 * std::cos(t)),
+               csv_num(l21 * std::cos(t) + l22 * std::sin(t))});
+    }
+    plot += (i ? ", \\\n     " : "") + std::string("'fig9.csv' skip 1 using (strcol(2) eq ") + plots::gp_quote(it.label) +
+            " ? $4 : NaN):5 with lines lw 2.5 dt " + it.dash + " lc rgb '" + it.colour + "' title " +
+            plots::gp_quote(it.label);
+  }
+  pts.close();
+  cov.close();
+  const std::string body =
+      "set grid\nset size ratio -1\nset xlabel 'scale-factor deviation error  √N σ_{δk} / σ_ω'\n"
+      "set ylabel 'non-orthogonality error  √N σ_γ / σ_ω'\nset key outside right top\nset xzeroaxis\nset yzeroaxis\n"
+      "set xrange [" + csv_num(-1.1 * extent) + ":" + csv_num(1.1 * extent) + "]\nset yrange [" +
+      csv_num(-1.1 * extent) + ":" + csv_num(1.1 * extent) + "]\n" + plot + "\n";
+  render_figure(ctx, "fig9", "error ellipses in the (scale factor, non-orthogonality) plane (the paper's Fig. 9)", body,
+                1200, 800);
+  auto& rep = ctx.report;
+  rep.heading(2, "Fig. 9: error ellipses in the (scale factor, non-orthogonality) plane");
+  rep.figure("fig9", "Fig. 9: 1-σ error ellipses of the N = 18 programs, projected on (δk, γ)");
+  rep.paragraph("Each ellipse is x^T C^-1 x = 1 with C the 2x2 block of N K for the scale-factor parameter and the "
+                "non-orthogonality parameter of largest variance; its half-extents along the axes are theta_scale and "
+                "theta_nonorth. D shrinks the area, A the sum of the variances, E the longest half-axis, S the larger "
+                "of the two variances. Data: [fig9.csv](fig9.csv), covariances in [fig9_cov.csv](fig9_cov.csv).");
+  if (!ctx.optimiser) rep.missing("scalcal's optimised N = 18 ellipses (solid): " + ctx.optimiser_note);
+}
+
+}  // namespace scalcal::reproduce

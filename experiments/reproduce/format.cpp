@@ -1,0 +1,35 @@
+#include "experiments/reproduce/format.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+
+#include <fmt/format.h>
+
+namespace scalcal::reproduce {
+
+std::string decimal(double x, int significant) {
+  if (std::isnan(x)) return "n/a";
+  if (std::isinf(x)) return x > 0 ? "inf" : "-inf";
+  // Up to 10 digits: a number that only agrees to 1e-12 at 11 or 12 digits is rounding, not a closed form.
+  for (int p = 1; p <= 10; ++p) {
+    const std::string s = ::fmt::format("{:.{}g}", x, p);
+    if (std::abs(std::strtod(s.c_str(), nullptr) - x) <= 1e-12 * std::abs(x)) return s;
+  }
+  const int before_point = x == 0 ? 1 : static_cast<int>(std::floor(std::log10(std::abs(x)))) + 1;
+  return ::fmt::format("{:.{}g}", x, std::max(significant, std::min(before_point, 15)));
+}
+
+std::string pct(double ours, double theirs) {
+  if (!std::isfinite(ours) || !std::isfinite(theirs) || theirs == 0) return "n/a";
+  return ::fmt::format("{:+.3g} %", 100.0 * (ours - theirs) / theirs);
+}
+
+std::string csv_num(double x) { return std::isfinite(x) ? ::fmt::format("{}", x) : std::string(); }
+
+std::string exact_and_decimal(std::string_view exact, double value, int significant) {
+  const std::string d = decimal(value, significant);
+  return exact == d ? d : std::string(exact) + " = " + d;
+}
+
+}  // namespace scalcal::reproduce

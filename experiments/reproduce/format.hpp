@@ -1,0 +1,24 @@
+// Numbers as REPORT.md and the pipeline's CSVs print them. The report never shows rounding noise
+// as a different number (15377343.75 stays 15377343.75, never 15377344), and the CSVs hold the
+// shortest text that reads back to the same double.
+#pragma once
+#include <string>
+#include <string_view>
+
+namespace scalcal::reproduce {
+
+// A value within a relative 1e-12 of a decimal of at most 10 significant digits prints as that
+// decimal (an optimiser reached a closed form up to rounding); any other value is rounded to
+// `significant` digits, but never to fewer digits than it has before the decimal point.
+std::string decimal(double x, int significant = 6);
+
+// Signed relative difference in percent, "+0.123 %".
+std::string pct(double ours, double theirs);
+
+// Shortest round-trip text; empty when not finite (gnuplot and CSV readers skip empty cells).
+std::string csv_num(double x);
+
+// "61509375/4 = 15377343.75", or just "12" when the closed form already is the decimal.
+std::string exact_and_decimal(std::string_view exact, double value, int significant = 10);
+
+}  // namespace scalcal::reproduce
