@@ -3,5 +3,5 @@
 # (scalcal reproduce) into results/. Extra arguments go to `scalcal reproduce`.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash scripts/build.sh
+bash scripts/build.sh scalcal  # only what the main job needs: the CLI, not the tests
 ./build/experiments/scalcal reproduce --out results "$@"

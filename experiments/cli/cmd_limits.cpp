@@ -1,6 +1,8 @@
 // `scalcal limits [--json]`: the infimum of each normalised criterion over all measures on the
 // sphere, derived symbolically (symbolic/limits.hpp), with the moments of an optimal measure.
 #include <iostream>
+#include <sstream>
+#include <string>
 #include <memory>
 
 #include "experiments/cli/command.hpp"
@@ -20,7 +22,11 @@ int run(bool json) {
   for (auto c : kCriteria) {
     const auto l = symbolic::symbolic_limit(c);
     if (!json) {
-      std::cout << criterion_name(c) << " >= " << canonical_text(l.value) << " = " << number(l.value)
+      // The decimal only where it says something the exact form does not (not "E >= 12 = 12").
+      const std::string exact = canonical_text(l.value);
+      std::ostringstream decimal;
+      decimal << number(l.value);
+      std::cout << criterion_name(c) << " >= " << exact << (decimal.str() == exact ? "" : " = " + decimal.str())
                 << "   optimal moments: E[x^2] = 1/3, E[x^4] = " << canonical_text(l.x4)
                 << ", E[x^2 y^2] = " << canonical_text(l.b) << ", odd moments and other mixed moments 0\n";
       continue;

@@ -1,5 +1,5 @@
 // The inverse information matrix K = (H^T H)^-1 as the criteria read it: a view with det K,
-// trace K, K(r,r) and lambda_max(K). Evaluation gives one built from the SVD of H; the random-search
+// trace K, its entries K(r,c) and lambda_max(K). Evaluation gives one built from the SVD of H; the random-search
 // kernel gives its own from an LDL^T factorisation, so each criterion's value is written once.
 #pragma once
 #include <concepts>
@@ -14,6 +14,7 @@ concept InverseInformationView = requires(const V& k, int r) {
   k.det();
   k.trace();
   k.diagonal(r);
+  k.entry(r, r);
   k.max_eigenvalue();
 };
 
@@ -31,6 +32,7 @@ struct InverseInformation {
   }
   Scalar trace() const { return eigenvalues.sum(); }
   Scalar diagonal(int r) const { return K(r, r); }
+  Scalar entry(int r, int c) const { return K(r, c); }
   Scalar max_eigenvalue() const { return eigenvalues.maxCoeff(); }
 };
 

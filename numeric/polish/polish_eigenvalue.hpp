@@ -193,13 +193,14 @@ struct EigenConditions {
 
 // Multiplicities to try, best first: a multiple eigenvalue at a double optimum shows as a tight
 // cluster (spread about the optimiser's tolerance) followed by a wide gap, so rank m by
-// gap / spread; the floor on the spread keeps m = 1 (spread 0) from winning by default.
+// gap / spread; the floor on the spread keeps m = 1 (spread 0) from winning by default. m = P (every
+// eigenvalue equal, as at the E optimum of a small model) has no next eigenvalue: its gap counts as 1.
 template <class Row>
 std::vector<int> multiplicity_guesses(const Row& mu) {
   std::vector<std::pair<double, int>> score;
-  for (int m = 1; m < mu.size(); ++m) {
+  for (int m = 1; m <= mu.size(); ++m) {
     const double spread = static_cast<double>((mu(m - 1) - mu(0)) / mu(0));
-    const double gap = static_cast<double>((mu(m) - mu(0)) / mu(0));
+    const double gap = m < mu.size() ? static_cast<double>((mu(m) - mu(0)) / mu(0)) : 1.0;
     if (spread < 0.1) score.emplace_back(gap / std::max(spread, 1e-8), m);
   }
   std::sort(score.begin(), score.end(), std::greater<>());

@@ -272,6 +272,13 @@ class LdltInverseInformation {
     if (!have_diagonal_) fill_diagonal();
     return diagonal_[r];
   }
+  // K(r,c) = sum_k W_kr W_kc / d_k.
+  double entry(int r, int c) const {
+    if (!have_diagonal_) fill_diagonal();
+    double k = 0.0;
+    for (int j = std::max(r, c); j < 9; ++j) k += w_[j][r] * w_[j][c] / d_[j];
+    return k;
+  }
   double trace() const {
     double t = 0.0;
     for (int r = 0; r < 9; ++r) t += diagonal(r);
@@ -283,7 +290,7 @@ class LdltInverseInformation {
 
  private:
   void fill_diagonal() const {
-    double w[9][9] = {};
+    auto& w = w_;
     for (int j = 0; j < 9; ++j) {
       w[j][j] = 1.0;
       for (int i = j + 1; i < 9; ++i) {
@@ -307,6 +314,7 @@ class LdltInverseInformation {
   bool positive_definite_ = false;
   mutable bool have_diagonal_ = false;
   mutable double diagonal_[9] = {};
+  mutable double w_[9][9] = {};  // L^-1
 };
 
 // The normalised criterion C from the packed lower triangle of H^T H; +infinity when H^T H is not
