@@ -187,6 +187,8 @@ std::vector<Case> cases() {
       {"CountZero", [] { return std::string("random --positions 12 --count 0"); }, E::error, {"--count"}},
       {"CountOverLimit", [] { return std::string("random --positions 12 --count 2000000000"); }, E::error,
        {"--count", "1000000000"}},
+      {"ThreadsNegative", [] { return std::string("random --positions 12 --count 10 --threads -1"); }, E::error,
+       {"--threads"}},
       {"SeedNegative", [] { return std::string("random --positions 12 --count 10 --seed -1"); }, E::error, {"--seed"}},
       {"MagnitudeZero", [] { return "calibrate --magnitude 0 --measurements " + file("b.csv", bench_text()); },
        E::error, {"--magnitude"}},
