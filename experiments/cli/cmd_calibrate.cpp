@@ -3,6 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
+#include <utility>
+#include <vector>
+
+#include <boost/math/distributions/chi_squared.hpp>
 #include <memory>
 #include <sstream>
 #include <iomanip>
@@ -15,6 +20,7 @@
 #include "numeric/criteria/evaluation.hpp"
 #include "numeric/io/input_error.hpp"
 #include "numeric/io/measurements_csv.hpp"
+#include "numeric/calibration/meter_model.hpp"
 #include "numeric/calibration/scalar_calibration.hpp"
 
 namespace scalcal::cli {
@@ -46,6 +52,54 @@ void check_data(const std::string& file, const std::vector<PositionSamples>& dat
   if (ev.condition > kIllConditioned) throw InputError(file, 0, "the measured positions form an " + ill_conditioning(ev));
 }
 
+// Goodness of fit: the residual J_i = m_i / |I| - 1 of each position's mean has the standard
+// error (noise / |I|) / sqrt(n_i) by the fit's own noise estimate (the scatter within positions),
+// so sum z_i^2 with z_i = J_i / that error is chi-square with P - 9 degrees of freedom. A p-value
+// below 1e-3 means the fit contradicts its noise estimate: mislabelled positions (two directions
+// under one id), outliers or a model that does not fit; the positions with |z| > 3 are named.
+struct GoodnessOfFit {
+  double chi_square = 0, p = 1;
+  int dof = 0;
+  std::vector<std::pair<double, int>> disagreeing;  // (|z|, line of the position's first sample), worst first
+};
+constexpr double kFitRejectP = 1e-3, kDisagreeZ = 3;
+
+std::optional<GoodnessOfFit> goodness_of_fit(const std::vector<PositionSamples>& data, const CalibrationResult& r,
+                                             Modulus modulus, double M) {
+  if (r.noise_source != NoiseSource::scatter || !(r.noise > 0) || r.positions <= kParameters) return std::nullopt;
+  const Meter meter = Meter::from_parameters(r.X, M);
+  GoodnessOfFit g;
+  g.dof = r.positions - kParameters;
+  for (const auto& p : data) {
+    const Vec3 c = meter.compensate(p.mean());
+    const double m = modulus == Modulus::norm ? c.norm() : c.dot(p.nominal->normalized());
+    const double z = (m - M) * std::sqrt(static_cast<double>(p.samples.size())) / r.noise;
+    g.chi_square += z * z;
+    if (std::abs(z) > kDisagreeZ) g.disagreeing.emplace_back(std::abs(z), p.line);
+  }
+  std::sort(g.disagreeing.rbegin(), g.disagreeing.rend());
+  g.p = boost::math::cdf(boost::math::complement(boost::math::chi_squared(g.dof), g.chi_square));
+  return g;
+}
+
+std::string fit_warning(const GoodnessOfFit& g) {
+  std::ostringstream s;
+  s << std::setprecision(4) << "the fit contradicts its own noise estimate: chi-square " << g.chi_square << " for "
+    << g.dof << " degrees of freedom (p = " << std::setprecision(2) << g.p
+    << ") of the position residuals against the scatter within positions; ";
+  if (g.disagreeing.empty()) {
+    s << "no single position stands out (model misfit?)";
+  } else {
+    s << "positions that disagree (first line, |residual| in standard errors):";
+    for (std::size_t i = 0; i < std::min<std::size_t>(g.disagreeing.size(), 8); ++i)
+      s << (i ? "," : "") << " line " << g.disagreeing[i].second << " (" << std::setprecision(3)
+        << g.disagreeing[i].first << ")";
+    if (g.disagreeing.size() > 8) s << " and " << g.disagreeing.size() - 8 << " more";
+    s << " (mislabelled positions or outliers?)";
+  }
+  return s.str();
+}
+
 Json triple(const Vec3& v) { return Json{v(0), v(1), v(2)}; }
 Json triple_or_null(const Vec3& v, bool ok) { return ok ? triple(v) : Json(); }
 
@@ -75,6 +129,9 @@ int run(const Options& o) {
     std::cerr << "scalcal calibrate: " << *file << ": warning: the iteration did not converge after " << r.iterations
               << " iterations (errors too large for the linearised model?)\n";
 
+  const auto fit = goodness_of_fit(data, r, modulus, M);
+  if (fit && fit->p < kFitRejectP) std::cerr << "scalcal calibrate: " << *file << ": warning: " << fit_warning(*fit) << "\n";
+
   const Vec3 scale = r.X.segment<3>(3), gamma = r.X.segment<3>(6);
   const Vec3 scale_std = r.X_std.segment<3>(3), gamma_std = r.X_std.segment<3>(6);
   if (json) {
@@ -92,6 +149,9 @@ int run(const Options& o) {
         {"modulus", modulus == Modulus::norm ? "norm" : "projection"},
         {"converged", r.converged},
         {"noise", have_std ? Json(r.noise) : Json()},
+        {"chi_square", fit ? Json(fit->chi_square) : Json()},
+        {"chi_square_dof", fit ? Json(fit->dof) : Json()},
+        {"chi_square_p", fit ? Json(fit->p) : Json()},
         {"noise_source", r.noise_source == NoiseSource::scatter     ? "scatter"
                          : r.noise_source == NoiseSource::residuals ? "residuals"
                                                                     : "none"}});

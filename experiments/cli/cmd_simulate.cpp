@@ -5,9 +5,11 @@
 #include <iomanip>
 #include <iostream>
 #include <memory>
+#include <sstream>
 #include <vector>
 
 #include "experiments/cli/command.hpp"
+#include "experiments/cli/evaluation_report.hpp"
 #include "experiments/cli/json_output.hpp"
 #include "experiments/cli/options.hpp"
 #include "experiments/cli/synthesis_cli.hpp"
@@ -83,6 +85,54 @@ void print_result(std::ostream& out, const MonteCarloResult& r, Modulus m) {
       << r.mean_noise_ratio << "\n";
 }
 
+// The range of --noise sigma (relative to |I|) where the Monte-Carlo answers the question it is
+// asked (README, `simulate`):
+// - sigma >= 1 is refused: noise as large as the measured vector leaves no modulus to fit.
+// - sigma < 1e-15 is refused: below the resolution of a double near |I| (2.2e-16), the simulated
+//   noise is rounding; sigma^2 K underflows to 0 for sigma < 1e-154.
+// - sigma > 0.01 warns: the modulus' second-order terms (~sigma^2) exceed 1 % of the noise, so
+//   the empirical covariance departs from the linearised sigma^2 K.
+// - sigma < 1e-9 warns: the estimator stops at |dX| < 1e4 eps = 2.2e-12, more than 0.2 % of the
+//   spread of the estimates (~sigma), so the empirical std measures the stopping rule too.
+// - sigma sqrt(max K(r,r) / samples) > 0.05 warns (a near-degenerate program): the estimates
+//   spread beyond the linearised model's range and trials diverge.
+constexpr double kNoiseRefuseAbove = 1.0, kNoiseRefuseBelow = 1e-15;
+constexpr double kNoiseWarnAbove = 0.01, kNoiseWarnBelow = 1e-9, kSpreadWarnAbove = 0.05;
+
+void check_noise(double noise, const Evaluation& ev, int samples, const std::string& program) {
+  std::ostringstream s;
+  s << std::setprecision(3);
+  if (noise >= kNoiseRefuseAbove) {
+    s << "option --noise: " << noise << " |I| is meaningless for the linearised model (noise as large as the "
+      << "measured vector; must be below " << kNoiseRefuseAbove << ")";
+    throw UsageError(s.str());
+  }
+  if (noise < kNoiseRefuseBelow) {
+    s << "option --noise: " << noise << " |I| is below the resolution of a double near |I| (must be at least "
+      << kNoiseRefuseBelow << ")";
+    throw UsageError(s.str());
+  }
+  auto warn = [](const std::string& what) { std::cerr << "scalcal simulate: warning: " << what << "\n"; };
+  if (noise > kNoiseWarnAbove) {
+    s << "--noise " << noise << " is above " << kNoiseWarnAbove << ": second-order terms of the modulus (~sigma^2) "
+      << "exceed 1% of the noise; the empirical covariance will depart from sigma^2 K";
+    warn(s.str());
+  } else if (noise < kNoiseWarnBelow) {
+    s << "--noise " << noise << " is below " << kNoiseWarnBelow << ": the estimator's stopping tolerance (2.2e-12) "
+      << "and rounding are no longer negligible against the noise; the empirical std will be off";
+    warn(s.str());
+  }
+  // One warning per cause; the spread is only worth a line of its own when the noise itself is sane.
+  const double spread = noise * std::sqrt(ev.max_diag_K / samples);
+  if (spread > kSpreadWarnAbove && noise <= kNoiseWarnAbove) {
+    std::ostringstream t;
+    t << std::setprecision(3) << program << ": the estimates spread by sigma sqrt(max K(r,r)) = " << spread
+      << ", above " << kSpreadWarnAbove << ": outside the linearised model's range; trials may diverge";
+    warn(t.str());
+  }
+  if (ev.condition > kIllConditioned) warn(program + ": " + ill_conditioning(ev));
+}
+
 struct Options {
   std::string program, modulus;
   int trials = 0, samples = 1;
@@ -103,7 +153,8 @@ int run(const Options& o) {
 
   const Program program = resolve_program(*program_name);
   const Evaluation ev = evaluate(program);
-  if (!ev.full_rank()) throw InputError(*program_name, 0, "rank-deficient program: rank " + std::to_string(ev.rank) + " of 9");
+  if (!ev.full_rank()) throw InputError(*program_name, 0, rank_deficiency(ev));
+  check_noise(noise, ev, samples, *program_name);
 
   Json all{{"program", *program_name}, {"positions", program.size()}, {"trials", trials},   {"noise", noise},
            {"bench_error_deg", bench},    {"seed", seed},                {"samples", samples}, {"size", size}};

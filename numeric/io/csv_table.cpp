@@ -1,11 +1,15 @@
 #include "numeric/io/csv_table.hpp"
 
+#include <algorithm>
+#include <array>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <string_view>
 
 #include "numeric/io/input_error.hpp"
 
@@ -37,13 +41,38 @@ bool parse_number(const std::string& s, double& out) {
   return end == s.c_str() + s.size() && errno != ERANGE;
 }
 
-bool looks_binary(const std::string& text) {
-  if (text.find('\0') != std::string::npos) return true;
-  int control = 0;
+bool looks_binary(std::string_view text) {
   for (unsigned char c : text)
-    if (c < 0x20 && c != '\n' && c != '\r' && c != '\t') ++control;
-  return control > 0;
+    if (c < 0x20 && c != '\n' && c != '\r' && c != '\t') return true;
+  return false;
 }
+
+// What the text is, when it is not text scalcal reads: UTF-16 (a spreadsheet's "Unicode text")
+// gets its own advice.
+std::string binary_reason(std::string_view text) {
+  if (text.starts_with("\xFF\xFE") || text.starts_with("\xFE\xFF"))
+    return "UTF-16 text; save the file as UTF-8 CSV";
+  return "not a text file (binary or control characters)";
+}
+
+// Strips a UTF-8 byte-order mark and turns CRLF and lone CR line endings into LF.
+std::string normalise(std::string text) {
+  if (text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);
+  if (text.find('\r') == std::string::npos) return text;
+  std::string out;
+  out.reserve(text.size());
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text[i] != '\r') {
+      out.push_back(text[i]);
+    } else {
+      out.push_back('\n');
+      if (i + 1 < text.size() && text[i + 1] == '\n') ++i;
+    }
+  }
+  return out;
+}
+
+std::string in_quotes(const std::string& field) { return "'" + display_name(field) + "'"; }
 
 }  // namespace
 
@@ -53,8 +82,12 @@ int CsvTable::column(const std::string& name) const {
   return -1;
 }
 
-CsvTable parse_csv(const std::string& text, const std::string& name) {
-  if (looks_binary(text)) throw InputError(name, 0, "not a text file (binary or control characters)");
+CsvTable parse_csv(const std::string& input, const std::string& name) {
+  using L = CsvLimits;
+  if (input.size() > L::max_file_bytes)
+    throw InputError(name, 0, "file larger than the limit of " + std::to_string(L::max_file_bytes >> 20) + " MiB");
+  if (looks_binary(input)) throw InputError(name, 0, binary_reason(input));
+  const std::string text = normalise(input);
   CsvTable table;
   table.file = name;
   std::istringstream in(text);
@@ -63,18 +96,24 @@ CsvTable parse_csv(const std::string& text, const std::string& name) {
   bool header_seen = false;
   while (std::getline(in, raw)) {
     ++line_no;
+    if (raw.size() > L::max_line_chars)
+      throw InputError(name, line_no, "line longer than the limit of " + std::to_string(L::max_line_chars) +
+                                          " characters");
     std::string line = raw;
     if (const auto hash = line.find('#'); hash != std::string::npos) line.erase(hash);
     line = trim(line);
     if (line.empty()) continue;
     auto fields = split(line);
+    if (fields.size() > L::max_columns)
+      throw InputError(name, line_no, std::to_string(fields.size()) + " columns, more than the limit of " +
+                                          std::to_string(L::max_columns));
     if (!header_seen) {
       double probe;
       if (parse_number(fields.front(), probe))
         throw InputError(name, line_no, "expected a header line naming the columns, found numbers");
       for (auto& f : fields) {
         if (f.empty()) throw InputError(name, line_no, "empty column name in the header");
-        if (table.column(f) >= 0) throw InputError(name, line_no, "column '" + f + "' appears twice");
+        if (table.column(f) >= 0) throw InputError(name, line_no, "column " + in_quotes(f) + " appears twice");
         table.columns.push_back(f);
       }
       header_seen = true;
@@ -83,14 +122,16 @@ CsvTable parse_csv(const std::string& text, const std::string& name) {
     if (fields.size() != table.columns.size())
       throw InputError(name, line_no, "expected " + std::to_string(table.columns.size()) +
                                           " values, found " + std::to_string(fields.size()));
+    if (table.rows.size() == L::max_rows)
+      throw InputError(name, line_no, "more than the limit of " + std::to_string(L::max_rows) + " data rows");
     CsvTable::Row row;
     row.line = line_no;
     for (std::size_t c = 0; c < fields.size(); ++c) {
       double v;
       if (!parse_number(fields[c], v))
-        throw InputError(name, line_no, "'" + fields[c] + "' in column " + table.columns[c] + " is not a number");
+        throw InputError(name, line_no, in_quotes(fields[c]) + " in column " + table.columns[c] + " is not a number");
       if (!std::isfinite(v))
-        throw InputError(name, line_no, "value in column " + table.columns[c] + " is not finite (" + fields[c] + ")");
+        throw InputError(name, line_no, "value in column " + table.columns[c] + " is not finite (" + display_name(fields[c]) + ")");
       row.values.push_back(v);
     }
     table.rows.push_back(std::move(row));
@@ -99,13 +140,25 @@ CsvTable parse_csv(const std::string& text, const std::string& name) {
   return table;
 }
 
+// Reads at most the size limit plus one byte, so a device or pipe that never ends (/dev/zero,
+// /dev/urandom) or a huge file costs no more than the limit; a directory is refused by name.
 CsvTable read_csv(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw InputError(path, 0, "is a directory, not a CSV file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path, 0, std::string("cannot open file: ") + std::strerror(errno));
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
+  constexpr std::size_t limit = CsvLimits::max_file_bytes;
+  std::string text;
+  std::array<char, 1 << 16> chunk;
+  while (text.size() <= limit && in) {
+    in.read(chunk.data(), chunk.size());
+    const std::string_view piece(chunk.data(), static_cast<std::size_t>(in.gcount()));
+    // Binary content is refused as soon as it is seen: /dev/urandom gives no end and no text.
+    if (looks_binary(piece)) throw InputError(path, 0, binary_reason(text.empty() ? piece : std::string_view(text)));
+    text.append(piece.substr(0, limit + 1 - text.size()));
+  }
   if (in.bad()) throw InputError(path, 0, "read error");
-  return parse_csv(buffer.str(), path);
+  return parse_csv(text, path);
 }
 
 }  // namespace scalcal

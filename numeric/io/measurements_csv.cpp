@@ -4,6 +4,7 @@
 #include <map>
 
 #include "numeric/io/input_error.hpp"
+#include "numeric/io/program_csv.hpp"
 
 namespace scalcal {
 
@@ -37,6 +38,9 @@ std::vector<PositionSamples> measurements_from_table(const CsvTable& table, bool
     } else {
       out.emplace_back();
     }
+    if (out.size() > static_cast<std::size_t>(kMaximumPositions))
+      throw InputError(table.file, row.line,
+                       "more than the limit of " + std::to_string(kMaximumPositions) + " positions");
     PositionSamples& pos = out[k];
     if (pos.samples.empty()) pos.line = row.line;
     pos.samples.push_back(Vec3(v[ix], v[iy], v[iz]));

@@ -1,8 +1,9 @@
 #include "numeric/io/program_csv.hpp"
 
+#include <array>
+#include <charconv>
 #include <cmath>
 #include <fstream>
-#include <iomanip>
 
 #include "numeric/io/input_error.hpp"
 
@@ -15,6 +16,9 @@ Program program_from_table(const CsvTable& t) {
   const bool cartesian = x >= 0 && y >= 0 && z >= 0;
   if (!cartesian && !(a1 >= 0 && a2 >= 0))
     throw InputError(t.file, 1, "header must name columns x,y,z or alpha1_deg,alpha2_deg");
+  if (t.rows.size() > static_cast<std::size_t>(kMaximumPositions))
+    throw InputError(t.file, t.rows[kMaximumPositions].line,
+                     "more than the limit of " + std::to_string(kMaximumPositions) + " positions");
   for (const auto& row : t.rows) {
     Vec3 eta;
     if (cartesian) {
@@ -41,19 +45,33 @@ Eigen::Vector2d angles_deg(const Vec3& eta) {
   return {std::atan2(eta(1), eta(0)) * deg, std::asin(std::clamp(eta(2), -1.0, 1.0)) * deg};
 }
 
+namespace {
+
+// The shortest decimal text that reads back to the same double (std::to_chars' guarantee).
+std::string shortest(double v) {
+  std::array<char, 32> buffer;
+  const auto end = std::to_chars(buffer.data(), buffer.data() + buffer.size(), v).ptr;
+  return std::string(buffer.data(), end);
+}
+
+}  // namespace
+
 void write_program_csv(std::ostream& out, const Program& program) {
-  out << "x,y,z,alpha1_deg,alpha2_deg\n" << std::setprecision(17);
+  out << "x,y,z,alpha1_deg,alpha2_deg\n";
   for (const auto& eta : program.positions) {
     const auto a = angles_deg(eta);
-    out << eta(0) << ',' << eta(1) << ',' << eta(2) << ',' << a(0) << ',' << a(1) << '\n';
+    out << shortest(eta(0)) << ',' << shortest(eta(1)) << ',' << shortest(eta(2)) << ',' << shortest(a(0)) << ','
+        << shortest(a(1)) << '\n';
   }
 }
 
+// The stream is checked after close(): a full disk shows only when the buffer is flushed.
 bool write_program_csv(const std::string& path, const Program& program) {
   std::ofstream out(path);
   if (!out) return false;
   write_program_csv(out, program);
-  return static_cast<bool>(out);
+  out.close();
+  return !out.fail();
 }
 
 }  // namespace scalcal

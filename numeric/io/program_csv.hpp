@@ -10,11 +10,16 @@
 namespace scalcal {
 
 inline constexpr int kMinimumPositions = 9;
+// The most positions a program may have (files, catalogue names, random-N): the criteria cost
+// O(N) and any optimum needs far fewer; the limit keeps a typo from allocating gigabytes.
+inline constexpr int kMaximumPositions = 100000;
 
-// Throws InputError for a bad file, a zero vector, or fewer than 9 positions.
+// Throws InputError for a bad file, a zero vector, fewer than 9 or more than 100000 positions.
 Program read_program_csv(const std::string& path);
 Program program_from_table(const CsvTable& table);
 
+// Numbers are written as the shortest text that reads back to the same double. The path form
+// returns false when the file could not be opened, written or closed (e.g. a full disk).
 void write_program_csv(std::ostream& out, const Program& program);
 bool write_program_csv(const std::string& path, const Program& program);
 

@@ -1,5 +1,7 @@
 #include "numeric/program/catalogue.hpp"
 
+#include <charconv>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <regex>
@@ -39,15 +41,28 @@ constexpr TableSource kTables[] = {
     {"table3-S", "table3_S.csv", "18 positions optimised for the max-diagonal criterion (Xi_B)"},
 };
 
-int parse_int(const std::string& s, const std::string& name) {
-  try {
-    std::size_t used = 0;
-    const int v = std::stoi(s, &used);
-    if (used == s.size()) return v;
-  } catch (const std::exception&) {
-  }
-  throw InputError(name, 0, "'" + s + "' is not an integer");
+// Numbers inside a catalogue name: plain decimal digits (the regexes guarantee the shape), in
+// range, or an InputError naming the name.
+long long parse_count(const std::string& s, const std::string& name, const char* what, long long hi) {
+  long long v = 0;
+  const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+  if (ec != std::errc() || end != s.data() + s.size() || v > hi)
+    throw InputError(name, 0, std::string(what) + " '" + display_name(s) + "' is out of range 0.." + std::to_string(hi));
+  return v;
 }
+
+double parse_phase(const std::string& s, const std::string& name) {
+  double v = 0;
+  const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+  if (ec != std::errc() || end != s.data() + s.size() || !std::isfinite(v))
+    throw InputError(name, 0, "phase '" + display_name(s) + "' is not a decimal number of degrees");
+  if (std::abs(v) > 360) throw InputError(name, 0, "phase '" + s + "' is outside -360..360 degrees");
+  return v;
+}
+
+// Names longer than this are no catalogue names (and are never given to std::regex, whose
+// recursive matcher can exhaust the stack on a long input).
+constexpr std::size_t kMaxNameLength = 64;
 
 }  // namespace
 
@@ -60,26 +75,43 @@ std::optional<Program> named_program(const std::string& name) {
   if (name == "icosahedral-20") return Program::icosahedral();
   for (const auto& t : kTables)
     if (name == t.name) return read_program_csv(data_dir() + "/" + t.file);
+  if (name.size() > kMaxNameLength) return std::nullopt;
+  constexpr long long max_n = kMaximumPositions;
   if (std::regex_match(name, m, std::regex(R"(rotation-(\d+)(?:-p(-?[0-9.]+))?)"))) {
-    const int k = parse_int(m[1], name);
+    const auto k = parse_count(m[1], name, "k", max_n / 3);
     if (k < 3) throw InputError(name, 0, "a rotation program needs k >= 3 positions per ring");
-    const double phase = m[2].matched ? std::stod(m[2]) : 0.0;
-    return Program::rotation(k, phase);
+    const double phase = m[2].matched ? parse_phase(m[2], name) : 0.0;
+    return Program::rotation(static_cast<int>(k), phase);
   }
-  if (std::regex_match(name, m, std::regex(R"(octahedral-(\d+)-(\d+)-(\d+))")))
-    return Program::octahedral(parse_int(m[1], name), parse_int(m[2], name), parse_int(m[3], name));
+  if (std::regex_match(name, m, std::regex(R"(octahedral-(\d+)-(\d+)-(\d+))"))) {
+    const auto a = parse_count(m[1], name, "axes multiplicity", max_n), e = parse_count(m[2], name, "edges multiplicity", max_n),
+               d = parse_count(m[3], name, "diagonals multiplicity", max_n);
+    const long long n = 6 * a + 12 * e + 8 * d;
+    if (n < kMinimumPositions || n > max_n)
+      throw InputError(name, 0, "6*" + std::to_string(a) + " + 12*" + std::to_string(e) + " + 8*" + std::to_string(d) +
+                                    " = " + std::to_string(n) + " positions; a program needs " +
+                                    std::to_string(kMinimumPositions) + ".." + std::to_string(max_n));
+    return Program::octahedral(static_cast<int>(a), static_cast<int>(e), static_cast<int>(d));
+  }
   if (std::regex_match(name, m, std::regex(R"(random-(\d+)(?:-s(\d+))?)"))) {
-    const int n = parse_int(m[1], name);
-    if (n < 1 || n > 100000) throw InputError(name, 0, "random program size must be 1..100000");
-    const std::uint64_t seed = m[2].matched ? std::stoull(m[2]) : 1;
-    return Program::random(n, seed);
+    const auto n = parse_count(m[1], name, "N", max_n);
+    if (n < 1) throw InputError(name, 0, "random program size must be 1.." + std::to_string(max_n));
+    std::uint64_t seed = 1;
+    if (m[2].matched) {
+      const std::string t = m[2];
+      const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), seed);
+      if (ec != std::errc() || end != t.data() + t.size())
+        throw InputError(name, 0, "seed '" + t + "' is out of range 0..18446744073709551615");
+    }
+    return Program::random(static_cast<int>(n), seed);
   }
   return std::nullopt;
 }
 
 Program resolve_program(const std::string& argument) {
   if (auto p = named_program(argument)) return *p;
-  if (std::filesystem::exists(argument) || argument.find('/') != std::string::npos ||
+  std::error_code ec;  // exists() throws on a name too long for the system; with ec it says false
+  if (std::filesystem::exists(argument, ec) || argument.find('/') != std::string::npos ||
       argument.ends_with(".csv"))
     return read_program_csv(argument);
   throw InputError(argument, 0, "neither a catalogue name nor a file (see `scalcal catalogue`)");

@@ -1,0 +1,274 @@
+// Issue 16: no crash, no hang, no silent nonsense. Every bad input below is generated here (no
+// committed pile of files) and run through the scalcal binary as a user would, under a time and a
+// memory limit, and its class is asserted:
+//   error  exit 2, exactly one line on stderr naming the file or option and the reason;
+//   warn   exit 0, a result on stdout and one warning line on stderr;
+//   same   exit 0, the same result as a clean reference input (BOM, CRLF, CR files);
+//   write  exit 1, one line naming the file that could not be written.
+// Every case checks the exit status and words of its message, so each one fails if the reader
+// hangs (killed at 60 s: status 137), crashes (internal error, exit 1, or a signal), accepts the
+// input silently (exit 0) or gives an unhelpful message.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "numeric/program/program.hpp"
+#include "tests/common/run_cli.hpp"
+
+namespace scalcal::testing {
+namespace {
+
+enum class Expect { error, warn, same, write };
+
+struct Case {
+  std::string name;                         // the test's name
+  std::function<std::string()> args;        // generates its inputs, returns the CLI arguments
+  Expect expect;
+  std::vector<std::string> needles;         // words the message (error, warn, write) must contain
+  std::function<std::string()> reference;   // for `same`: the arguments of the clean input
+};
+
+// run_cli with a wall-clock limit (a hang is a failure, not a stuck test) and a memory limit
+// (a huge allocation fails at once instead of swapping).
+CliResult run_limited(const std::string& args) {
+  static int counter = 0;
+  const auto base = (scratch_dir() / ("limited" + std::to_string(counter++))).string();
+  const std::string cmd = "ulimit -v 8000000; exec timeout -s KILL 60 " + std::string(SCALCAL_CLI) + " " + args +
+                          " >" + base + ".out 2>" + base + ".err </dev/null";
+  const int raw = std::system(cmd.c_str());
+  CliResult r;
+  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  r.out = slurp(base + ".out");
+  r.err = slurp(base + ".err");
+  return r;
+}
+
+int lines(const std::string& s) { return static_cast<int>(std::count(s.begin(), s.end(), '\n')); }
+
+std::string quote(const std::string& path) { return "'" + path + "'"; }
+
+// --- generators -----------------------------------------------------------------------------
+
+std::string program_text(const Program& p, const std::string& eol = "\n", bool bom = false) {
+  std::ostringstream s;
+  s.precision(17);
+  if (bom) s << "\xEF\xBB\xBF";
+  s << "# classic18, written by the robustness test" << eol << "x,y,z" << eol;
+  for (const auto& e : p.positions) s << e(0) << ',' << e(1) << ',' << e(2) << eol;
+  return s.str();
+}
+
+// Bench data of a slightly miscalibrated meter on classic18: three samples per position, a
+// deterministic "noise" of 1e-3 |I|, |I| = 1.
+// With `mislabel`, the samples of the position opposite the first carry the first one's id and
+// the nominal directions are left out (with them, the reader already refuses the file).
+std::string bench_text(const std::string& eol = "\n", bool bom = false, bool mislabel = false) {
+  std::ostringstream s;
+  s.precision(17);
+  if (bom) s << "\xEF\xBB\xBF";
+  s << (mislabel ? "position,ix,iy,iz" : "position,ix,iy,iz,x,y,z") << eol;
+  const Program p = Program::classic18();
+  int k = 0;
+  for (int i = 0; i < p.size(); ++i) {
+    const Vec3 e = p.positions[i];
+    const int id = mislabel && (e + p.positions[0]).norm() < 1e-9 ? 0 : i;
+    for (int j = 0; j < 3; ++j, ++k) {
+      const Vec3 m(1.002 * e(0) + 0.01 + 1e-3 * std::sin(1.3 * k), 0.999 * e(1) - 0.02 + 1e-3 * std::sin(2.1 * k + 1),
+                   1.001 * e(2) + 0.005 + 1e-3 * std::sin(0.7 * k + 2) + 0.001 * e(0));
+      s << id + 1 << ',' << m(0) << ',' << m(1) << ',' << m(2);
+      if (!mislabel) s << ',' << e(0) << ',' << e(1) << ',' << e(2);
+      s << eol;
+    }
+  }
+  return s.str();
+}
+
+std::string file(const std::string& name, const std::string& content) { return quote(write_file(name, content)); }
+
+std::string repeat_lines(const std::string& header, const std::string& row, std::size_t n) {
+  std::string s = header;
+  s.reserve(header.size() + row.size() * n);
+  for (std::size_t i = 0; i < n; ++i) s += row;
+  return s;
+}
+
+std::string columns(int n) {
+  std::string s;
+  for (int i = 0; i < n; ++i) s += (i ? ",c" : "c") + std::to_string(i);
+  return s + "\n";
+}
+
+const std::string kSim = "simulate --program classic18 --trials 20 --seed 3 --modulus norm ";
+
+std::vector<Case> cases() {
+  using E = Expect;
+  const std::string long_name = std::string(5000, 'a');
+  return {
+      // Devices and files that are not CSV.
+      {"DevUrandom", [] { return std::string("evaluate /dev/urandom"); }, E::error, {"/dev/urandom", "not a text file"}},
+      {"DevZero", [] { return std::string("evaluate /dev/zero"); }, E::error, {"/dev/zero", "not a text file"}},
+      {"CalibrateDevUrandom", [] { return std::string("calibrate --measurements /dev/urandom --magnitude 1"); },
+       E::error, {"/dev/urandom", "not a text file"}},
+      {"Directory", [] { return "evaluate " + quote(scratch_dir().string()); }, E::error, {"is a directory"}},
+      {"MissingFile", [] { return std::string("evaluate /nonexistent/p.csv"); }, E::error,
+       {"/nonexistent/p.csv", "cannot open file"}},
+      {"Utf16", [] { return "evaluate " + file("utf16.csv", std::string("\xFF\xFEx\0,\0y\0", 8)); }, E::error,
+       {"utf16.csv", "UTF-16"}},
+      {"NulByte", [] { return "evaluate " + file("nul.csv", std::string("x,y,z\n1,0,\0\n", 12)); }, E::error,
+       {"nul.csv", "not a text file"}},
+      {"EmptyFile", [] { return "evaluate " + file("empty.csv", ""); }, E::error, {"empty.csv", "empty file"}},
+      // Limits.
+      {"WideHeader", [] { return "evaluate " + file("wide.csv", columns(30000) + "1\n"); }, E::error,
+       {"wide.csv:1:", "line longer than the limit of 4096"}},
+      {"ManyColumns", [] { return "evaluate " + file("cols.csv", columns(100)); }, E::error,
+       {"cols.csv:1:", "100 columns, more than the limit of 64"}},
+      {"LongLine", [] { return "evaluate " + file("longline.csv", "x,y,z\n#" + std::string(5000, 'c') + "\n"); },
+       E::error, {"longline.csv:2:", "line longer than the limit"}},
+      {"HugeFile", [] { return "evaluate " + file("huge.csv", repeat_lines("x,y,z\n", "#" + std::string(1000, 'h') + "\n", 70000)); },
+       E::error, {"huge.csv", "larger than the limit of 64 MiB"}},
+      {"TooManyPositions", [] { return "evaluate " + file("rows.csv", repeat_lines("x,y,z\n", "1,0,0\n", 100001)); },
+       E::error, {"rows.csv:100002:", "limit of 100000 positions"}},
+      {"TooManyRows", [] { return "calibrate --magnitude 1 --measurements " + file("rows.csv", repeat_lines("ix,iy,iz\n", "1,0,0\n", 1000001)); },
+       E::error, {"rows.csv:1000002:", "limit of 1000000 data rows"}},
+      {"TooManyMeasuredPositions", [] {
+         std::string s = "position,ix,iy,iz\n";
+         for (int i = 0; i <= 100000; ++i) s += std::to_string(i) + ",1,0,0\n";
+         return "calibrate --magnitude 1 --measurements " + file("mpos.csv", s);
+       }, E::error, {"mpos.csv:100002:", "limit of 100000 positions"}},
+      {"LongFileName", [long_name] { return "evaluate " + quote(scratch_dir().string() + "/" + long_name + ".csv"); },
+       E::error, {"aaaa...aaaa", "File name too long"}},
+      {"LongArgument", [long_name] { return "evaluate " + long_name; }, E::error,
+       {"aaaa...aaaa", "neither a catalogue name nor a file"}},
+      // Catalogue names.
+      {"RotationHuge", [] { return std::string("evaluate rotation-1000000000"); }, E::error,
+       {"rotation-1000000000", "out of range 0..33333"}},
+      {"RotationDigits", [] { return "evaluate rotation-" + std::string(40, '9'); }, E::error, {"out of range"}},
+      {"RotationPhaseDot", [] { return std::string("evaluate rotation-6-p."); }, E::error,
+       {"rotation-6-p.", "phase '.' is not a decimal number"}},
+      {"RotationPhaseTwoDots", [] { return std::string("evaluate rotation-6-p1.2.3"); }, E::error,
+       {"rotation-6-p1.2.3", "phase '1.2.3'"}},
+      {"RotationPhaseLarge", [] { return std::string("evaluate rotation-6-p1000"); }, E::error, {"-360..360"}},
+      {"RotationTwo", [] { return std::string("evaluate rotation-2"); }, E::error, {"rotation-2", "k >= 3"}},
+      {"OctahedralEmpty", [] { return std::string("evaluate octahedral-0-0-0"); }, E::error,
+       {"octahedral-0-0-0", "0 positions; a program needs 9..100000"}},
+      {"OctahedralHuge", [] { return std::string("evaluate octahedral-0-0-99999"); }, E::error,
+       {"octahedral-0-0-99999", "799992 positions"}},
+      {"OctahedralOverflow", [] { return std::string("evaluate octahedral-99999999999999999999-0-0"); }, E::error,
+       {"axes multiplicity", "out of range"}},
+      {"RandomZero", [] { return std::string("evaluate random-0"); }, E::error, {"random-0", "1..100000"}},
+      {"RandomSeedHuge", [] { return "evaluate random-18-s" + std::string(30, '9'); }, E::error, {"seed", "out of range"}},
+      {"RankDeficient", [] { return std::string("evaluate rotation-4"); }, E::error,
+       {"rotation-4", "rank-deficient program: rank 6 of 9"}},
+      // Malformed content.
+      {"Overflowing", [] { return "evaluate " + file("big.csv", "x,y,z\n1e999,0,0\n"); }, E::error,
+       {"big.csv:2:", "'1e999' in column x is not a number"}},
+      {"NotFinite", [] { return "evaluate " + file("nan.csv", "x,y,z\nnan,0,0\n"); }, E::error,
+       {"nan.csv:2:", "not finite"}},
+      {"Ragged", [] { return "evaluate " + file("ragged.csv", "x,y,z\n1,0\n"); }, E::error,
+       {"ragged.csv:2:", "expected 3 values, found 2"}},
+      {"ZeroVector", [] { return "evaluate " + file("zero.csv", "x,y,z\n0,0,0\n"); }, E::error,
+       {"zero.csv:2:", "zero vector"}},
+      {"NoHeader", [] { return "evaluate " + file("nohead.csv", "1,0,0\n"); }, E::error, {"nohead.csv:1:", "header"}},
+      {"FewPositions", [] { return "evaluate " + file("few.csv", "x,y,z\n1,0,0\n0,1,0\n"); }, E::error,
+       {"few.csv", "only 2 positions"}},
+      {"MeasurementsNoColumns", [] { return "calibrate --magnitude 1 --measurements " + file("m.csv", "a,b\n1,2\n"); },
+       E::error, {"m.csv:1:", "missing column 'ix'"}},
+      {"MeasurementsBadPosition", [] {
+         return "calibrate --magnitude 1 --measurements " + file("mp.csv", "position,ix,iy,iz\n1.5,1,0,0\n");
+       }, E::error, {"mp.csv:2:", "position must be an integer"}},
+      // Malformed option values.
+      {"PositionsNotInteger", [] { return std::string("optimize --positions 9abc --criterion D"); }, E::error,
+       {"--positions"}},
+      {"CountZero", [] { return std::string("random --positions 12 --count 0"); }, E::error, {"--count"}},
+      {"CountOverLimit", [] { return std::string("random --positions 12 --count 2000000000"); }, E::error,
+       {"--count", "1000000000"}},
+      {"ThreadsNegative", [] { return std::string("random --positions 12 --count 10 --threads -1"); }, E::error,
+       {"--threads"}},
+      {"SeedNegative", [] { return std::string("random --positions 12 --count 10 --seed -1"); }, E::error, {"--seed"}},
+      {"MagnitudeZero", [] { return "calibrate --magnitude 0 --measurements " + file("b.csv", bench_text()); },
+       E::error, {"--magnitude"}},
+      {"MagnitudeWrongUnits", [] { return "calibrate --magnitude 9.81 --measurements " + file("b.csv", bench_text()); },
+       E::error, {"b.csv", "--magnitude 9.81"}},
+      {"ModulusUnknown", [] { return "calibrate --magnitude 1 --modulus foo --measurements x.csv"; }, E::error,
+       {"--modulus"}},
+      {"TrialsOne", [] { return kSim + "--trials 1 --noise 1e-3"; }, E::error, {"--trials"}},
+      {"NoiseTen", [] { return kSim + "--noise 10"; }, E::error, {"option --noise", "meaningless"}},
+      {"NoiseHuge", [] { return kSim + "--noise 1e300"; }, E::error, {"option --noise", "meaningless"}},
+      {"NoiseTiny", [] { return kSim + "--noise 1e-300"; }, E::error, {"option --noise", "resolution of a double"}},
+      {"NoiseInf", [] { return kSim + "--noise inf"; }, E::error, {"--noise"}},
+      {"SimulateRankDeficient", [] { return std::string("simulate --program rotation-4 --trials 20 --noise 1e-3"); },
+       E::error, {"rotation-4", "rank-deficient"}},
+      // Runs, with a warning.
+      {"NoiseHalf", [] { return kSim + "--noise 0.5"; }, E::warn, {"warning: --noise 0.5 is above 0.01"}},
+      {"NoiseSmall", [] { return kSim + "--noise 1e-12"; }, E::warn, {"warning: --noise 1e-12 is below 1e-09"}},
+      {"NearDegenerate", [] {
+         // rotation-4 (rank 6) with its three rings tipped by 1e-2 rad: full rank, nearly degenerate.
+         Program p = Program::rotation(4);
+         for (std::size_t i = 0; i < p.positions.size(); ++i) p.positions[i] = (p.positions[i] + 1e-2 * Vec3(
+             std::sin(i + 1.0), std::cos(2.0 * i), std::sin(3.0 * i + 2))).normalized();
+         return "simulate --trials 20 --seed 3 --modulus norm --noise 1e-3 --program " + file("degen.csv", program_text(p));
+       }, E::warn, {"degen.csv", "estimates spread by"}},
+      {"MislabelledPositions", [] {
+         return "calibrate --magnitude 1 --measurements " + file("mislabel.csv", bench_text("\n", false, true));
+       }, E::warn, {"mislabel.csv", "the fit contradicts its own noise estimate", "line 2 ("}},
+      // Spreadsheet exports read exactly as the clean file.
+      {"ProgramBomCrlf", [] { return "evaluate --json " + file("crlf.csv", program_text(Program::classic18(), "\r\n", true)); },
+       E::same, {}, [] { return "evaluate --json " + file("lf.csv", program_text(Program::classic18())); }},
+      {"ProgramCr", [] { return "evaluate --json " + file("cr.csv", program_text(Program::classic18(), "\r")); },
+       E::same, {}, [] { return "evaluate --json " + file("lf.csv", program_text(Program::classic18())); }},
+      {"MeasurementsBomCrlf", [] { return "calibrate --json --magnitude 1 --measurements " + file("bcrlf.csv", bench_text("\r\n", true)); },
+       E::same, {}, [] { return "calibrate --json --magnitude 1 --measurements " + file("blf.csv", bench_text()); }},
+      // Output that cannot be written.
+      {"OutFull", [] { return std::string("evaluate classic18 --out /dev/full"); }, E::write, {"/dev/full"}},
+      {"OutNoDirectory", [] { return std::string("evaluate classic18 --out /nonexistent/p.csv"); }, E::write,
+       {"/nonexistent/p.csv"}},
+  };
+}
+
+void PrintTo(const Case& c, std::ostream* os) { *os << c.name; }
+
+class BadInput : public ::testing::TestWithParam<Case> {};
+
+TEST_P(BadInput, HasItsClass) {
+  const Case& c = GetParam();
+  const std::string args = c.args();
+  const CliResult r = run_limited(args);
+  const std::string shown = args.size() > 300 ? args.substr(0, 300) + "..." : args;
+  SCOPED_TRACE(shown);
+  ASSERT_EQ(r.err.find("internal error"), std::string::npos) << r.err;
+  switch (c.expect) {
+    case Expect::error:
+      EXPECT_EQ(r.status, 2) << r.err;
+      EXPECT_TRUE(r.out.empty()) << r.out;
+      break;
+    case Expect::warn:
+      EXPECT_EQ(r.status, 0) << r.err;
+      EXPECT_FALSE(r.out.empty());
+      break;
+    case Expect::same: {
+      EXPECT_EQ(r.status, 0) << r.err;
+      EXPECT_EQ(r.err, "");
+      const CliResult ref = run_limited(c.reference());
+      ASSERT_EQ(ref.status, 0) << ref.err;
+      EXPECT_EQ(r.out, ref.out);
+      return;
+    }
+    case Expect::write:
+      EXPECT_EQ(r.status, 1) << r.err;
+      break;
+  }
+  EXPECT_EQ(lines(r.err), 1) << r.err;
+  EXPECT_EQ(r.err.rfind("scalcal ", 0), 0u) << r.err;
+  for (const auto& n : c.needles) EXPECT_NE(r.err.find(n), std::string::npos) << "missing '" << n << "' in: " << r.err;
+}
+
+INSTANTIATE_TEST_SUITE_P(Issue16, BadInput, ::testing::ValuesIn(cases()),
+                         [](const ::testing::TestParamInfo<Case>& info) { return info.param.name; });
+
+}  // namespace
+}  // namespace scalcal::testing
