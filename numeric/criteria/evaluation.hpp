@@ -40,9 +40,6 @@ struct EvaluationTpl {
 
   bool full_rank() const { return rank == P; }
   const Scalar& value(CriterionKind c) const { return values[static_cast<std::size_t>(c.index())]; }
-  Scalar theta(ParameterGroup g) const {
-    return g == ParameterGroup::bias ? theta_bias : g == ParameterGroup::scale ? theta_scale : theta_nonorth;
-  }
 };
 
 using Evaluation = EvaluationTpl<double>;
