@@ -7,7 +7,6 @@
 #include <utility>
 #include <vector>
 
-#include <boost/math/distributions/chi_squared.hpp>
 #include <memory>
 #include <sstream>
 #include <iomanip>
@@ -20,94 +19,41 @@
 #include "numeric/criteria/evaluation.hpp"
 #include "numeric/io/input_error.hpp"
 #include "numeric/io/measurements_csv.hpp"
+#include "numeric/calibration/data_checks.hpp"
+#include "numeric/calibration/goodness_of_fit.hpp"
 #include "numeric/calibration/meter_model.hpp"
+#include "numeric/calibration/outlier_samples.hpp"
 #include "numeric/calibration/scalar_calibration.hpp"
 
 namespace scalcal::cli {
 namespace {
 
-constexpr const char* kUsage = "calibrate --measurements FILE --magnitude M [--modulus norm|projection] [--json]";
-
-// Everything that makes the data unusable is reported before the estimator runs.
-void check_data(const std::string& file, const std::vector<PositionSamples>& data, Modulus modulus, double M) {
-  const int P = static_cast<int>(data.size());
-  if (P < kParameters)
-    throw InputError(file, 0, std::to_string(P) + " distinct positions; scalar calibration estimates 9 parameters "
-                                                  "and needs at least 9 positions");
-  std::vector<double> ratio;
-  for (const auto& p : data) ratio.push_back(p.mean().norm() / M);
-  std::nth_element(ratio.begin(), ratio.begin() + P / 2, ratio.end());
-  const double median = ratio[P / 2];
-  if (median < 0.5 || median > 2.0) {
-    std::ostringstream s;
-    s << "the measured modulus is " << median << " times --magnitude " << M
-      << "; the model needs it near 1 (wrong --magnitude or units?)";
-    throw InputError(file, 0, s.str());
-  }
-  Program directions;
-  directions.positions = position_directions(data, modulus);
-  const Evaluation ev = evaluate(directions);
-  if (!ev.full_rank())
-    throw InputError(file, 0, "the measured positions form a " + rank_deficiency(ev));
-  if (ev.condition > kIllConditioned) throw InputError(file, 0, "the measured positions form an " + ill_conditioning(ev));
-}
-
-// Goodness of fit: the residual J_i = m_i / |I| - 1 of each position's mean has the standard
-// error (noise / |I|) / sqrt(n_i) by the fit's own noise estimate (the scatter within positions),
-// so sum z_i^2 with z_i = J_i / that error is chi-square with P - 9 degrees of freedom. A p-value
-// below 1e-3 means the fit contradicts its noise estimate: mislabelled positions (two directions
-// under one id), outliers or a model that does not fit; the positions with |z| > 3 are named.
-struct GoodnessOfFit {
-  double chi_square = 0, p = 1;
-  int dof = 0;
-  std::vector<std::pair<double, int>> disagreeing;  // (|z|, line of the position's first sample), worst first
-};
-constexpr double kFitRejectP = 1e-3, kDisagreeZ = 3;
-
-std::optional<GoodnessOfFit> goodness_of_fit(const std::vector<PositionSamples>& data, const CalibrationResult& r,
-                                             Modulus modulus, double M) {
-  if (r.noise_source != NoiseSource::scatter || !(r.noise > 0) || r.positions <= kParameters) return std::nullopt;
-  const Meter meter = Meter::from_parameters(r.X, M);
-  GoodnessOfFit g;
-  g.dof = r.positions - kParameters;
-  for (const auto& p : data) {
-    const Vec3 c = meter.compensate(p.mean());
-    const double m = modulus == Modulus::norm ? c.norm() : c.dot(p.nominal->normalized());
-    const double z = (m - M) * std::sqrt(static_cast<double>(p.samples.size())) / r.noise;
-    g.chi_square += z * z;
-    if (std::abs(z) > kDisagreeZ) g.disagreeing.emplace_back(std::abs(z), p.line);
-  }
-  std::sort(g.disagreeing.rbegin(), g.disagreeing.rend());
-  g.p = boost::math::cdf(boost::math::complement(boost::math::chi_squared(g.dof), g.chi_square));
-  return g;
-}
-
-std::string fit_warning(const GoodnessOfFit& g) {
-  std::ostringstream s;
-  s << std::setprecision(4) << "the fit contradicts its own noise estimate: chi-square " << g.chi_square << " for "
-    << g.dof << " degrees of freedom (p = " << std::setprecision(2) << g.p
-    << ") of the position residuals against the scatter within positions; ";
-  if (g.disagreeing.empty()) {
-    s << "no single position stands out (model misfit?)";
-  } else {
-    s << "positions that disagree (first line, |residual| in standard errors):";
-    for (std::size_t i = 0; i < std::min<std::size_t>(g.disagreeing.size(), 8); ++i)
-      s << (i ? "," : "") << " line " << g.disagreeing[i].second << " (" << std::setprecision(3)
-        << g.disagreeing[i].first << ")";
-    if (g.disagreeing.size() > 8) s << " and " << g.disagreeing.size() - 8 << " more";
-    s << " (mislabelled positions or outliers?)";
-  }
-  return s.str();
-}
+constexpr const char* kUsage = "calibrate --measurements FILE --magnitude M [--modulus norm|projection] [--keep-outliers] [--json]";
 
 Json triple(const Vec3& v) { return Json{v(0), v(1), v(2)}; }
 Json triple_or_null(const Vec3& v, bool ok) { return ok ? triple(v) : Json(); }
+Json excluded_lines(const std::vector<ExcludedSample>& out) {
+  Json lines = Json::array();
+  for (const auto& e : out) lines.push_back(e.line);
+  return lines;
+}
 
 struct Options {
   std::string file, modulus = "norm";
   double magnitude = 0;
-  bool json = false;
+  bool json = false, keep_outliers = false;
 };
+
+std::string outlier_warning(const std::vector<ExcludedSample>& out) {
+  std::ostringstream s;
+  s << "excluded " << out.size() << " outlier sample" << (out.size() == 1 ? "" : "s")
+    << " (line, distance from its position's median in robust scales):" << std::setprecision(3);
+  for (std::size_t i = 0; i < std::min<std::size_t>(out.size(), 8); ++i)
+    s << (i ? "," : "") << " line " << out[i].line << " (" << out[i].distance << ")";
+  if (out.size() > 8) s << " and " << out.size() - 8 << " more";
+  s << "; --keep-outliers keeps them";
+  return s.str();
+}
 
 int run(const Options& o) {
   const bool json = o.json;
@@ -115,8 +61,11 @@ int run(const Options& o) {
   const double M = o.magnitude;
   const Modulus modulus = o.modulus == "norm" ? Modulus::norm : Modulus::projection;
 
-  const auto data = read_measurements_csv(*file, modulus == Modulus::projection);
-  check_data(*file, data, modulus, M);
+  auto data = read_measurements_csv(*file, modulus == Modulus::projection);
+  std::vector<ExcludedSample> excluded;
+  if (!o.keep_outliers) excluded = exclude_outlier_samples(data);
+  if (!excluded.empty()) std::cerr << "scalcal calibrate: " << *file << ": warning: " << outlier_warning(excluded) << "\n";
+  check_calibration_data(*file, data, modulus, M);
   CalibrationOptions options;
   options.modulus = modulus;
   options.magnitude = M;
@@ -154,7 +103,8 @@ int run(const Options& o) {
         {"chi_square_p", fit ? Json(fit->p) : Json()},
         {"noise_source", r.noise_source == NoiseSource::scatter     ? "scatter"
                          : r.noise_source == NoiseSource::residuals ? "residuals"
-                                                                    : "none"}});
+                                                                    : "none"},
+        {"excluded_samples", excluded_lines(excluded)}});
   } else {
     std::cout << "scalar calibration of " << *file << " (modulus " << (modulus == Modulus::norm ? "norm" : "projection")
               << ", |I| = " << M << ")\n"
@@ -183,13 +133,13 @@ int run(const Options& o) {
 Runner setup(CLI::App& app) {
   auto o = std::make_shared<Options>();
   add_text(app, "--measurements", o->file, "FILE",
-           {"bench data: CSV with ix,iy,iz [,position] [,x,y,z]", "file path", kRequired})
-      ->required();
+           {"bench data: CSV with ix,iy,iz [,position] [,x,y,z]", "file path", kRequired});
   add_number(app, "--magnitude", o->magnitude, positive_number(),
-             {"modulus |I| of the measured vector", "the file's units", kRequired})
-      ->required();
+             {"modulus |I| of the measured vector", "the file's units", kRequired});
   add_choice(app, "--modulus", o->modulus, {"norm", "projection"},
              {"the modulus: norm (m_I, |measured|) or projection (m_II, onto the nominal direction)"});
+  add_switch(app, "--keep-outliers", o->keep_outliers,
+             "keep samples more than 10 robust scales from their position's median (excluded by default)");
   add_switch(app, "--json", o->json, "print one JSON object");
   return [o] { return run(*o); };
 }

@@ -34,8 +34,7 @@ int run(const Options& o) {
 
 Runner setup(CLI::App& app) {
   auto o = std::make_shared<Options>();
-  app.add_option("PROGRAM", o->program, "a catalogue name (scalcal catalogue) or a CSV file (x,y,z or alpha1_deg,alpha2_deg)")
-      ->required();
+  add_positional(app, "PROGRAM", o->program, "a catalogue name (scalcal catalogue) or a CSV file (x,y,z or alpha1_deg,alpha2_deg)");
   add_text(app, "--out", o->out, "FILE", {"also write the program as CSV x,y,z,alpha1_deg,alpha2_deg", "file path"});
   add_switch(app, "--json", o->json, "print one JSON object (the criteria, the program and K)");
   return [o] { return run(*o); };

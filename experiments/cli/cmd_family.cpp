@@ -92,13 +92,10 @@ std::string names() {
 
 Runner setup(CLI::App& app) {
   auto o = std::make_shared<Options>();
-  app.add_option("NAME", o->name, "the family:" + names())->required();
-  app.add_option("--param", o->params,
-                 describe({"a parameter of the family, a number or a symbol (repeatable)", "positions for "
-                           "multiplicities, degrees for a phase", "the family's own, listed above"},
-                          ""))
-      ->type_name("KEY=VALUE")
-      ->allow_extra_args(false);
+  add_positional(app, "NAME", o->name, "the family:" + names());
+  add_repeatable(app, "--param", o->params, "KEY=VALUE",
+                 {"a parameter of the family, a number or a symbol (repeatable)",
+                  "positions for multiplicities, degrees for a phase", "the family's own, listed above"});
   add_switch(app, "--json", o->json, "print one JSON object");
   return [o] { return run(*o); };
 }

@@ -80,8 +80,7 @@ int run(Options& o) {
 
 Runner setup(CLI::App& app) {
   auto o = std::make_shared<Options>();
-  add_integer(app, "--positions", o->synthesis.positions, 9, 1000, {"number of positions N", "positions", kRequired})
-      ->required();
+  add_integer(app, "--positions", o->synthesis.positions, 9, 1000, {"number of positions N", "positions", kRequired});
   add_criterion(app, o->criterion);
   add_starts(app, o->synthesis.starts);
   add_seed(app, o->synthesis.seed);

@@ -50,10 +50,8 @@ int run(const Options& o) {
 
 Runner setup(CLI::App& app) {
   auto o = std::make_shared<Options>();
-  app.add_option("PROGRAM", o->program, "a catalogue name (scalcal catalogue) or a CSV file (x,y,z or alpha1_deg,alpha2_deg)")
-      ->required();
+  add_positional(app, "PROGRAM", o->program, "a catalogue name (scalcal catalogue) or a CSV file (x,y,z or alpha1_deg,alpha2_deg)");
   add_criterion(app, o->criterion, kRequired);
-  app.get_option("--criterion")->required();
   add_integer(app, "--digits", o->digits, 1, 1000, {"significant digits of the polished value", "significant digits"});
   add_text(app, "--out", o->out, "FILE", {"write the polished program as CSV x,y,z,alpha1_deg,alpha2_deg", "file path"});
   add_switch(app, "--json", o->json, "print one JSON object");

@@ -37,9 +37,8 @@ int run(const Options& o) {
 
 Runner setup(CLI::App& app) {
   auto o = std::make_shared<Options>();
-  add_integer(app, "--positions", o->positions, 9, 100000, {"number of positions N", "positions", kRequired})
-      ->required();
-  add_integer(app, "--count", o->count, 1, 1000000000LL, {"random programs drawn", "programs", kRequired})->required();
+  add_integer(app, "--positions", o->positions, 9, 100000, {"number of positions N", "positions", kRequired});
+  add_integer(app, "--count", o->count, 1, 1000000000LL, {"random programs drawn", "programs", kRequired});
   add_seed(app, o->seed);
   add_criterion(app, o->criterion);
   add_threads(app, o->threads);

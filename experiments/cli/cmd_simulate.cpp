@@ -192,11 +192,10 @@ int run(const Options& o) {
 
 Runner setup(CLI::App& app) {
   auto o = std::make_shared<Options>();
-  add_text(app, "--program", o->program, "P", {"a catalogue name or a CSV file", "none", kRequired})->required();
-  add_integer(app, "--trials", o->trials, 2, 10000000, {"simulated meters calibrated", "trials", kRequired})->required();
+  add_text(app, "--program", o->program, "P", {"a catalogue name or a CSV file", "none", kRequired});
+  add_integer(app, "--trials", o->trials, 2, 10000000, {"simulated meters calibrated", "trials", kRequired});
   add_number(app, "--noise", o->noise, positive_number(),
-             {"noise RMS sigma of each axis of each sample", "|I| (the modulus of the measured vector)", kRequired})
-      ->required();
+             {"noise RMS sigma of each axis of each sample", "|I| (the modulus of the measured vector)", kRequired});
   add_number(app, "--bench-error", o->bench, number_in(0, 30),
              {"every true position is the nominal one tipped by this angle", "degrees"});
   add_choice(app, "--modulus", o->modulus, {"norm", "projection"},

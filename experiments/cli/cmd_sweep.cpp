@@ -115,20 +115,17 @@ int run(const Options& o) {
 
 Runner setup(CLI::App& app) {
   auto o = std::make_shared<Options>();
-  app.add_option("--positions", o->positions, describe({"N or a range A..B of N", "positions"}, o->positions))
-      ->type_name("A..B")
-      ->check(CLI::Validator(
-          [](std::string& s) -> std::string {
-            return read_range(s) ? "" : fmt::format("must be N or A..B with {} <= A <= B <= {}, got '{}'", kMinN, kMaxN, s);
-          },
-          ""));
-  app.add_option("--criteria", o->criteria, describe({"comma-separated criteria"}, o->criteria))
-      ->type_name("LIST")
-      ->check(CLI::Validator(
-          [](std::string& s) -> std::string {
-            return read_criteria(s).empty() ? "must be a comma-separated list of D, A, E, S, got '" + s + "'" : "";
-          },
-          ""));
+  add_checked_text(app, "--positions", o->positions, "A..B", {"N or a range A..B of N", "positions"},
+                   [](const std::string& s) -> std::string {
+                     return read_range(s) ? ""
+                                          : fmt::format("must be N or A..B with {} <= A <= B <= {}, got '{}'", kMinN,
+                                                        kMaxN, s);
+                   });
+  add_checked_text(app, "--criteria", o->criteria, "LIST", {"comma-separated criteria"},
+                   [](const std::string& s) -> std::string {
+                     return read_criteria(s).empty() ? "must be a comma-separated list of D, A, E, S, got '" + s + "'"
+                                                     : "";
+                   });
   add_starts(app, o->starts);
   add_seed(app, o->seed);
   add_threads(app, o->threads);

@@ -2,9 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
-#include <sstream>
 
-#include <Eigen/Eigenvalues>
 
 namespace scalcal::cli {
 
@@ -26,32 +24,6 @@ Json evaluation_json(const Evaluation& ev, const Program& program) {
   j["program"] = program_json(program);
   j["K"] = matrix_json(ev.K);
   return j;
-}
-
-std::string rank_deficiency(const Evaluation& ev) {
-  std::string s = "rank-deficient program: rank " + std::to_string(ev.rank) + " of 9";
-  if (!ev.unidentifiable.empty()) {
-    s += "; not identifiable:";
-    for (std::size_t k = 0; k < ev.unidentifiable.size(); ++k)
-      s += (k ? ", " : " ") + std::string(kParameterNames[ev.unidentifiable[k]]);
-  }
-  return s;
-}
-
-std::string ill_conditioning(const Evaluation& ev) {
-  // The eigenvector of the smallest eigenvalue of H^T H is the worst-determined combination.
-  Eigen::SelfAdjointEigenSolver<Mat9> eig(ev.information);
-  const Vec9 v = eig.eigenvectors().col(0);
-  std::ostringstream s;
-  s << "ill-conditioned program (condition " << ev.condition
-    << "): the combination poorly determined is mostly";
-  bool first = true;
-  for (int r = 0; r < kParameters; ++r)
-    if (std::abs(v(r)) > 0.3) {
-      s << (first ? " " : ", ") << kParameterNames[r];
-      first = false;
-    }
-  return s.str();
 }
 
 void print_evaluation(std::ostream& out, const std::string& name, const Evaluation& ev) {

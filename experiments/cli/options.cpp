@@ -3,6 +3,7 @@
 #include <charconv>
 #include <cmath>
 
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 namespace scalcal::cli {
@@ -30,8 +31,6 @@ bool read_number(const std::string& s, double& x) {
 
 std::string in_quotes(const std::string& s) { return "'" + s + "'"; }
 
-}  // namespace
-
 CLI::Validator integer_in(long long lo, long long hi) {
   return CLI::Validator(
       [lo, hi](std::string& s) -> std::string {
@@ -44,24 +43,17 @@ CLI::Validator integer_in(long long lo, long long hi) {
       "");
 }
 
-CLI::Validator number_in(double lo, double hi) {
+CLI::Validator number_check(NumberRange range) {
   return CLI::Validator(
-      [lo, hi](std::string& s) -> std::string {
+      [range](std::string& s) -> std::string {
         double x = 0;
-        if (!read_number(s, x) || x < lo || x > hi)
-          return fmt::format("must be a number in {}..{}, got {}", lo, hi, in_quotes(s));
-        s = fmt::format("{}", x);
-        return {};
-      },
-      "");
-}
-
-CLI::Validator positive_number() {
-  return CLI::Validator(
-      [](std::string& s) -> std::string {
-        double x = 0;
-        if (!read_number(s, x)) return "must be a positive number, got " + in_quotes(s);
-        if (!(x > 0)) return "must be positive, got " + in_quotes(s);
+        if (range.open_below && range.lo == 0) {
+          if (!read_number(s, x)) return "must be a positive number, got " + in_quotes(s);
+          if (!(x > 0)) return "must be positive, got " + in_quotes(s);
+        } else if (!read_number(s, x) || x < range.lo || x > range.hi || (range.open_below && x == range.lo)) {
+          return fmt::format("must be a number in {}{}..{}, got {}", range.open_below ? "(" : "", range.lo, range.hi,
+                             in_quotes(s));
+        }
         s = fmt::format("{}", x);
         return {};
       },
@@ -85,25 +77,70 @@ CLI::Validator one_of(const std::vector<std::string>& choices) {
       "");
 }
 
-CLI::Option* add_number(CLI::App& app, const std::string& name, double& target, const CLI::Validator& check,
+void required_if_so(CLI::Option* option, const Help& help) {
+  if (help.fallback == kRequired) option->required();
+}
+
+template <class Int>
+void add_integer_option(CLI::App& app, const std::string& name, Int& target, long long lo, long long hi,
                         const Help& help) {
-  return app.add_option(name, target, describe(help, fmt::format("{}", target)))->transform(check)->type_name("NUM");
+  required_if_so(
+      app.add_option(name, target, describe(help, std::to_string(target)))->transform(integer_in(lo, hi))->type_name("INT"),
+      help);
 }
 
-CLI::Option* add_text(CLI::App& app, const std::string& name, std::string& target, const std::string& value_name,
-                      const Help& help) {
-  return app.add_option(name, target, describe(help, target))->check(not_empty())->type_name(value_name);
+}  // namespace
+
+void add_integer(CLI::App& app, const std::string& name, int& target, long long lo, long long hi, const Help& help) {
+  add_integer_option(app, name, target, lo, hi, help);
+}
+void add_integer(CLI::App& app, const std::string& name, long long& target, long long lo, long long hi,
+                 const Help& help) {
+  add_integer_option(app, name, target, lo, hi, help);
+}
+void add_integer(CLI::App& app, const std::string& name, std::uint64_t& target, long long lo, long long hi,
+                 const Help& help) {
+  add_integer_option(app, name, target, lo, hi, help);
 }
 
-CLI::Option* add_choice(CLI::App& app, const std::string& name, std::string& target,
-                        const std::vector<std::string>& choices, const Help& help) {
+void add_number(CLI::App& app, const std::string& name, double& target, NumberRange range, const Help& help) {
+  required_if_so(app.add_option(name, target, describe(help, fmt::format("{}", target)))
+                     ->transform(number_check(range))
+                     ->type_name("NUM"),
+                 help);
+}
+
+void add_text(CLI::App& app, const std::string& name, std::string& target, const std::string& value_name,
+              const Help& help) {
+  required_if_so(app.add_option(name, target, describe(help, target))->check(not_empty())->type_name(value_name), help);
+}
+
+void add_checked_text(CLI::App& app, const std::string& name, std::string& target, const std::string& value_name,
+                      const Help& help, std::function<std::string(const std::string&)> why_bad) {
+  required_if_so(app.add_option(name, target, describe(help, target))
+                     ->type_name(value_name)
+                     ->check(CLI::Validator([why_bad](std::string& s) { return why_bad(s); }, "")),
+                 help);
+}
+
+void add_choice(CLI::App& app, const std::string& name, std::string& target, const std::vector<std::string>& choices,
+                const Help& help) {
   std::string names;
   for (const auto& c : choices) names += (names.empty() ? "" : "|") + c;
-  return app.add_option(name, target, describe(help, target))->check(one_of(choices))->type_name(names);
+  required_if_so(app.add_option(name, target, describe(help, target))->check(one_of(choices))->type_name(names), help);
 }
 
-CLI::Option* add_switch(CLI::App& app, const std::string& name, bool& target, const std::string& what) {
-  return app.add_flag(name, target, describe({what}, "off"));
+void add_switch(CLI::App& app, const std::string& name, bool& target, const std::string& what) {
+  app.add_flag(name, target, describe({what}, "off"));
+}
+
+void add_positional(CLI::App& app, const std::string& name, std::string& target, const std::string& what) {
+  app.add_option(name, target, what)->required();
+}
+
+void add_repeatable(CLI::App& app, const std::string& name, std::vector<std::string>& target,
+                    const std::string& value_name, const Help& help) {
+  app.add_option(name, target, describe(help, ""))->type_name(value_name)->allow_extra_args(false);
 }
 
 }  // namespace scalcal::cli

@@ -1,16 +1,23 @@
 // Typed options of the subcommands on top of CLI11. Each option reads its whole text strictly (a
 // decimal integer or a finite number within its range, a non-empty path, one of its choices), so a
 // bad value fails with the option's name and the reason; its help line states its unit and default.
+// Only options.cpp, synthesis_cli.cpp and main.cpp see CLI11 itself: it costs ~10 s of compile
+// time in every file that includes it.
 #pragma once
+#include <cstdint>
+#include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
-#include <CLI/CLI.hpp>
+namespace CLI {
+class App;
+}
 
 namespace scalcal::cli {
 
 // The help text of an option: what it sets, its unit ("none" when it has none) and its default
-// (empty: the value the option is bound to; kRequired for a required option).
+// (empty: the value the option is bound to; kRequired for a required option, which makes it so).
 struct Help {
   std::string what;
   std::string unit = "none";
@@ -21,28 +28,34 @@ inline constexpr const char* kRequired = "none, required";
 // "what (unit: U; default: V)"
 std::string describe(const Help& help, const std::string& bound_value);
 
-// Validators that also rewrite the text into the form CLI11 converts as meant (decimal integers:
-// CLI11 alone would read "010" as octal and "-1" as a huge unsigned number).
-CLI::Validator integer_in(long long lo, long long hi);
-CLI::Validator number_in(double lo, double hi);  // finite, lo <= x <= hi
-CLI::Validator positive_number();                // finite, x > 0
-CLI::Validator not_empty();
-CLI::Validator one_of(const std::vector<std::string>& choices);
+// The accepted values of a number option: finite, lo <= x <= hi, and x > lo when open_below.
+struct NumberRange {
+  double lo = -std::numeric_limits<double>::max(), hi = std::numeric_limits<double>::max();
+  bool open_below = false;
+};
+inline NumberRange number_in(double lo, double hi) { return {lo, hi, false}; }
+inline NumberRange positive_number() { return {0, std::numeric_limits<double>::max(), true}; }
 
-template <class Int>
-CLI::Option* add_integer(CLI::App& app, const std::string& name, Int& target, long long lo, long long hi,
-                         const Help& help) {
-  return app.add_option(name, target, describe(help, std::to_string(target)))
-      ->transform(integer_in(lo, hi))
-      ->type_name("INT");
-}
-
-CLI::Option* add_number(CLI::App& app, const std::string& name, double& target, const CLI::Validator& check,
-                        const Help& help);
-CLI::Option* add_text(CLI::App& app, const std::string& name, std::string& target, const std::string& value_name,
-                      const Help& help);
-CLI::Option* add_choice(CLI::App& app, const std::string& name, std::string& target,
-                        const std::vector<std::string>& choices, const Help& help);
-CLI::Option* add_switch(CLI::App& app, const std::string& name, bool& target, const std::string& what);
+// Integers are read as decimal text (CLI11 alone would read "010" as octal and "-1" as a huge
+// unsigned number), then range-checked.
+void add_integer(CLI::App& app, const std::string& name, int& target, long long lo, long long hi, const Help& help);
+void add_integer(CLI::App& app, const std::string& name, long long& target, long long lo, long long hi,
+                 const Help& help);
+void add_integer(CLI::App& app, const std::string& name, std::uint64_t& target, long long lo, long long hi,
+                 const Help& help);
+void add_number(CLI::App& app, const std::string& name, double& target, NumberRange range, const Help& help);
+void add_text(CLI::App& app, const std::string& name, std::string& target, const std::string& value_name,
+              const Help& help);
+// A text option with its own check: `why_bad` returns the reason the text is refused, or "".
+void add_checked_text(CLI::App& app, const std::string& name, std::string& target, const std::string& value_name,
+                      const Help& help, std::function<std::string(const std::string&)> why_bad);
+void add_choice(CLI::App& app, const std::string& name, std::string& target, const std::vector<std::string>& choices,
+                const Help& help);
+void add_switch(CLI::App& app, const std::string& name, bool& target, const std::string& what);
+// A required positional argument (e.g. PROGRAM).
+void add_positional(CLI::App& app, const std::string& name, std::string& target, const std::string& what);
+// A repeatable option, one value per use (--param KEY=VALUE --param ...).
+void add_repeatable(CLI::App& app, const std::string& name, std::vector<std::string>& target,
+                    const std::string& value_name, const Help& help);
 
 }  // namespace scalcal::cli

@@ -4,8 +4,8 @@
 #include <cstdint>
 #include <string>
 
-#include <CLI/CLI.hpp>
 
+#include "experiments/cli/options.hpp"
 #include "numeric/criteria/registry.hpp"
 
 namespace scalcal::cli {

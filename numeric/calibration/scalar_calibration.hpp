@@ -23,7 +23,8 @@ template <class Scalar>
 struct PositionSamplesTpl {
   std::vector<Vec3T<Scalar>> samples;
   std::optional<Vec3T<Scalar>> nominal;
-  int line = 0;  // first line of the position in its file, for messages
+  int line = 0;                   // first line of the position in its file, for messages
+  std::vector<int> sample_lines;  // the line of each sample (empty when not read from a file)
 
   Vec3T<Scalar> mean() const {
     Vec3T<Scalar> s = Vec3T<Scalar>::Zero();

@@ -135,6 +135,10 @@ EvaluationTpl<Scalar, Model> evaluate(const ProgramTpl<Scalar>& program) {
   return ev;
 }
 
+// The paper's model in double is evaluated everywhere (CLI, reproduce, synthesis); its SVD costs
+// about 25 s of compile time per translation unit, so it is instantiated once, in evaluation.cpp.
+extern template EvaluationTpl<double, Paper9Model> evaluate<Paper9Model, double>(const ProgramTpl<double>&);
+
 // The normalised value of one registered criterion (+infinity when rank < P).
 template <class Model = Paper9Model, class Scalar>
 Scalar criterion_value(const ProgramTpl<Scalar>& program, CriterionKind c) {

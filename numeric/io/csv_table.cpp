@@ -7,7 +7,9 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
+#include <fcntl.h>
+#include <poll.h>
+#include <unistd.h>
 #include <sstream>
 #include <string_view>
 
@@ -140,24 +142,71 @@ CsvTable parse_csv(const std::string& input, const std::string& name) {
   return table;
 }
 
+namespace {
+
+// A named pipe with no writer blocks open() and read() forever; it is opened without blocking and
+// given kPipeWaitSeconds to deliver its first byte (or its end). Process substitution, <(...),
+// and `... | scalcal evaluate /dev/stdin` have a writer and deliver at once.
+constexpr int kPipeWaitSeconds = 10;
+
+class InputFile {
+ public:
+  explicit InputFile(const std::string& path) : path_(path) {
+    std::error_code ec;
+    const auto status = std::filesystem::status(path, ec);
+    if (std::filesystem::is_directory(status)) throw InputError(path, 0, "is a directory, not a CSV file");
+    const bool pipe = std::filesystem::is_fifo(status) || std::filesystem::is_socket(status);
+    fd_ = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | (pipe ? O_NONBLOCK : 0));
+    if (fd_ < 0) throw InputError(path, 0, std::string("cannot open file: ") + std::strerror(errno));
+    if (pipe) {
+      pollfd p{fd_, POLLIN, 0};
+      int ready;
+      do ready = ::poll(&p, 1, kPipeWaitSeconds * 1000);
+      while (ready < 0 && errno == EINTR);
+      if (ready == 0) {
+        ::close(fd_);
+        throw InputError(path, 0,
+                         "is a named pipe that gave no data within " + std::to_string(kPipeWaitSeconds) +
+                             " s (no program is writing to it?)");
+      }
+      ::fcntl(fd_, F_SETFL, ::fcntl(fd_, F_GETFL) & ~O_NONBLOCK);
+    }
+  }
+  InputFile(const InputFile&) = delete;
+  InputFile& operator=(const InputFile&) = delete;
+  ~InputFile() { ::close(fd_); }
+
+  // Up to `size` bytes; 0 at the end.
+  std::size_t read(char* data, std::size_t size) {
+    for (;;) {
+      const ssize_t n = ::read(fd_, data, size);
+      if (n >= 0) return static_cast<std::size_t>(n);
+      if (errno != EINTR) throw InputError(path_, 0, std::string("read error: ") + std::strerror(errno));
+    }
+  }
+
+ private:
+  std::string path_;
+  int fd_ = -1;
+};
+
+}  // namespace
+
 // Reads at most the size limit plus one byte, so a device or pipe that never ends (/dev/zero,
 // /dev/urandom) or a huge file costs no more than the limit; a directory is refused by name.
 CsvTable read_csv(const std::string& path) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw InputError(path, 0, "is a directory, not a CSV file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, 0, std::string("cannot open file: ") + std::strerror(errno));
+  InputFile in(path);
   constexpr std::size_t limit = CsvLimits::max_file_bytes;
   std::string text;
   std::array<char, 1 << 16> chunk;
-  while (text.size() <= limit && in) {
-    in.read(chunk.data(), chunk.size());
-    const std::string_view piece(chunk.data(), static_cast<std::size_t>(in.gcount()));
+  while (text.size() <= limit) {
+    const std::size_t got = in.read(chunk.data(), chunk.size());
+    if (got == 0) break;
+    const std::string_view piece(chunk.data(), got);
     // Binary content is refused as soon as it is seen: /dev/urandom gives no end and no text.
     if (looks_binary(piece)) throw InputError(path, 0, binary_reason(text.empty() ? piece : std::string_view(text)));
     text.append(piece.substr(0, limit + 1 - text.size()));
   }
-  if (in.bad()) throw InputError(path, 0, "read error");
   return parse_csv(text, path);
 }
 

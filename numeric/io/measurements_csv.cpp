@@ -44,6 +44,7 @@ std::vector<PositionSamples> measurements_from_table(const CsvTable& table, bool
     PositionSamples& pos = out[k];
     if (pos.samples.empty()) pos.line = row.line;
     pos.samples.push_back(Vec3(v[ix], v[iy], v[iz]));
+    pos.sample_lines.push_back(row.line);
     if (cx >= 0) {
       const Vec3 n(v[cx], v[cy], v[cz]);
       if (n.norm() == 0.0) throw InputError(table.file, row.line, "nominal direction x,y,z is the zero vector");

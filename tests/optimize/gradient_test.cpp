@@ -21,7 +21,9 @@ TEST_P(Gradients, MatchCentralDifferences) {
   std::vector<double> grad(static_cast<std::size_t>(nv), 0.0), jac(static_cast<std::size_t>(m * nv), 0.0),
       g(static_cast<std::size_t>(m));
   ASSERT_TRUE(problem->objective(x.data(), f, grad.data()));
-  if (m > 0) ASSERT_TRUE(problem->constraint_values(x.data(), g.data(), jac.data()));
+  if (m > 0) {
+    ASSERT_TRUE(problem->constraint_values(x.data(), g.data(), jac.data()));
+  }
   const double h = 1e-6;
   for (int j = 0; j < nv; ++j) {
     std::vector<double> xp = x, xm = x;

@@ -61,7 +61,9 @@ TEST(NewModel, TheMultistartRunsOnIt) {
   const SynthesisResult r = (synthesize<DCriterion, Bias3Model>)(o);
   EXPECT_NEAR(r.value, 27.0, 1e-8);
   EXPECT_EQ(r.hits, 3);
-  EXPECT_THROW((synthesize<DCriterion, Bias3Model>)(SynthesisOptions{2}), std::invalid_argument);  // N < P
+  SynthesisOptions too_few;
+  too_few.positions = 2;  // N < P
+  EXPECT_THROW((synthesize<DCriterion, Bias3Model>)(too_few), std::invalid_argument);
 }
 
 TEST(NewModel, ThePolishGivesTheLimitsTo40Digits) {

@@ -15,7 +15,10 @@
 #include <functional>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
+
+#include <sys/stat.h>
 
 #include "numeric/program/program.hpp"
 #include "tests/common/run_cli.hpp"
@@ -31,6 +34,10 @@ struct Case {
   Expect expect;
   std::vector<std::string> needles;         // words the message (error, warn, write) must contain
   std::function<std::string()> reference;   // for `same`: the arguments of the clean input
+
+  Case(std::string n, std::function<std::string()> a, Expect e, std::vector<std::string> words,
+       std::function<std::string()> clean = {})
+      : name(std::move(n)), args(std::move(a)), expect(e), needles(std::move(words)), reference(std::move(clean)) {}
 };
 
 // run_cli with a wall-clock limit (a hang is a failure, not a stuck test) and a memory limit
@@ -67,7 +74,8 @@ std::string program_text(const Program& p, const std::string& eol = "\n", bool b
 // deterministic "noise" of 1e-3 |I|, |I| = 1.
 // With `mislabel`, the samples of the position opposite the first carry the first one's id and
 // the nominal directions are left out (with them, the reader already refuses the file).
-std::string bench_text(const std::string& eol = "\n", bool bom = false, bool mislabel = false) {
+// With `outlier` >= 0, that sample (0-based, line outlier + 2) is ten times too large.
+std::string bench_text(const std::string& eol = "\n", bool bom = false, bool mislabel = false, int outlier = -1) {
   std::ostringstream s;
   s.precision(17);
   if (bom) s << "\xEF\xBB\xBF";
@@ -78,8 +86,9 @@ std::string bench_text(const std::string& eol = "\n", bool bom = false, bool mis
     const Vec3 e = p.positions[i];
     const int id = mislabel && (e + p.positions[0]).norm() < 1e-9 ? 0 : i;
     for (int j = 0; j < 3; ++j, ++k) {
-      const Vec3 m(1.002 * e(0) + 0.01 + 1e-3 * std::sin(1.3 * k), 0.999 * e(1) - 0.02 + 1e-3 * std::sin(2.1 * k + 1),
-                   1.001 * e(2) + 0.005 + 1e-3 * std::sin(0.7 * k + 2) + 0.001 * e(0));
+      Vec3 m(1.002 * e(0) + 0.01 + 1e-3 * std::sin(1.3 * k), 0.999 * e(1) - 0.02 + 1e-3 * std::sin(2.1 * k + 1),
+             1.001 * e(2) + 0.005 + 1e-3 * std::sin(0.7 * k + 2) + 0.001 * e(0));
+      if (k == outlier) m *= 10.0;
       s << id + 1 << ',' << m(0) << ',' << m(1) << ',' << m(2);
       if (!mislabel) s << ',' << e(0) << ',' << e(1) << ',' << e(2);
       s << eol;
@@ -122,6 +131,12 @@ std::vector<Case> cases() {
       {"NulByte", [] { return "evaluate " + file("nul.csv", std::string("x,y,z\n1,0,\0\n", 12)); }, E::error,
        {"nul.csv", "not a text file"}},
       {"EmptyFile", [] { return "evaluate " + file("empty.csv", ""); }, E::error, {"empty.csv", "empty file"}},
+      {"FifoNoWriter", [] {
+         const auto path = (scratch_dir() / "nowriter.fifo").string();
+         ::unlink(path.c_str());
+         if (::mkfifo(path.c_str(), 0600) != 0) return std::string("evaluate /cannot-make-a-fifo");
+         return "evaluate " + quote(path);
+       }, E::error, {"nowriter.fifo", "named pipe that gave no data"}},
       // Limits.
       {"WideHeader", [] { return "evaluate " + file("wide.csv", columns(30000) + "1\n"); }, E::error,
        {"wide.csv:1:", "line longer than the limit of 4096"}},
@@ -196,6 +211,12 @@ std::vector<Case> cases() {
        E::error, {"b.csv", "--magnitude 9.81"}},
       {"ModulusUnknown", [] { return "calibrate --magnitude 1 --modulus foo --measurements x.csv"; }, E::error,
        {"--modulus"}},
+      {"SweepPositionsGarbage", [] { return std::string("sweep --positions 9abc --criteria D"); }, E::error,
+       {"--positions", "A..B"}},
+      {"SweepRangeGarbage", [] { return std::string("sweep --positions 9..10xyz --criteria D"); }, E::error,
+       {"--positions", "A..B"}},
+      {"SweepCriteriaEmpty", [] { return std::string("sweep --positions 12 --criteria ''"); }, E::error,
+       {"--criteria", "D, A, E, S"}},
       {"TrialsOne", [] { return kSim + "--trials 1 --noise 1e-3"; }, E::error, {"--trials"}},
       {"NoiseTen", [] { return kSim + "--noise 10"; }, E::error, {"option --noise", "meaningless"}},
       {"NoiseHuge", [] { return kSim + "--noise 1e300"; }, E::error, {"option --noise", "meaningless"}},
@@ -216,6 +237,9 @@ std::vector<Case> cases() {
       {"MislabelledPositions", [] {
          return "calibrate --magnitude 1 --measurements " + file("mislabel.csv", bench_text("\n", false, true));
        }, E::warn, {"mislabel.csv", "the fit contradicts its own noise estimate", "line 2 ("}},
+      {"OneSampleTenTimesOff", [] {
+         return "calibrate --magnitude 1 --measurements " + file("outlier.csv", bench_text("\n", false, false, 7));
+       }, E::warn, {"outlier.csv", "excluded 1 outlier sample", "line 9 ("}},
       // Spreadsheet exports read exactly as the clean file.
       {"ProgramBomCrlf", [] { return "evaluate --json " + file("crlf.csv", program_text(Program::classic18(), "\r\n", true)); },
        E::same, {}, [] { return "evaluate --json " + file("lf.csv", program_text(Program::classic18())); }},
@@ -225,6 +249,10 @@ std::vector<Case> cases() {
        E::same, {}, [] { return "calibrate --json --magnitude 1 --measurements " + file("blf.csv", bench_text()); }},
       // Output that cannot be written.
       {"OutFull", [] { return std::string("evaluate classic18 --out /dev/full"); }, E::write, {"/dev/full"}},
+      {"OptimizeOutFull", [] { return std::string("optimize --positions 12 --starts 2 --out /dev/full"); }, E::write,
+       {"/dev/full"}},
+      {"SweepOutFull", [] { return std::string("sweep --positions 12 --criteria D --starts 2 --out /dev/full"); },
+       E::write, {"/dev/full"}},
       {"OutNoDirectory", [] { return std::string("evaluate classic18 --out /nonexistent/p.csv"); }, E::write,
        {"/nonexistent/p.csv"}},
   };
