@@ -58,9 +58,6 @@ struct Context {
   Progress progress;
   Report report;
 
-  // Whether numeric/synthesis.cpp (the optimiser, issue 3) was in the tree at build time.
-  bool optimiser = false;
-  std::string optimiser_note;  // why optimised curves are missing, when they are
   std::vector<std::string> optimiser_failures;  // optimised programs rejected by scalcal's own evaluation
 
   std::vector<Entry> uniform, rotation, jigs, paper, analytic9;  // analytic classes and the paper's tables

@@ -15,7 +15,7 @@ void figure_sphere(Context& ctx) {
   const Entry* p12 = ctx.optimum(CriterionKind::D, 12);
   const Entry* p18 = ctx.optimum(CriterionKind::D, 18);
   if (!p12 || !p18) {
-    r.missing("this figure needs the optimised N = 12 and 18 programs: " + ctx.optimiser_note);
+    r.missing("this figure needs the optimised N = 12 and 18 programs (rejected or not computed)");
     return;
   }
   CsvWriter csv(ctx.file("fig11.csv"), {"N", "i", "x", "y", "z"});

@@ -62,7 +62,7 @@ void figures_4_5_6(Context& ctx) {
   body += "set label 1 'limit 61509375/4' at 45, LIMIT offset 0,-0.9 right tc rgb '" + std::string(plots::style::limit) +
           "'\n";
   std::string plot = class_plot(6, ctx, true);
-  if (ctx.optimiser) {
+  {
     plot.pop_back();
     plot += ", \\\n     'fig4_programs.csv' skip 1 using 4:(strcol(13) eq '1' ? $6 : NaN) with points pt 6 ps 3.2 lw 2 "
             "lc rgb '" + std::string(plots::style::limit) + "' title 'optimum misses the limit', \\\n"
@@ -80,8 +80,7 @@ void figures_4_5_6(Context& ctx) {
               "[fig4_random.csv](fig4_random.csv) (the best of " + std::to_string(ctx.random_count) +
               " programs uniform on the sphere per N; `scalcal random --positions N --count " +
               std::to_string(ctx.random_count) + " --seed " + std::to_string(ctx.options.seed) + "` regenerates each).");
-  if (!ctx.optimiser) r.missing("optimised D-criterion programs (triangles) and the N that miss the limit: " + ctx.optimiser_note);
-  if (ctx.optimiser) {
+  {
     std::vector<std::vector<std::string>> rows;
     std::string missed;
     for (int n : ctx.optimised_sizes(CriterionKind::D)) {
@@ -102,8 +101,6 @@ void figures_4_5_6(Context& ctx) {
             (missed.empty() ? std::string("none") : missed) + " (of N = " + std::to_string(sizes.front()) + ".." +
                 std::to_string(sizes.back()) + " optimised here, " + std::to_string(sizes.size()) + " sizes)",
             missed == expected ? "same on these N" : "differs: paper's set on these N is {" + expected + "}");
-  } else {
-    r.claim("N whose optimum misses the limit (Fig. 6)", "9, 10, 11, 13, 15", "MISSING (no optimiser)", "n/a");
   }
 }
 

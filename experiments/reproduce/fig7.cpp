@@ -44,7 +44,6 @@ void figure_7(Context& ctx) {
   r.paragraph("Data: [fig4_programs.csv](fig4_programs.csv). theta_bias over the " + std::to_string(count) +
               " programs with N > 15 drawn here (and the paper's Tables 1-3): from " + decimal(lo, 5) + " to " + decimal(hi, 5) +
               " (sqrt 3 = " + decimal(std::sqrt(3.0), 5) + ").");
-  if (!ctx.optimiser) r.missing("the optimised programs' thetas: " + ctx.optimiser_note);
   r.claim("theta_bias nearly independent of the program for N > 15 (Fig. 7)", "stated, no number",
           "range " + decimal(lo, 4) + " .. " + decimal(hi, 4) + " over " + std::to_string(count) + " programs",
           "spread " + decimal(100 * (hi - lo) / lo, 3) + " %");

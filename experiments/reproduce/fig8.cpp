@@ -68,7 +68,6 @@ void figure_8(Context& ctx) {
   r.figure("fig8", "Fig. 8: θ_bias, θ_scale, θ_nonorth for N = 18 (a) and N = 9 (b), by decreasing θ_nonorth");
   r.paragraph("Data: [fig8a.csv](fig8a.csv), [fig8b.csv](fig8b.csv). \"paper Tab.k\" are the paper's own Table 1-3 "
               "programs, evaluated by scalcal from the printed angles (0.1° resolution).");
-  if (!ctx.optimiser) r.missing("scalcal's optimised D, A, E, S programs for N = 18 and N = 9: " + ctx.optimiser_note);
 }
 
 }  // namespace scalcal::reproduce

@@ -75,7 +75,6 @@ void figure_9(Context& ctx) {
                 "non-orthogonality parameter of largest variance; its half-extents along the axes are theta_scale and "
                 "theta_nonorth. D shrinks the area, A the sum of the variances, E the longest half-axis, S the larger "
                 "of the two variances. Data: [fig9.csv](fig9.csv), covariances in [fig9_cov.csv](fig9_cov.csv).");
-  if (!ctx.optimiser) rep.missing("scalcal's optimised N = 18 ellipses (solid): " + ctx.optimiser_note);
 }
 
 }  // namespace scalcal::reproduce

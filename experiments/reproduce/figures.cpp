@@ -48,10 +48,9 @@ std::string class_plot(int column, const Context& ctx, bool with_limit) {
       series("strcol(1) eq 'rotation'", column, std::string("with points pt 3 ps 1.8 lw 2 lc rgb '") + rotation + "'",
              "rotation about each axis [12]"),
   };
-  if (ctx.optimiser)
-    parts.push_back(series("strcol(1) eq 'optimised'", column,
-                           std::string("with points pt 9 ps 1.5 lc rgb '") + optimised + "'",
-                           "optimised, D-criterion (scalcal)"));
+  parts.push_back(series("strcol(1) eq 'optimised'", column,
+                         std::string("with points pt 9 ps 1.5 lc rgb '") + optimised + "'",
+                         "optimised, D-criterion (scalcal)"));
   parts.push_back(series("strcol(2) eq 'dodecahedral-12'", column,
                          std::string("with points pt 7 ps 2.2 lc rgb '") + jig + "'", "dodecahedral jig (12)"));
   parts.push_back(series("strcol(2) eq 'icosahedral-20'", column,

@@ -25,7 +25,6 @@ std::string preamble(const Context& ctx) {
   if (options.quick)
     p += "\n> **--quick run:** small sweeps (2-4 optimiser starts, few N); numbers "
          "are indicative only. Run `scalcal reproduce` without --quick for the full results.\n";
-  if (!ctx.optimiser) p += "\n> **MISSING:** " + ctx.optimiser_note + "\n";
   if (!ctx.optimiser_failures.empty()) {
     p += "\n> **MISSING (optimiser failures):** these optimised programs were rejected because scalcal's own "
          "evaluation contradicts them (a near-singular or non-positive-definite information matrix); they "

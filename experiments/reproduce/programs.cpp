@@ -60,7 +60,6 @@ void compute_random(Context& ctx) {
 }
 
 void compute_optimised(Context& ctx) {
-  ctx.optimiser = true;
   const auto t0 = std::chrono::steady_clock::now();
   // synthesize() runs its starts in worker processes (Ipopt's MUMPS is not thread-safe), on all
   // cores; the plan is sized for the 10-minute budget. starts = 0 is synthesize()'s own default
@@ -111,7 +110,6 @@ void compute_optimised(Context& ctx) {
       // finite criterion. Anything else is reported as a failed optimisation, never plotted.
       const double v = e.ev.value(plan.criterion);
       if (!e.ev.full_rank() || !std::isfinite(v) || v <= 0 || e.ev.lambda_max_K <= 0) {
-        ctx.optimiser_note = "the optimiser's result was rejected (see the list of optimiser failures at the top).";
         ctx.optimiser_failures.push_back(std::string(criterion_name(plan.criterion)) + ", N = " + std::to_string(n) +
                                          ": synthesize() returned value " + decimal(r.value) +
                                          "; scalcal's evaluation of its program gives " +

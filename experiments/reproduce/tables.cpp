@@ -61,7 +61,7 @@ void tables_1_2_3(Context& ctx) {
               decimal(value(paper.ev, c), 7), decimal(value(ours->ev, c), 7) + " (scalcal optimum)",
               pct(value(ours->ev, c), value(paper.ev, c)));
     else {
-      r.missing("scalcal's " + cn + "-optimal N = 18 program: " + ctx.optimiser_note);
+      r.missing("scalcal's " + cn + "-optimal N = 18 program: the optimiser's result was rejected");
       r.claim("Table " + std::to_string(t + 1) + " program, " + cn + " value (evaluated from the printed angles)",
               decimal(value(paper.ev, c), 7), "MISSING (no optimiser)", "n/a");
     }

@@ -89,18 +89,6 @@ auto visit_criterion(CriterionKind c, F&& f) {
   return detail::visit(c, std::forward<F>(f), RegisteredCriteria{});
 }
 
-// f(C{}) as above for the criteria whose form is Form only (a solver compiles each form in its own
-// translation unit, so that they build in parallel); std::logic_error for a criterion of another form.
-template <class R, class Form, class F>
-R visit_criterion_of_form(CriterionKind c, F&& f) {
-  return visit_criterion(c, [&](auto C) -> R {
-    if constexpr (std::is_same_v<typename decltype(C)::Form, Form>)
-      return f(C);
-    else
-      throw std::logic_error("criterion " + std::string(decltype(C)::name) + " dispatched to another form's solver");
-  });
-}
-
 inline std::string_view criterion_name(CriterionKind c) {
   return visit_criterion(c, [](auto C) { return std::string_view(decltype(C)::name); });
 }

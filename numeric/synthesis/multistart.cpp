@@ -1,14 +1,13 @@
-// The runtime multistart: the criterion's form picks the translation unit that instantiates it.
+// The runtime multistart: every registered criterion's template instantiated once, here, for the
+// paper's model.
 #include "numeric/synthesis/multistart.hpp"
 
-#include "numeric/synthesis/synthesize_by_form.hpp"
+#include "numeric/synthesis/synthesize.hpp"
 
 namespace scalcal {
 
 SynthesisResult synthesize(const SynthesisOptions& options) {
-  return visit_criterion(options.criterion, [&](auto C) {
-    return synthesis_detail::synthesize_of_form(typename decltype(C)::Form{}, options);
-  });
+  return visit_criterion(options.criterion, [&](auto C) { return synthesize<decltype(C), Paper9Model>(options); });
 }
 
 }  // namespace scalcal
