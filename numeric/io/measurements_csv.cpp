@@ -47,8 +47,10 @@ std::vector<PositionSamples> measurements_from_table(const CsvTable& table, bool
     pos.sample_lines.push_back(row.line);
     if (cx >= 0) {
       const Vec3 n(v[cx], v[cy], v[cz]);
-      if (n.norm() == 0.0) throw InputError(table.file, row.line, "nominal direction x,y,z is the zero vector");
-      const Vec3 u = n.normalized();
+      const double length = n.stableNorm();  // no overflow at 1e300, no underflow at 1e-300
+      if (length == 0.0) throw InputError(table.file, row.line, "nominal direction x,y,z is the zero vector");
+      if (!std::isfinite(length)) throw InputError(table.file, row.line, "nominal direction x,y,z too large to normalise");
+      const Vec3 u = n / length;
       if (!pos.nominal) {
         pos.nominal = u;
       } else if ((*pos.nominal - u).norm() > 1e-9) {

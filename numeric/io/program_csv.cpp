@@ -23,7 +23,7 @@ Program program_from_table(const CsvTable& t) {
     Vec3 eta;
     if (cartesian) {
       eta = Vec3(row.values[x], row.values[y], row.values[z]);
-      const double n = eta.norm();
+      const double n = eta.stableNorm();  // no overflow at 1e200, no underflow at 1e-200
       if (!(n > 0.0)) throw InputError(t.file, row.line, "zero vector: a position needs a direction");
       if (!std::isfinite(n)) throw InputError(t.file, row.line, "vector too large to normalise");
       eta /= n;

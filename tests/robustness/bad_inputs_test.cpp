@@ -83,7 +83,10 @@ std::string program_text(const Program& p, const std::string& eol = "\n", bool b
 // With `mislabel`, the samples of the position opposite the first carry the first one's id and
 // the nominal directions are left out (with them, the reader already refuses the file).
 // With `outlier` >= 0, that sample (0-based, line outlier + 2) is ten times too large.
-std::string bench_text(const std::string& eol = "\n", bool bom = false, bool mislabel = false, int outlier = -1) {
+// `nominal_scale` multiplies the nominal directions: the reader must normalise 2^990 (1e298, whose
+// square overflows) and 2^-990 (whose square underflows) alike; powers of two keep the text exact.
+std::string bench_text(const std::string& eol = "\n", bool bom = false, bool mislabel = false, int outlier = -1,
+                       double nominal_scale = 1) {
   std::ostringstream s;
   s.precision(17);
   if (bom) s << "\xEF\xBB\xBF";
@@ -98,7 +101,7 @@ std::string bench_text(const std::string& eol = "\n", bool bom = false, bool mis
              1.001 * e(2) + 0.005 + 1e-3 * std::sin(0.7 * k + 2) + 0.001 * e(0));
       if (k == outlier) m *= 10.0;
       s << id + 1 << ',' << m(0) << ',' << m(1) << ',' << m(2);
-      if (!mislabel) s << ',' << e(0) << ',' << e(1) << ',' << e(2);
+      if (!mislabel) s << ',' << nominal_scale * e(0) << ',' << nominal_scale * e(1) << ',' << nominal_scale * e(2);
       s << eol;
     }
   }
@@ -255,6 +258,19 @@ std::vector<Case> cases() {
        E::same, {}, [] { return "evaluate --json " + file("lf.csv", program_text(Program::classic18())); }},
       {"MeasurementsBomCrlf", [] { return "calibrate --json --magnitude 1 --measurements " + file("bcrlf.csv", bench_text("\r\n", true)); },
        E::same, {}, [] { return "calibrate --json --magnitude 1 --measurements " + file("blf.csv", bench_text()); }},
+      {"NominalHuge", [] {
+         return "calibrate --json --modulus projection --magnitude 1 --measurements " +
+                file("n300.csv", bench_text("\n", false, false, -1, std::ldexp(1.0, 990)));
+       }, E::same, {}, [] { return "calibrate --json --modulus projection --magnitude 1 --measurements " + file("n1.csv", bench_text()); }},
+      {"NominalTiny", [] {
+         return "calibrate --json --modulus projection --magnitude 1 --measurements " +
+                file("nm300.csv", bench_text("\n", false, false, -1, std::ldexp(1.0, -990)));
+       }, E::same, {}, [] { return "calibrate --json --modulus projection --magnitude 1 --measurements " + file("n1.csv", bench_text()); }},
+      {"ProgramHuge", [] {
+         Program p = Program::classic18();
+         for (auto& e : p.positions) e *= std::ldexp(1.0, 990);
+         return "evaluate --json " + file("p300.csv", program_text(p));
+       }, E::same, {}, [] { return "evaluate --json " + file("lf.csv", program_text(Program::classic18())); }},
       // Output that cannot be written.
       {"OutFull", [] { return std::string("evaluate classic18 --out /dev/full"); }, E::write, {"/dev/full"}},
       {"OptimizeOutFull", [] { return std::string("optimize --positions 12 --starts 2 --out /dev/full"); }, E::write,
