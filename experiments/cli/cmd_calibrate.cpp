@@ -44,17 +44,6 @@ struct Options {
   bool json = false, keep_outliers = false;
 };
 
-std::string outlier_warning(const std::vector<ExcludedSample>& out) {
-  std::ostringstream s;
-  s << "excluded " << out.size() << " outlier sample" << (out.size() == 1 ? "" : "s")
-    << " (line, distance from its position's median in robust scales):" << std::setprecision(3);
-  for (std::size_t i = 0; i < std::min<std::size_t>(out.size(), 8); ++i)
-    s << (i ? "," : "") << " line " << out[i].line << " (" << out[i].distance << ")";
-  if (out.size() > 8) s << " and " << out.size() - 8 << " more";
-  s << "; --keep-outliers keeps them";
-  return s.str();
-}
-
 int run(const Options& o) {
   const bool json = o.json;
   const std::string* file = &o.file;

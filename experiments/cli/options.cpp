@@ -47,12 +47,11 @@ CLI::Validator number_check(NumberRange range) {
   return CLI::Validator(
       [range](std::string& s) -> std::string {
         double x = 0;
-        if (range.open_below && range.lo == 0) {
+        if (range.positive) {
           if (!read_number(s, x)) return "must be a positive number, got " + in_quotes(s);
           if (!(x > 0)) return "must be positive, got " + in_quotes(s);
-        } else if (!read_number(s, x) || x < range.lo || x > range.hi || (range.open_below && x == range.lo)) {
-          return fmt::format("must be a number in {}{}..{}, got {}", range.open_below ? "(" : "", range.lo, range.hi,
-                             in_quotes(s));
+        } else if (!read_number(s, x) || x < range.lo || x > range.hi) {
+          return fmt::format("must be a number in {}..{}, got {}", range.lo, range.hi, in_quotes(s));
         }
         s = fmt::format("{}", x);
         return {};

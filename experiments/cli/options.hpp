@@ -28,10 +28,10 @@ inline constexpr const char* kRequired = "none, required";
 // "what (unit: U; default: V)"
 std::string describe(const Help& help, const std::string& bound_value);
 
-// The accepted values of a number option: finite, lo <= x <= hi, and x > lo when open_below.
+// The accepted values of a number option: finite and x > 0 (positive), or finite and lo <= x <= hi.
 struct NumberRange {
   double lo = -std::numeric_limits<double>::max(), hi = std::numeric_limits<double>::max();
-  bool open_below = false;
+  bool positive = false;
 };
 inline NumberRange number_in(double lo, double hi) { return {lo, hi, false}; }
 inline NumberRange positive_number() { return {0, std::numeric_limits<double>::max(), true}; }

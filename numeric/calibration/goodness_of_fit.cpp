@@ -7,6 +7,8 @@
 
 #include <boost/math/distributions/chi_squared.hpp>
 
+#include "numeric/calibration/line_list.hpp"
+
 namespace scalcal {
 
 std::optional<GoodnessOfFit> goodness_of_fit(const std::vector<PositionSamples>& data, const CalibrationResult& r,
@@ -35,12 +37,8 @@ std::string fit_warning(const GoodnessOfFit& g) {
   if (g.disagreeing.empty()) {
     s << "no single position stands out (model misfit?)";
   } else {
-    s << "positions that disagree (first line, |residual| in standard errors):";
-    for (std::size_t i = 0; i < std::min<std::size_t>(g.disagreeing.size(), 8); ++i)
-      s << (i ? "," : "") << " line " << g.disagreeing[i].second << " (" << std::setprecision(3)
-        << g.disagreeing[i].first << ")";
-    if (g.disagreeing.size() > 8) s << " and " << g.disagreeing.size() - 8 << " more";
-    s << " (mislabelled positions or outliers?)";
+    s << "positions that disagree (first line, |residual| in standard errors):" << line_list(g.disagreeing)
+      << " (mislabelled positions or outliers?)";
   }
   return s.str();
 }

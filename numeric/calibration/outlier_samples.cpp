@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "numeric/calibration/line_list.hpp"
+
 namespace scalcal {
 namespace {
 
@@ -67,6 +69,14 @@ std::vector<ExcludedSample> exclude_outlier_samples(std::vector<PositionSamples>
   }
   std::sort(out.begin(), out.end(), [](const auto& a, const auto& b) { return a.distance > b.distance; });
   return out;
+}
+
+std::string outlier_warning(const std::vector<ExcludedSample>& excluded) {
+  std::vector<std::pair<double, int>> worst;
+  for (const auto& e : excluded) worst.emplace_back(e.distance, e.line);
+  return "excluded " + std::to_string(excluded.size()) + " outlier sample" + (excluded.size() == 1 ? "" : "s") +
+         " (line, distance from its position's median in robust scales):" + line_list(worst) +
+         "; --keep-outliers keeps them";
 }
 
 }  // namespace scalcal

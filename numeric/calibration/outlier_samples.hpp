@@ -2,6 +2,7 @@
 // One sample 10x off moves its position's mean far outside the linearised model and stops the
 // iteration; the median of the position is not moved by it, so samples are judged against it.
 #pragma once
+#include <string>
 #include <vector>
 
 #include "numeric/calibration/scalar_calibration.hpp"
@@ -25,5 +26,8 @@ inline constexpr double kOutlierScales = 10;
 // goodness-of-fit test is the right judge of it.
 std::vector<ExcludedSample> exclude_outlier_samples(std::vector<PositionSamples>& data,
                                                     double scales = kOutlierScales);
+
+// "excluded 2 outlier samples (line, distance ...): line 9 (4.1e+03), line 40 (12.5); --keep-outliers keeps them"
+std::string outlier_warning(const std::vector<ExcludedSample>& excluded);
 
 }  // namespace scalcal
