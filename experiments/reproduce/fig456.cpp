@@ -62,12 +62,10 @@ void figures_4_5_6(Context& ctx) {
   body += "set label 1 'limit 61509375/4' at 45, LIMIT offset 0,-0.9 right tc rgb '" + std::string(plots::style::limit) +
           "'\n";
   std::string plot = class_plot(6, ctx, true);
-  {
-    plot.pop_back();
-    plot += ", \\\n     'fig4_programs.csv' skip 1 using 4:(strcol(13) eq '1' ? $6 : NaN) with points pt 6 ps 3.2 lw 2 "
-            "lc rgb '" + std::string(plots::style::limit) + "' title 'optimum misses the limit', \\\n"
-            "     '' skip 1 using 4:(strcol(13) eq '1' ? $6 : NaN):(sprintf('%d', $4)) with labels offset 0,1.6 notitle\n";
-  }
+  plot.pop_back();
+  plot += ", \\\n     'fig4_programs.csv' skip 1 using 4:(strcol(13) eq '1' ? $6 : NaN) with points pt 6 ps 3.2 lw 2 "
+          "lc rgb '" + std::string(plots::style::limit) + "' title 'optimum misses the limit', \\\n"
+          "     '' skip 1 using 4:(strcol(13) eq '1' ? $6 : NaN):(sprintf('%d', $4)) with labels offset 0,1.6 notitle\n";
   render_figure(ctx, "fig6", "lower part of N^9 det K with the analytic limit (the paper's Fig. 6)", body + plot, 1200,
                 900);
 
@@ -80,28 +78,26 @@ void figures_4_5_6(Context& ctx) {
               "[fig4_random.csv](fig4_random.csv) (the best of " + std::to_string(ctx.random_count) +
               " programs uniform on the sphere per N; `scalcal random --positions N --count " +
               std::to_string(ctx.random_count) + " --seed " + std::to_string(ctx.options.seed) + "` regenerates each).");
-  {
-    std::vector<std::vector<std::string>> rows;
-    std::string missed;
-    for (int n : ctx.optimised_sizes(CriterionKind::D)) {
-      const Entry& e = *ctx.optimum(CriterionKind::D, n);
-      const bool misses = e.ev.D > limit * (1 + kLimitTolerance);
-      if (misses) missed += (missed.empty() ? "" : ", ") + std::to_string(n);
-      rows.push_back({std::to_string(n), decimal(e.ev.D, 8), decimal(e.ev.D / limit - 1, 3), misses ? "misses" : "reaches",
-                      std::to_string(e.hits) + "/" + std::to_string(e.starts), decimal(e.seconds, 3)});
-    }
-    r.paragraph("The optimised D-criterion programs (scalcal's multistart; `hits` = starts that reached the best value):");
-    r.table({"N", "N^9 det K", "relative excess over the limit", "limit", "hits/starts", "seconds"}, rows);
-    // Compare on the N this run optimised only.
-    std::string expected;
-    for (int n : ctx.optimised_sizes(CriterionKind::D))
-      if (n == 9 || n == 10 || n == 11 || n == 13 || n == 15) expected += (expected.empty() ? "" : ", ") + std::to_string(n);
-    const auto sizes = ctx.optimised_sizes(CriterionKind::D);
-    r.claim("N whose optimum misses the limit (Fig. 6)", "9, 10, 11, 13, 15",
-            (missed.empty() ? std::string("none") : missed) + " (of N = " + std::to_string(sizes.front()) + ".." +
-                std::to_string(sizes.back()) + " optimised here, " + std::to_string(sizes.size()) + " sizes)",
-            missed == expected ? "same on these N" : "differs: paper's set on these N is {" + expected + "}");
+  std::vector<std::vector<std::string>> rows;
+  std::string missed;
+  for (int n : ctx.optimised_sizes(CriterionKind::D)) {
+    const Entry& e = *ctx.optimum(CriterionKind::D, n);
+    const bool misses = e.ev.D > limit * (1 + kLimitTolerance);
+    if (misses) missed += (missed.empty() ? "" : ", ") + std::to_string(n);
+    rows.push_back({std::to_string(n), decimal(e.ev.D, 8), decimal(e.ev.D / limit - 1, 3), misses ? "misses" : "reaches",
+                    std::to_string(e.hits) + "/" + std::to_string(e.starts), decimal(e.seconds, 3)});
   }
+  r.paragraph("The optimised D-criterion programs (scalcal's multistart; `hits` = starts that reached the best value):");
+  r.table({"N", "N^9 det K", "relative excess over the limit", "limit", "hits/starts", "seconds"}, rows);
+  // Compare on the N this run optimised only.
+  std::string expected;
+  for (int n : ctx.optimised_sizes(CriterionKind::D))
+    if (n == 9 || n == 10 || n == 11 || n == 13 || n == 15) expected += (expected.empty() ? "" : ", ") + std::to_string(n);
+  const auto sizes = ctx.optimised_sizes(CriterionKind::D);
+  r.claim("N whose optimum misses the limit (Fig. 6)", "9, 10, 11, 13, 15",
+          (missed.empty() ? std::string("none") : missed) + " (of N = " + std::to_string(sizes.front()) + ".." +
+              std::to_string(sizes.back()) + " optimised here, " + std::to_string(sizes.size()) + " sizes)",
+          missed == expected ? "same on these N" : "differs: paper's set on these N is {" + expected + "}");
 }
 
 }  // namespace scalcal::reproduce
