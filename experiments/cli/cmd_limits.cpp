@@ -1,22 +1,32 @@
-// `scalcal limits [--json]`: the infimum of each normalised criterion over all measures on the
-// sphere, derived symbolically (symbolic/limits.hpp), with the moments of an optimal measure.
+// `scalcal limits [--region SPEC]... [--json]`: the infimum of each normalised criterion over all
+// measures on the sphere, derived symbolically (symbolic/limits.hpp), with the moments of an
+// optimal measure; on a restricted region, an optimal measure found numerically and a lower bound
+// certified by weak duality over the whole region (numeric/region/region_limit.hpp).
+#include <cstdio>
 #include <iostream>
+#include <memory>
 #include <sstream>
 #include <string>
-#include <memory>
 
 #include "experiments/cli/command.hpp"
 #include "experiments/cli/json_output.hpp"
 #include "experiments/cli/options.hpp"
+#include "experiments/cli/region_option.hpp"
+#include "numeric/region/region_limit.hpp"
 #include "symbolic/exact.hpp"
 #include "symbolic/limits.hpp"
 
 namespace scalcal::cli {
 namespace {
 
+struct Options {
+  std::vector<std::string> regions;
+  bool json = false;
+};
+
 double number(const GiNaC::ex& e) { return GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(e)).to_double(); }
 
-int run(bool json) {
+int sphere_limits(bool json) {
   using symbolic::canonical_text;
   Json out = Json::object();
   for (auto c : kCriteria) {
@@ -44,15 +54,62 @@ int run(bool json) {
   return 0;
 }
 
-Runner setup(CLI::App& app) {
-  auto json = std::make_shared<bool>(false);
-  add_switch(app, "--json", *json, "print one JSON object keyed by criterion");
-  return [json] { return run(*json); };
+std::string text(const char* format, double v) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, format, v);
+  return buffer;
 }
 
-const Registration reg({"limits", "limits [--json]",
-                        "exact N -> infinity limits of the normalised D, A, E, S criteria and optimal moments", 61,
-                        setup});
+int region_limits(const Options& o) {
+  const Region region = resolve_region(o.regions, "limits");
+  Json out = Json::object();
+  out["region"] = region.text();
+  if (!o.json) std::cout << "region " << region.text() << "\n";
+  for (auto c : kCriteria) {
+    if (progress_enabled()) std::cerr << "limits: " << criterion_name(c) << " on " << region.text() << "\n";
+    const RegionLimit l = region_limit(c, region);
+    const double sphere = criterion_limit(c).value;
+    Json support = Json::array();
+    for (std::size_t i = 0; i < l.support.size(); ++i)
+      support.push_back(Json{{"position", Json{l.support[i].x(), l.support[i].y(), l.support[i].z()}},
+                             {"weight", l.weights[i]}});
+    Json entry{{"value", l.value}};
+    entry["lower_bound"] = l.lower_bound ? Json(*l.lower_bound) : Json(nullptr);
+    entry["relative_to_sphere"] = l.value / sphere;
+    entry["support"] = support;
+    entry["candidates"] = l.candidates;
+    entry["refinements"] = l.refinements;
+    entry["equivalence_gap"] = l.equivalence_gap;
+    out[std::string(criterion_name(c))] = entry;
+    if (o.json) continue;
+    std::cout << criterion_name(c) << " >= " << text("%.10g", l.value) << " (numerically, an optimal measure on "
+              << l.candidates << " candidates)";
+    if (l.lower_bound)
+      std::cout << "; proven >= " << text("%.10g", *l.lower_bound) << " (gap "
+                << text("%.2g", (l.value - *l.lower_bound) / l.value) << " relative)";
+    std::cout << "; " << text("%.4g", l.value / sphere) << " x the sphere's; support " << l.support.size()
+              << " positions\n";
+  }
+  if (o.json) print_json(out);
+  return 0;
+}
+
+int run(const Options& o) {
+  if (o.regions.empty() || (o.regions.size() == 1 && o.regions[0] == "sphere")) return sphere_limits(o.json);
+  return region_limits(o);
+}
+
+Runner setup(CLI::App& app) {
+  auto o = std::make_shared<Options>();
+  add_region_option(app, o->regions);
+  add_switch(app, "--json", o->json, "print one JSON object keyed by criterion");
+  return [o] { return run(*o); };
+}
+
+const Registration reg({"limits", "limits [--region SPEC]... [--json]",
+                        "N -> infinity limits of the normalised D, A, E, S criteria: exact on the sphere, certified "
+                        "bounds on a region",
+                        61, setup});
 
 }  // namespace
 }  // namespace scalcal::cli

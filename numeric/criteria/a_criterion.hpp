@@ -5,6 +5,7 @@
 #include <Eigen/Cholesky>
 
 #include "numeric/criteria/criterion.hpp"
+#include "numeric/criteria/dual_kind.hpp"
 #include "numeric/criteria/starts.hpp"
 
 namespace scalcal {
@@ -14,6 +15,7 @@ struct ACriterion {
   static constexpr std::string_view summary = "N trace K";
   static constexpr ProgramSymmetry symmetry = ProgramSymmetry::SignedPermutations;
   using Form = SmoothForm;
+  static constexpr DualKind dual = DualKind::DiagonalSum;  // certified limits on regions
 
   template <class Model, InverseInformationView View, class Scalar>
   static Scalar value(const View& k, const Scalar& n) {

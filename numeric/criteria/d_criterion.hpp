@@ -6,6 +6,7 @@
 #include <Eigen/Cholesky>
 
 #include "numeric/criteria/criterion.hpp"
+#include "numeric/criteria/dual_kind.hpp"
 #include "numeric/criteria/starts.hpp"
 
 namespace scalcal {
@@ -15,6 +16,7 @@ struct DCriterion {
   static constexpr std::string_view summary = "N^P det K";
   static constexpr ProgramSymmetry symmetry = ProgramSymmetry::Orthogonal;
   using Form = SmoothForm;
+  static constexpr DualKind dual = DualKind::Determinant;  // certified limits on regions
   // Its value is N^P / det M: random search factors four programs side by side and stops early
   // when none can win (synthesis/random_search_kernel.hpp).
   static constexpr bool determinant_only = true;

@@ -1,0 +1,31 @@
+#include "experiments/cli/region_option.hpp"
+
+#include <cstdio>
+#include <iostream>
+
+#include "experiments/cli/options.hpp"
+#include "numeric/criteria/identifiability.hpp"
+
+namespace scalcal::cli {
+
+void add_region_option(CLI::App& app, std::vector<std::string>& specs) {
+  add_repeatable(app, "--region", specs, "SPEC",
+                 {"directions the bench reaches; repeat for a union: sphere, cap:DEG[:X,Y,Z], band:LO:HI[:X,Y,Z], "
+                  "faces:DEG, candidates:FILE",
+                  "degrees", "sphere"});
+}
+
+Region resolve_region(const std::vector<std::string>& specs, const std::string& command) {
+  Region region = parse_region(specs);
+  const double condition = check_region_identifiable(region);
+  if (condition > kIllConditioned) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%.3g", condition);
+    std::cerr << "scalcal " << command << ": warning: on " << region.text()
+              << " even the uniform measure has condition number " << text
+              << " (bias and scale factor are nearly confounded there)\n";
+  }
+  return region;
+}
+
+}  // namespace scalcal::cli

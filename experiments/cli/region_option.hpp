@@ -1,0 +1,22 @@
+// The --region option shared by the commands that design or judge a program for a restricted
+// bench: repeatable (the union), parsed and checked for identifiability before any work starts.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "numeric/region/region.hpp"
+
+namespace CLI {
+class App;
+}
+
+namespace scalcal::cli {
+
+void add_region_option(CLI::App& app, std::vector<std::string>& specs);
+
+// The region of the specs (the sphere when there are none). Throws InputError (exit 2) for a bad
+// spec or a region on which no program is rank 9; warns on stderr, naming the command, when the
+// region's best conditioning is poor.
+Region resolve_region(const std::vector<std::string>& specs, const std::string& command);
+
+}  // namespace scalcal::cli

@@ -1,0 +1,25 @@
+// Extending the program a lab already has: keep its positions and add the ones, inside the bench's
+// region, that improve a criterion most (sequential design). Greedy on a fine candidate grid, each
+// added position then moved continuously within the region while that helps, then exchanges
+// among the added positions until none improves.
+#pragma once
+#include <vector>
+
+#include "numeric/criteria/registry.hpp"
+#include "numeric/program/program.hpp"
+#include "numeric/region/region.hpp"
+
+namespace scalcal {
+
+struct AugmentedProgram {
+  Program program;           // the given positions, unchanged and first, then the added ones
+  std::vector<Vec3> added;
+  double value_before = 0;   // the normalised criterion of the given program (infinite if rank < 9)
+  double value = 0;          // of the augmented program
+};
+
+// The given program may be rank-deficient (that is often why a lab extends it); the added
+// positions are chosen by the unnormalised criterion of K, which no added row can make worse.
+AugmentedProgram augment_program(const Program& given, int add, CriterionKind criterion, const Region& region);
+
+}  // namespace scalcal

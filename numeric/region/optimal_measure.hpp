@@ -1,0 +1,158 @@
+// The optimal measure of a criterion on a finite candidate set: weights w_i >= 0 summing to 1 that
+// minimise the criterion of M(w) = sum_i w_i h_i h_i^T. The criterion enters only through a smooth
+// objective and its descent matrix Z (d_i = h_i^T Z h_i = -d phi / d w_i); nonsmooth forms are
+// smoothed by a power mean, sharpened as the weights settle. Multiplicative steps with backtracking.
+#pragma once
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
+
+#include "numeric/criteria/criterion.hpp"
+#include "numeric/model/model.hpp"
+
+namespace scalcal {
+
+template <int P>
+struct MeasureOnCandidates {
+  std::vector<double> weights;  // one per candidate
+  Eigen::Matrix<double, P, P> M, K;
+  double objective = 0;         // of the last smoothing
+  double equivalence_gap = 0;   // max_i d_i / sum_i w_i d_i - 1 on the candidates: 0 at the optimum
+  int iterations = 0;
+  double sharpness = 1;         // the power-mean exponent reached (nonsmooth forms)
+};
+
+// phi and Z of Crit at M (weights summing to 1); false when M is not positive definite.
+template <class Crit, class Model>
+bool measure_objective(const Eigen::Matrix<double, Model::kParameters, Model::kParameters>& M, double p, double& phi,
+                       Eigen::Matrix<double, Model::kParameters, Model::kParameters>* Z) {
+  constexpr int P = Model::kParameters;
+  using Mat = Eigen::Matrix<double, P, P>;
+  if constexpr (SmoothCriterion<Crit>) {
+    MatrixDerivatives<double, P> d;
+    if (!Crit::derivatives(M, 1, d)) return false;
+    phi = d.value;
+    if (Z) *Z = -d.G;
+    return true;
+  } else {
+    Eigen::LLT<Mat> llt(M);
+    if (llt.info() != Eigen::Success) return false;
+    const Mat K = llt.solve(Mat::Identity());
+    if constexpr (MaxEigenvalueCriterion<Crit>) {
+      // log of the power mean of the eigenvalues of K: Z = K^(p+1) / tr K^p
+      Eigen::SelfAdjointEigenSolver<Mat> eig(K);
+      const auto& l = eig.eigenvalues();
+      const double top = l(P - 1);
+      double s = 0;
+      for (int j = 0; j < P; ++j) s += std::pow(l(j) / top, p);
+      phi = std::log(top) + std::log(s) / p;
+      if (Z) {
+        Eigen::Matrix<double, P, 1> c;
+        for (int j = 0; j < P; ++j) c(j) = l(j) * std::pow(l(j) / top, p) / s;
+        *Z = eig.eigenvectors() * c.asDiagonal() * eig.eigenvectors().transpose();
+      }
+      return true;
+    } else {
+      static_assert(MaxDiagonalCriterion<Crit>, "measure_objective: a criterion of an unknown form");
+      const std::vector<int> rows = Crit::template rows<Model>();
+      double top = 0, s = 0;
+      for (int r : rows) top = std::max(top, K(r, r));
+      for (int r : rows) s += std::pow(K(r, r) / top, p);
+      phi = std::log(top) + std::log(s) / p;
+      if (Z) {
+        Z->setZero();
+        for (int r : rows)
+          *Z += (std::pow(K(r, r) / top, p - 1) / (top * s)) * K.col(r) * K.col(r).transpose();
+      }
+      return true;
+    }
+  }
+}
+
+// Continues from `start` (its weights, or uniform when empty). max_iterations bounds the work;
+// tolerance is on the equivalence gap.
+template <class Crit, class Model>
+MeasureOnCandidates<Model::kParameters> optimal_measure(const std::vector<Vec3>& candidates,
+                                                        const std::vector<double>& start = {},
+                                                        int max_iterations = 3000, double tolerance = 1e-9) {
+  constexpr int P = Model::kParameters;
+  using Mat = Eigen::Matrix<double, P, P>;
+  const int n = static_cast<int>(candidates.size());
+  Eigen::Matrix<double, P, Eigen::Dynamic> H(P, n);
+  for (int i = 0; i < n; ++i) H.col(i) = Model::row(candidates[static_cast<std::size_t>(i)]);
+  Eigen::ArrayXd w = Eigen::ArrayXd::Constant(n, 1.0 / n);
+  if (static_cast<int>(start.size()) == n) {
+    for (int i = 0; i < n; ++i) w(i) = std::max(start[static_cast<std::size_t>(i)], 1e-12 / n);
+    w /= w.sum();
+  }
+  const auto information = [&](const Eigen::ArrayXd& v) -> Mat {
+    return H * v.matrix().asDiagonal() * H.transpose();
+  };
+  constexpr bool smooth = SmoothCriterion<Crit>;
+  MeasureOnCandidates<P> out;
+  double p = smooth ? 1.0 : 8.0;
+  const double p_final = 65536.0;  // the smoothing bias is O(1/p) of the value
+  double step = 1.0;
+  Mat M = information(w), Z;
+  double phi = 0;
+  if (!measure_objective<Crit, Model>(M, p, phi, &Z)) {
+    out.weights.assign(w.data(), w.data() + n);
+    out.M = M;
+    out.equivalence_gap = INFINITY;
+    return out;
+  }
+  // Each sharpening gets a bounded share of the work: the smoothed optimum moves by O(1/p), so
+  // settling an early stage exactly is wasted.
+  constexpr int kStageIterations = 200;
+  int it = 0, stage_start = 0;
+  for (; it < max_iterations; ++it) {
+    const Eigen::ArrayXd d = (H.transpose() * Z).cwiseProduct(H.transpose()).rowwise().sum().array().max(0.0);
+    const double average = (w * d).sum();
+    const double gap = d.maxCoeff() / average - 1.0;
+    out.equivalence_gap = gap;
+    if (gap < tolerance) {
+      if (smooth || p >= p_final) break;
+      p = std::min(p_final, p * 2.0);  // settled at this smoothing: sharpen
+      stage_start = it;
+      measure_objective<Crit, Model>(M, p, phi, &Z);
+      continue;
+    }
+    if (!smooth && p < p_final && (gap < 1e-3 || it - stage_start >= kStageIterations)) {
+      p = std::min(p_final, p * 2.0);
+      stage_start = it;
+      measure_objective<Crit, Model>(M, p, phi, &Z);
+      continue;
+    }
+    bool moved = false;
+    for (int tries = 0; tries < 30 && !moved; ++tries) {
+      Eigen::ArrayXd v = w * (d / average).pow(step);
+      v /= v.sum();
+      const Mat Mv = information(v);
+      double phi_v = 0;
+      Mat Zv;
+      if (measure_objective<Crit, Model>(Mv, p, phi_v, &Zv) && phi_v <= phi) {
+        w = v;
+        M = Mv;
+        phi = phi_v;
+        Z = Zv;
+        moved = true;
+        step = std::min(4.0, step * 1.5);
+      } else {
+        step *= 0.5;
+      }
+    }
+    if (!moved) break;  // no descent along the multiplicative direction at rounding level
+  }
+  out.iterations = it;
+  out.sharpness = p;
+  out.weights.assign(w.data(), w.data() + n);
+  out.M = M;
+  out.K = M.llt().solve(Mat::Identity());
+  out.objective = phi;
+  return out;
+}
+
+}  // namespace scalcal

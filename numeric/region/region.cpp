@@ -1,0 +1,187 @@
+#include "numeric/region/region.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <numbers>
+
+#include "numeric/io/input_error.hpp"
+#include "numeric/io/program_csv.hpp"
+
+namespace scalcal {
+namespace {
+
+[[noreturn]] void bad_spec(const std::string& spec, const std::string& reason) {
+  throw InputError("--region", 0, "'" + display_name(spec) + "': " + reason);
+}
+
+std::vector<std::string> split(const std::string& s, char sep) {
+  std::vector<std::string> out(1);
+  for (char c : s) {
+    if (c == sep)
+      out.emplace_back();
+    else
+      out.back() += c;
+  }
+  return out;
+}
+
+double number(const std::string& spec, const std::string& text, const char* what) {
+  double v = 0;
+  const char* end = text.data() + text.size();
+  const auto [ptr, ec] = std::from_chars(text.data(), end, v);
+  if (text.empty() || ec != std::errc() || ptr != end || !std::isfinite(v))
+    bad_spec(spec, std::string(what) + " '" + display_name(text) + "' is not a number");
+  return v;
+}
+
+double angle(const std::string& spec, const std::string& text, const char* what, double lo, double hi) {
+  const double v = number(spec, text, what);
+  if (v < lo || v > hi)
+    bad_spec(spec, std::string(what) + " " + text + " is outside [" + std::to_string(static_cast<int>(lo)) + ", " +
+                       std::to_string(static_cast<int>(hi)) + "] degrees");
+  return v;
+}
+
+Vec3 axis(const std::string& spec, const std::string& text) {
+  const auto parts = split(text, ',');
+  if (parts.size() != 3) bad_spec(spec, "the axis must be X,Y,Z (three numbers), not '" + display_name(text) + "'");
+  const Vec3 a(number(spec, parts[0], "axis x"), number(spec, parts[1], "axis y"), number(spec, parts[2], "axis z"));
+  const double n = a.stableNorm();
+  if (!(n > 0) || !std::isfinite(n)) bad_spec(spec, "the axis is the zero vector");
+  return a / n;
+}
+
+// The orthonormal pair completing the axis to a frame; any pair will do, this one is continuous
+// away from -z.
+std::pair<Vec3, Vec3> frame(const Vec3& a) {
+  const Vec3 helper = std::abs(a.z()) < 0.9 ? Vec3(0, 0, 1) : Vec3(1, 0, 0);
+  const Vec3 e1 = helper.cross(a).normalized();
+  return {e1, a.cross(e1)};
+}
+
+void add_zone_rings(const Zone& z, double step_deg, std::vector<Vec3>& out) {
+  const double deg = std::numbers::pi / 180.0;
+  const auto [e1, e2] = frame(z.axis);
+  const double span = z.max_tilt_deg - z.min_tilt_deg;
+  const int rings = std::max(1, static_cast<int>(std::ceil(span / step_deg)));
+  for (int i = 0; i <= rings; ++i) {
+    const double tilt = (z.min_tilt_deg + span * i / rings) * deg;
+    const double s = std::sin(tilt), c = std::cos(tilt);
+    const int around = std::max(1, static_cast<int>(std::ceil(360.0 * s / step_deg)));
+    if (s < 1e-12) {  // a pole: one position
+      out.push_back(c > 0 ? z.axis : Vec3(-z.axis));
+      continue;
+    }
+    for (int j = 0; j < around; ++j) {
+      const double phi = 2.0 * std::numbers::pi * j / around;
+      out.push_back((s * std::cos(phi) * e1 + s * std::sin(phi) * e2 + c * z.axis).normalized());
+    }
+  }
+}
+
+}  // namespace
+
+bool Region::is_sphere() const {
+  for (const auto& z : zones)
+    if (z.is_sphere()) return true;
+  return false;
+}
+
+bool Region::contains(const Vec3& x, double tolerance_deg) const {
+  for (const auto& z : zones)
+    if (z.contains(x, tolerance_deg)) return true;
+  const double cos_tol = std::cos(tolerance_deg * std::numbers::pi / 180.0);
+  for (const auto& c : candidates)
+    if (c.dot(x) >= cos_tol) return true;
+  return false;
+}
+
+std::string Region::text() const {
+  std::string out;
+  for (const auto& s : specs) out += (out.empty() ? "" : " + ") + s;
+  return out.empty() ? "sphere" : out;
+}
+
+std::vector<Vec3> Region::grid(double step_deg) const {
+  std::vector<Vec3> out = candidates;
+  for (const auto& z : zones) add_zone_rings(z, step_deg, out);
+  return out;
+}
+
+Region sphere_region() {
+  Region r;
+  r.specs = {"sphere"};
+  r.zones = {Zone{}};
+  return r;
+}
+
+void add_region_spec(Region& region, const std::string& spec) {
+  const auto colon = spec.find(':');
+  const std::string kind = spec.substr(0, colon);
+  const std::string rest = colon == std::string::npos ? "" : spec.substr(colon + 1);
+  if (kind == "candidates") {
+    if (rest.empty()) bad_spec(spec, "candidates needs a program file: candidates:FILE");
+    const Program p = read_program_csv(rest);  // InputError names the file and line
+    region.candidates.insert(region.candidates.end(), p.positions.begin(), p.positions.end());
+    region.specs.push_back(spec);
+    return;
+  }
+  const auto parts = colon == std::string::npos ? std::vector<std::string>{} : split(rest, ':');
+  if (kind == "sphere") {
+    if (!parts.empty()) bad_spec(spec, "sphere takes no arguments");
+    region.zones.push_back(Zone{});
+  } else if (kind == "cap") {
+    if (parts.empty() || parts.size() > 2) bad_spec(spec, "expected cap:DEG or cap:DEG:X,Y,Z");
+    const double deg = angle(spec, parts[0], "the half-angle", 0, 180);
+    if (!(deg > 0)) bad_spec(spec, "a cap of 0 degrees is a single direction; use candidates:FILE");
+    region.zones.push_back(Zone{parts.size() == 2 ? axis(spec, parts[1]) : Vec3(0, 0, 1), 0.0, deg});
+  } else if (kind == "band") {
+    if (parts.size() < 2 || parts.size() > 3) bad_spec(spec, "expected band:LO:HI or band:LO:HI:X,Y,Z");
+    const double lo = angle(spec, parts[0], "LO", 0, 180), hi = angle(spec, parts[1], "HI", 0, 180);
+    if (!(lo < hi)) bad_spec(spec, "LO must be less than HI (a band of zero width is one circle)");
+    region.zones.push_back(Zone{parts.size() == 3 ? axis(spec, parts[2]) : Vec3(0, 0, 1), lo, hi});
+  } else if (kind == "faces") {
+    if (parts.size() != 1) bad_spec(spec, "expected faces:DEG");
+    const double deg = angle(spec, parts[0], "the half-angle", 0, 180);
+    if (!(deg > 0)) bad_spec(spec, "faces of 0 degrees are the six axis directions; use candidates:FILE");
+    for (int a = 0; a < 3; ++a)
+      for (double s : {1.0, -1.0}) {
+        Vec3 v = Vec3::Zero();
+        v(a) = s;
+        region.zones.push_back(Zone{v, 0.0, deg});
+      }
+  } else {
+    bad_spec(spec, "unknown region '" + display_name(kind) +
+                       "'; expected sphere, cap:DEG[:X,Y,Z], band:LO:HI[:X,Y,Z], faces:DEG or candidates:FILE");
+  }
+  region.specs.push_back(spec);
+}
+
+Region parse_region(const std::vector<std::string>& specs) {
+  if (specs.empty()) return sphere_region();
+  Region r;
+  for (const auto& s : specs) add_region_spec(r, s);
+  return r;
+}
+
+}  // namespace scalcal
+
+#include "numeric/criteria/evaluation.hpp"
+#include "numeric/criteria/identifiability.hpp"
+
+namespace scalcal {
+
+double check_region_identifiable(const Region& region) {
+  Program grid;
+  grid.positions = region.grid(4.0);
+  if (grid.size() < kMinimumPositions)
+    throw InputError("--region", 0,
+                     "'" + display_name(region.text()) + "' has only " + std::to_string(grid.size()) +
+                         " distinct positions; the model needs at least 9");
+  const Evaluation ev = evaluate(grid);
+  if (!ev.full_rank())
+    throw InputError("--region", 0, "no program on '" + display_name(region.text()) + "' is rank 9: " + rank_deficiency(ev));
+  return ev.condition;
+}
+
+}  // namespace scalcal

@@ -1,0 +1,32 @@
+// The limit of a criterion over a region: the infimum over all measures on it (N -> infinity), as
+// the value of an optimal measure found on candidates, and a lower bound certified by weak duality
+// over the whole continuous region. value - lower_bound is then a proven gap.
+#pragma once
+#include <optional>
+#include <vector>
+
+#include "numeric/criteria/registry.hpp"
+#include "numeric/region/region.hpp"
+
+namespace scalcal {
+
+struct RegionLimit {
+  double value = 0;                   // the criterion of the measure below (normalised, weights sum 1)
+  std::optional<double> lower_bound;  // certified; empty for a criterion without a dual bound
+  std::vector<Vec3> support;          // positions of the measure with weight >= 1e-6
+  std::vector<double> weights;        // their weights (the rest of the mass is below 1e-6 each)
+  double equivalence_gap = 0;         // on the final candidates
+  int candidates = 0;                 // how many the final measure was optimised over
+  int refinements = 0;                // rounds that added positions found by the bound's search
+  long boxes = 0;                     // interval boxes the certificates used
+};
+
+struct RegionLimitOptions {
+  double grid_step_deg = 4.0;  // the first candidates: rings this far apart
+  int max_refinements = 2;
+  double relative_gap = 1e-6;  // stop refining once (value - lower_bound) / value is below
+};
+
+RegionLimit region_limit(CriterionKind c, const Region& region, const RegionLimitOptions& options = {});
+
+}  // namespace scalcal
