@@ -40,7 +40,7 @@ int run(const Options& o) {
   const Region region = resolve_region(o.regions, "augment");
   const CriterionKind c = criterion_of(o.criterion);
   const AugmentedProgram a = augment_program(given, o.add, c, region);
-  if (!o.out.empty()) write_program_file(o.out, a.program);
+  if (!o.out.empty()) write_program_file(o.out, a.program, region_columns(region, a.program));
   if (o.json) {
     Json added = Json::array();
     for (const Vec3& x : a.added) added.push_back(Json{x.x(), x.y(), x.z()});

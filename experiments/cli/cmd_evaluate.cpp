@@ -54,11 +54,7 @@ Json region_efficiency(const Evaluation& ev, const Region& region) {
   Json out = Json::object();
   for (auto c : kCriteria) {
     if (progress_enabled()) std::cerr << "evaluate: the " << criterion_name(c) << " limit on " << region.text() << "\n";
-    // The sphere's limits are proven in closed form; anywhere else, the region's optimal measure.
-    const double limit = region.is_sphere() ? criterion_limit(c).value : region_limit(c, region).value;
-    double e = limit / ev.value(c);
-    if (c == CriterionKind::D) e = std::pow(e, 1.0 / kParameters);
-    out[std::string(criterion_name(c))] = e;
+    out[std::string(criterion_name(c))] = efficiency(c, limit_value(c, region), ev.value(c));
   }
   return out;
 }
@@ -69,15 +65,17 @@ int run(const Options& o) {
   if (!ev.full_rank()) throw InputError(o.program, 0, rank_deficiency(ev));
   if (ev.condition > kIllConditioned)
     std::cerr << "scalcal evaluate: " << o.program << ": warning: " << ill_conditioning(ev) << "\n";
-  if (!o.out.empty()) write_program_file(o.out, program);
   Json efficiency;
   std::string region_text;
+  std::vector<ExtraColumn> columns;
   if (!o.regions.empty()) {
     const Region region = resolve_region(o.regions, "evaluate");
     refuse_outside(o.program, program, region);
     region_text = region.text();
+    columns = region_columns(region, program);
     efficiency = region_efficiency(ev, region);
   }
+  if (!o.out.empty()) write_program_file(o.out, program, columns);
   if (o.json) {
     Json j = evaluation_json(ev, program);
     if (!region_text.empty()) {

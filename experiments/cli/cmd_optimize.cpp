@@ -1,7 +1,9 @@
-// `scalcal optimize --positions N --criterion D|A|E|S [--starts K] [--seed S] [--threads T]
-// [--digits P] [--local auto|ipopt] [--out FILE] [--json]`: the optimal program by a multistart
-// (Riemannian Newton for D and A, confirmed by Ipopt; Ipopt for E and S), optionally polished to
-// P digits; with --digits, --out and the JSON program are the polished program.
+// `scalcal optimize --positions N --criterion D|A|E|S [--region SPEC]... [--starts K] [--seed S]
+// [--threads T] [--digits P] [--local auto|ipopt] [--out FILE] [--json]`: the optimal program by a
+// multistart (Riemannian Newton for D and A, confirmed by Ipopt; Ipopt for E and S), optionally
+// polished to P digits; with --digits, --out and the JSON program are the polished program. On a
+// restricted region: exchange on the region's candidates, then Ipopt inside the region
+// (numeric/region/region_synthesis.hpp), judged against the region's limit.
 #include <iomanip>
 #include <iostream>
 #include <memory>
@@ -11,8 +13,12 @@
 #include "experiments/cli/json_output.hpp"
 #include "experiments/cli/options.hpp"
 #include "experiments/cli/output_file.hpp"
+#include "experiments/cli/region_option.hpp"
 #include "experiments/cli/synthesis_cli.hpp"
+#include "numeric/io/input_error.hpp"
 #include "numeric/polish/polish.hpp"
+#include "numeric/region/region_limit.hpp"
+#include "numeric/region/region_synthesis.hpp"
 #include "numeric/synthesis/multistart.hpp"
 
 namespace scalcal::cli {
@@ -21,6 +27,7 @@ namespace {
 struct Options {
   SynthesisOptions synthesis;
   std::string criterion = "D", local = "auto", out;
+  std::vector<std::string> regions;
   int digits = 0;
   bool json = false;
 };
@@ -31,7 +38,13 @@ int run(Options& o) {
   opt.local = o.local == "ipopt" ? LocalSolver::Ipopt : LocalSolver::Automatic;
   if (progress_enabled())
     opt.progress = [](int done, int total) { std::cerr << "\rstart " << done << "/" << total << std::flush; };
-  const SynthesisResult r = synthesize(opt);
+  const std::optional<Region> region =
+      o.regions.empty() ? std::nullopt : std::optional<Region>(resolve_region(o.regions, "optimize"));
+  const bool restricted = region && !region->is_sphere();
+  if (restricted && o.digits > 0)
+    throw InputError("--digits", 0, "the polish solves the unconstrained optimality conditions; it cannot keep "
+                                    "positions inside --region " + region->text());
+  const SynthesisResult r = restricted ? synthesize_on_region(opt, *region) : synthesize(opt);
   if (opt.progress) std::cerr << "\n";
   if (!r.summary.converged())
     std::cerr << "scalcal optimize: warning: " << r.summary.message << " (" << r.local_solver << " multistart)\n";
@@ -46,7 +59,12 @@ int run(Options& o) {
   // The polished program is the better one (its rounding to double is as close to the optimum as
   // double allows): it is the one written and printed.
   const Program& best = polished ? polished->program : r.program;
-  if (!o.out.empty()) write_program_file(o.out, best);
+  if (!o.out.empty()) write_program_file(o.out, best, region ? region_columns(*region, best) : std::vector<ExtraColumn>{});
+  std::optional<double> limit;
+  if (region) {
+    if (opt.progress) std::cerr << "the " << criterion_name(opt.criterion) << " limit on " << region->text() << "\n";
+    limit = limit_value(opt.criterion, *region);
+  }
   if (o.json) {
     Json j{{"criterion", std::string(criterion_name(opt.criterion))},
            {"positions", opt.positions},
@@ -58,6 +76,11 @@ int run(Options& o) {
            {"seconds", r.seconds},
            {"local_solver", r.local_solver},
            {"confirmed", r.summary.converged()}};
+    if (limit) {
+      j["region"] = region->text();
+      j["limit"] = *limit;
+      j["efficiency"] = efficiency(opt.criterion, *limit, r.value);
+    }
     if (polished) {
       j["value_digits"] = polished->value_digits;
       j["residual"] = polished->residual;
@@ -70,6 +93,10 @@ int run(Options& o) {
               << "  (N = " << opt.positions << ", " << r.hits << " of " << r.starts << " starts reached it, "
               << r.distinct << (r.distinct == 1 ? " program" : " distinct programs") << " up to symmetry, "
               << std::setprecision(3) << r.seconds << " s)\n";
+    if (limit)
+      std::cout << "on " << region->text() << ": limit " << std::setprecision(10) << *limit << ", efficiency "
+                << std::setprecision(6) << efficiency(opt.criterion, *limit, r.value)
+                << " (limit / value; D as its 9th root)\n";
     if (polished)
       std::cout << criterion_name(opt.criterion) << " = " << polished->value_digits << "  (" << polished->digits
                 << " digits, residual " << std::setprecision(3) << polished->residual << ", "
@@ -83,6 +110,7 @@ Runner setup(CLI::App& app) {
   add_integer(app, "--positions", o->synthesis.positions, 9, 1000, {"number of positions N", "positions", kRequired});
   add_criterion(app, o->criterion);
   add_starts(app, o->synthesis.starts);
+  add_region_option(app, o->regions);
   add_seed(app, o->synthesis.seed);
   add_threads(app, o->synthesis.threads);
   add_integer(app, "--digits", o->digits, 1, 1000,
@@ -96,8 +124,8 @@ Runner setup(CLI::App& app) {
 }
 
 const Registration reg({"optimize",
-                        "optimize --positions N --criterion D|A|E|S [--starts K] [--seed S] [--threads T] "
-                        "[--digits P] [--local auto|ipopt] [--out FILE] [--json]",
+                        "optimize --positions N --criterion D|A|E|S [--region SPEC]... [--starts K] [--seed S] "
+                        "[--threads T] [--digits P] [--local auto|ipopt] [--out FILE] [--json]",
                         "the optimal program for a criterion (Newton/Ipopt multistart, optional high-precision polish)",
                         40, setup});
 

@@ -40,8 +40,8 @@ void write_output_file(const std::string& path, const std::function<void(std::os
   file.close();
 }
 
-void write_program_file(const std::string& path, const Program& program) {
-  write_output_file(path, [&](std::ostream& out) { write_program_csv(out, program); });
+void write_program_file(const std::string& path, const Program& program, const std::vector<ExtraColumn>& extra) {
+  write_output_file(path, [&](std::ostream& out) { write_program_csv(out, program, extra); });
 }
 
 void check_stdout() {

@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "numeric/io/program_csv.hpp"
 #include "numeric/program/program.hpp"
 
 namespace scalcal::cli {
@@ -32,8 +33,8 @@ class OutputFile {
 
 void write_output_file(const std::string& path, const std::function<void(std::ostream&)>& write);
 
-// The program as CSV (x,y,z,alpha1_deg,alpha2_deg).
-void write_program_file(const std::string& path, const Program& program);
+// The program as CSV (x,y,z,alpha1_deg,alpha2_deg, then any extra columns).
+void write_program_file(const std::string& path, const Program& program, const std::vector<ExtraColumn>& extra = {});
 
 // Flushes stdout and throws OutputError when anything written to it was lost.
 void check_stdout();

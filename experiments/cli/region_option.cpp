@@ -28,4 +28,15 @@ Region resolve_region(const std::vector<std::string>& specs, const std::string& 
   return region;
 }
 
+std::vector<ExtraColumn> region_columns(const Region& region, const Program& program) {
+  if (region.zones.size() != 1 || !region.candidates.empty() || region.is_sphere()) return {};
+  const Zone& zone = region.zones.front();
+  ExtraColumn tilt{"tilt_deg", {}}, azimuth{"azimuth_deg", {}};
+  for (const Vec3& x : program.positions) {
+    tilt.values.push_back(zone.tilt_deg(x));
+    azimuth.values.push_back(azimuth_deg(zone, x));
+  }
+  return {tilt, azimuth};
+}
+
 }  // namespace scalcal::cli

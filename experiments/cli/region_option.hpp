@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "numeric/io/program_csv.hpp"
 #include "numeric/region/region.hpp"
 
 namespace CLI {
@@ -18,5 +19,9 @@ void add_region_option(CLI::App& app, std::vector<std::string>& specs);
 // spec or a region on which no program is rank 9; warns on stderr, naming the command, when the
 // region's best conditioning is poor.
 Region resolve_region(const std::vector<std::string>& specs, const std::string& command);
+
+// For a region of one cap or band: the columns tilt_deg (from its axis) and azimuth_deg (in its
+// azimuth_frame) of each position, for --out; none otherwise.
+std::vector<ExtraColumn> region_columns(const Region& region, const Program& program);
 
 }  // namespace scalcal::cli

@@ -56,12 +56,17 @@ std::string shortest(double v) {
 
 }  // namespace
 
-void write_program_csv(std::ostream& out, const Program& program) {
-  out << "x,y,z,alpha1_deg,alpha2_deg\n";
-  for (const auto& eta : program.positions) {
+void write_program_csv(std::ostream& out, const Program& program, const std::vector<ExtraColumn>& extra) {
+  out << "x,y,z,alpha1_deg,alpha2_deg";
+  for (const auto& c : extra) out << ',' << c.name;
+  out << '\n';
+  for (std::size_t i = 0; i < program.positions.size(); ++i) {
+    const Vec3& eta = program.positions[i];
     const auto a = angles_deg(eta);
     out << shortest(eta(0)) << ',' << shortest(eta(1)) << ',' << shortest(eta(2)) << ',' << shortest(a(0)) << ','
-        << shortest(a(1)) << '\n';
+        << shortest(a(1));
+    for (const auto& c : extra) out << ',' << shortest(c.values[i]);
+    out << '\n';
   }
 }
 

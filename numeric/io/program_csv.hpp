@@ -18,9 +18,15 @@ inline constexpr int kMaximumPositions = 100000;
 Program read_program_csv(const std::string& path);
 Program program_from_table(const CsvTable& table);
 
+// A column written after x,y,z,alpha1_deg,alpha2_deg: its name and one value per position.
+struct ExtraColumn {
+  std::string name;
+  std::vector<double> values;
+};
+
 // Numbers are written as the shortest text that reads back to the same double. The path form
 // returns false when the file could not be opened, written or closed (e.g. a full disk).
-void write_program_csv(std::ostream& out, const Program& program);
+void write_program_csv(std::ostream& out, const Program& program, const std::vector<ExtraColumn>& extra = {});
 bool write_program_csv(const std::string& path, const Program& program);
 
 // Azimuth alpha1 and elevation alpha2 in degrees of a unit vector (inverse of from_angles_deg).

@@ -1,7 +1,7 @@
 // Extending the program a lab already has: keep its positions and add the ones, inside the bench's
-// region, that improve a criterion most (sequential design). Greedy on a fine candidate grid, each
-// added position then moved continuously within the region while that helps, then exchanges
-// among the added positions until none improves.
+// region, that improve a criterion most (sequential design). Greedy on a fine candidate grid and
+// exchanges among the added positions (numeric/region/exchange.hpp), then Ipopt moves the added
+// positions continuously inside their zones with the given ones held fixed.
 #pragma once
 #include <vector>
 
@@ -18,8 +18,8 @@ struct AugmentedProgram {
   double value = 0;          // of the augmented program
 };
 
-// The given program may be rank-deficient (that is often why a lab extends it); the added
-// positions are chosen by the unnormalised criterion of K, which no added row can make worse.
+// The given program may be rank-deficient (that is often why a lab extends it): candidates are
+// then ranked through a tiny ridge, so those that make parameters identifiable win.
 AugmentedProgram augment_program(const Program& given, int add, CriterionKind criterion, const Region& region);
 
 }  // namespace scalcal

@@ -1,6 +1,6 @@
 // Certified lower bounds on a criterion's limit over a region, by weak duality: every bound below
 // holds for EVERY measure on the region, given only an upper bound m on sup_x |C h(x)|^2 there
-// (numeric/region/sensitivity_bound.hpp proves one). C is built from a near-optimal K, but any C
+// (numeric/region/zone_sup.hpp proves one). C is built from a near-optimal K, but any C
 // is valid, so rounding in building it costs tightness, never correctness; the bound itself is
 // computed in interval arithmetic.
 #pragma once
@@ -68,13 +68,22 @@ struct DualCertificate {
   }
 };
 
-// The certificate built from K = M^-1 of a near-optimal measure (weights summing to 1). smoothing is
-// the power-mean exponent p the measure was optimised with (numeric/region/optimal_measure.hpp):
-// its gradient gives the dual weights of the nonsmooth forms, K(r,r)^(p-1) for rows and
-// lambda^(p+1) for eigenvalues.
+// The dual of a nonsmooth criterion's optimum when it is known exactly (numeric/region/
+// measure_weights.hpp): the eigenvalue form's Z (>= 0, trace 1), the diagonal form's row weights.
+template <int P>
+struct ExactDual {
+  Eigen::Matrix<double, P, P> Z = Eigen::Matrix<double, P, P>::Zero();
+  std::vector<double> row_weights;
+};
+
+// The certificate built from K = M^-1 of a near-optimal measure (weights summing to 1). For the
+// nonsmooth forms the dual comes from `exact` when given, else from the gradient of the power mean
+// the measure was optimised with (numeric/region/optimal_measure.hpp; exponent `smoothing`):
+// K(r,r)^(p-1) for rows and lambda^(p+1) for eigenvalues.
 template <class Crit, class Model>
 std::optional<DualCertificate<Model::kParameters>> dual_certificate(
-    const Eigen::Matrix<double, Model::kParameters, Model::kParameters>& K, double smoothing) {
+    const Eigen::Matrix<double, Model::kParameters, Model::kParameters>& K, double smoothing,
+    const ExactDual<Model::kParameters>* exact = nullptr) {
   constexpr int P = Model::kParameters;
   DualCertificate<P> out;
   out.kind = dual_kind<Crit>();
@@ -93,10 +102,14 @@ std::optional<DualCertificate<Model::kParameters>> dual_certificate(
         for (int r = 0; r < P; ++r) rows.push_back(r);
       std::vector<double> alpha(rows.size(), 1.0);
       if constexpr (MaxDiagonalCriterion<Crit>) {  // weights of the smoothed max, summing to 1
-        double top = 0, total = 0;
+        if (exact && exact->row_weights.size() == rows.size()) {
+          alpha = exact->row_weights;
+        } else {
+          double top = 0, total = 0;
         for (int r : rows) top = std::max(top, K(r, r));
-        for (std::size_t j = 0; j < rows.size(); ++j) total += alpha[j] = std::pow(K(rows[j], rows[j]) / top, smoothing - 1.0);
-        for (double& a : alpha) a /= total;
+          for (std::size_t j = 0; j < rows.size(); ++j) total += alpha[j] = std::pow(K(rows[j], rows[j]) / top, smoothing - 1.0);
+          for (double& a : alpha) a /= total;
+        }
       }
       out.C.resize(static_cast<Eigen::Index>(rows.size()), P);
       for (std::size_t j = 0; j < rows.size(); ++j) {
@@ -107,6 +120,13 @@ std::optional<DualCertificate<Model::kParameters>> dual_certificate(
       return out;
     }
     case DualKind::Spectral: {
+      if (exact && exact->Z.trace() > 0) {  // C = Z^(1/2)
+        Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, P, P>> eig(exact->Z);
+        out.C.resize(P, P);
+        for (int j = 0; j < P; ++j)
+          out.C.row(j) = std::sqrt(std::max(0.0, eig.eigenvalues()(j))) * eig.eigenvectors().col(j).transpose();
+        return out;
+      }
       Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, P, P>> eig(K);
       const double top = eig.eigenvalues()(P - 1);
       std::vector<double> a(P);

@@ -145,6 +145,50 @@ MeasureOnCandidates<Model::kParameters> optimal_measure(const std::vector<Vec3>&
       }
     }
     if (!moved) break;  // no descent along the multiplicative direction at rounding level
+    // A vertex exchange (Boehning 1986; Yu's cocktail algorithm 2011): mass moves from the support
+    // point with the least d to the candidate with the most, by a golden-section line search. The
+    // multiplicative step alone crawls once many candidates crowd along a circle. (Smooth forms
+    // only: a smoothed nonsmooth form's line search costs an eigen-decomposition per trial, and
+    // its weights are made exact afterwards anyway: measure_weights.hpp.)
+    if constexpr (smooth) {
+      const Eigen::ArrayXd dv = (H.transpose() * Z).cwiseProduct(H.transpose()).rowwise().sum().array();
+      Eigen::Index j = 0, k = -1;
+      dv.maxCoeff(&j);
+      for (Eigen::Index i = 0; i < n; ++i)
+        if (w(i) > 0 && i != j && (k < 0 || dv(i) < dv(k))) k = i;
+      if (k >= 0 && dv(j) > dv(k)) {
+        const Mat delta = H.col(j) * H.col(j).transpose() - H.col(k) * H.col(k).transpose();
+        const auto phi_at = [&](double a) {
+          double v = INFINITY;
+          return measure_objective<Crit, Model>(M + a * delta, p, v, nullptr) ? v : INFINITY;
+        };
+        double lo = 0, hi = w(k);
+        const double golden = 0.5 * (std::sqrt(5.0) - 1);
+        double a1 = hi - golden * (hi - lo), a2 = lo + golden * (hi - lo), f1 = phi_at(a1), f2 = phi_at(a2);
+        for (int s = 0; s < 40; ++s) {
+          if (f1 <= f2) {
+            hi = a2;
+            a2 = a1;
+            f2 = f1;
+            a1 = hi - golden * (hi - lo);
+            f1 = phi_at(a1);
+          } else {
+            lo = a1;
+            a1 = a2;
+            f1 = f2;
+            a2 = lo + golden * (hi - lo);
+            f2 = phi_at(a2);
+          }
+        }
+        const double a = f1 <= f2 ? a1 : a2, fa = std::min(f1, f2);
+        if (fa < phi) {
+          w(j) += a;
+          w(k) = std::max(0.0, w(k) - a);
+          M = information(w);
+          measure_objective<Crit, Model>(M, p, phi, &Z);
+        }
+      }
+    }
   }
   out.iterations = it;
   out.sharpness = p;

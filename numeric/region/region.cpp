@@ -1,8 +1,12 @@
 #include "numeric/region/region.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <numbers>
+#include <optional>
+
+#include <Eigen/Eigenvalues>
 
 #include "numeric/io/input_error.hpp"
 #include "numeric/io/program_csv.hpp"
@@ -51,17 +55,9 @@ Vec3 axis(const std::string& spec, const std::string& text) {
   return a / n;
 }
 
-// The orthonormal pair completing the axis to a frame; any pair will do, this one is continuous
-// away from -z.
-std::pair<Vec3, Vec3> frame(const Vec3& a) {
-  const Vec3 helper = std::abs(a.z()) < 0.9 ? Vec3(0, 0, 1) : Vec3(1, 0, 0);
-  const Vec3 e1 = helper.cross(a).normalized();
-  return {e1, a.cross(e1)};
-}
-
 void add_zone_rings(const Zone& z, double step_deg, std::vector<Vec3>& out) {
   const double deg = std::numbers::pi / 180.0;
-  const auto [e1, e2] = frame(z.axis);
+  const auto [e1, e2] = azimuth_frame(z.axis);
   const double span = z.max_tilt_deg - z.min_tilt_deg;
   const int rings = std::max(1, static_cast<int>(std::ceil(span / step_deg)));
   for (int i = 0; i <= rings; ++i) {
@@ -80,6 +76,124 @@ void add_zone_rings(const Zone& z, double step_deg, std::vector<Vec3>& out) {
 }
 
 }  // namespace
+
+std::pair<Vec3, Vec3> azimuth_frame(const Vec3& axis) {
+  const Vec3 ref = std::abs(axis.x()) < 0.9 ? Vec3(1, 0, 0) : Vec3(0, 1, 0);
+  const Vec3 e1 = (ref - ref.dot(axis) * axis).normalized();
+  return {e1, axis.cross(e1)};
+}
+
+double azimuth_deg(const Zone& zone, const Vec3& x) {
+  const auto [e1, e2] = azimuth_frame(zone.axis);
+  double a = std::atan2(e2.dot(x), e1.dot(x)) * 180.0 / std::numbers::pi;
+  if (a < 0) a += 360.0;
+  return a >= 360.0 ? 0.0 : a;
+}
+
+double Region::zone_area() const {
+  const double deg = std::numbers::pi / 180.0;
+  double out = 0;
+  for (const auto& z : zones) out += 2 * std::numbers::pi * (std::cos(z.min_tilt_deg * deg) - std::cos(z.max_tilt_deg * deg));
+  return out;
+}
+
+double Region::grid_step_for(int count, double min_deg, double max_deg) const {
+  const double square_deg = zone_area() * (180.0 / std::numbers::pi) * (180.0 / std::numbers::pi);
+  return std::clamp(std::sqrt(square_deg / std::max(count, 1)), min_deg, max_deg);
+}
+
+int Region::deepest_zone(const Vec3& x) const {
+  int best = -1;
+  double depth = -kRegionToleranceDeg;
+  for (std::size_t k = 0; k < zones.size(); ++k) {
+    const double t = zones[k].tilt_deg(x);
+    const double d = std::min(t - zones[k].min_tilt_deg, zones[k].max_tilt_deg - t);
+    if (d >= depth) {
+      depth = d;
+      best = static_cast<int>(k);
+    }
+  }
+  return best;
+}
+
+Vec3 zone_position(const Zone& zone, double tilt_deg, double az_deg) {
+  const double deg = std::numbers::pi / 180.0;
+  const auto [e1, e2] = azimuth_frame(zone.axis);
+  const double t = tilt_deg * deg, a = az_deg * deg;
+  return (std::sin(t) * (std::cos(a) * e1 + std::sin(a) * e2) + std::cos(t) * zone.axis).normalized();
+}
+
+std::vector<Mat3> symmetries_fixing(const Vec3& axis) {
+  std::vector<Mat3> out;
+  const int perms[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+  for (const auto& p : perms)
+    for (int signs = 0; signs < 8; ++signs) {
+      Mat3 g = Mat3::Zero();
+      for (int r = 0; r < 3; ++r) g(r, p[r]) = (signs >> r) & 1 ? -1.0 : 1.0;
+      if ((g * axis - axis).norm() < 1e-12) out.push_back(g);
+    }
+  return out;
+}
+
+bool Region::invariant_under(const Mat3& g) const {
+  constexpr double kSame = 1e-9;
+  for (const Zone& z : zones) {
+    const Vec3 image = g * z.axis;
+    const bool found = std::any_of(zones.begin(), zones.end(), [&](const Zone& o) {
+      return std::abs(o.min_tilt_deg - z.min_tilt_deg) < kSame && std::abs(o.max_tilt_deg - z.max_tilt_deg) < kSame &&
+             (o.axis - image).norm() < kSame;
+    }) || (z.is_sphere());
+    if (!found) return false;
+  }
+  for (const Vec3& c : candidates) {
+    const Vec3 image = g * c;
+    if (std::none_of(candidates.begin(), candidates.end(), [&](const Vec3& o) { return (o - image).norm() < 1e-9; }))
+      return false;
+  }
+  return true;
+}
+
+std::vector<double> Region::meridians(const Zone& zone) const {
+  int rotations = 0;
+  std::optional<Mat3> mirror;
+  for (const Mat3& g : symmetries_fixing(zone.axis)) {
+    if (!invariant_under(g)) continue;
+    if (g.determinant() > 0)
+      ++rotations;
+    else
+      mirror = g;
+  }
+  if (rotations < 3 || !mirror) return {};
+  // The mirror's plane holds the axis and the direction axis x n, n its normal (eigenvalue -1).
+  const Eigen::SelfAdjointEigenSolver<Mat3> eig(*mirror);
+  const Vec3 in_plane = zone.axis.cross(eig.eigenvectors().col(0));
+  const double offset = azimuth_deg(zone, in_plane.normalized());
+  std::vector<double> out;
+  for (int j = 0; j < 2 * rotations; ++j) out.push_back(std::fmod(offset + 180.0 * j / rotations, 360.0));
+  return out;
+}
+
+std::vector<Vec3> Region::measure_grid(double step_deg) const {
+  std::vector<Vec3> out = candidates;
+  for (const Zone& z : zones) {
+    const std::vector<double> azimuths = meridians(z);
+    if (azimuths.empty()) {
+      add_zone_rings(z, step_deg, out);
+      continue;
+    }
+    const double span = z.max_tilt_deg - z.min_tilt_deg;
+    const int rings = std::max(1, static_cast<int>(std::ceil(4 * span / step_deg)));
+    for (int i = 0; i <= rings; ++i) {
+      const double tilt = z.min_tilt_deg + span * i / rings;
+      if (tilt <= 0.0 || tilt >= 180.0) {  // a pole: one position
+        out.push_back(tilt <= 0.0 ? z.axis : Vec3(-z.axis));
+        continue;
+      }
+      for (double a : azimuths) out.push_back(zone_position(z, tilt, a));
+    }
+  }
+  return out;
+}
 
 bool Region::is_sphere() const {
   for (const auto& z : zones)

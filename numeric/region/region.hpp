@@ -25,7 +25,42 @@ struct Region {
   // Candidate positions covering the region: the finite candidates, and each zone on rings about its
   // axis spaced step_deg apart in tilt (rims included) and about step_deg apart along each ring.
   std::vector<Vec3> grid(double step_deg) const;
+  // The zones' solid angle in steradians (overlaps counted twice: an upper bound on the union's).
+  double zone_area() const;
+  // The grid spacing that covers the region with about `count` candidates (finer for a small cap),
+  // within [min_deg, max_deg].
+  double grid_step_for(int count, double min_deg = 0.25, double max_deg = 4.0) const;
+  // The zone x lies in most deeply (tilt farthest from both of its bounds), or -1 outside every zone.
+  int deepest_zone(const Vec3& x) const;
+
+  // Whether the signed permutation g maps the region onto itself (zones onto zones with the same
+  // tilts, candidates onto candidates). Every criterion is invariant under signed permutations, so
+  // an optimal measure may then be taken invariant under g too.
+  bool invariant_under(const Mat3& g) const;
+  // The half-meridians of the zone an optimal measure may be confined to: when the signed
+  // permutations that fix the zone's axis and map the region onto itself include k >= 3 rotations
+  // about it and a mirror, an invariant measure's circles about the axis see only the mean and the
+  // k-th harmonic of their azimuths (the information matrix holds moments up to degree 4, and the
+  // symmetry removes the other harmonics up to 4), and the two k-point orbits at the mirror's
+  // azimuth and half a step off carry every such circle's information. So the azimuths (degrees,
+  // in the zone's azimuth_frame) are 2k, 180/k apart: 8 about a coordinate axis, 6 about a cube
+  // diagonal. Empty when there is no such reduction.
+  std::vector<double> meridians(const Zone& zone) const;
+  // Candidates for an optimal measure: grid(step_deg), except that a zone with meridians is
+  // covered only along them, step_deg / 4 apart in tilt.
+  std::vector<Vec3> measure_grid(double step_deg) const;
 };
+
+// The azimuth frame of an axis a: e1 is the direction of +x projected on the plane normal to a (of
+// +y when a is within about 26 degrees of the x axis), e2 = a x e1. For a = +z: e1 = +x, e2 = +y.
+std::pair<Vec3, Vec3> azimuth_frame(const Vec3& axis);
+// Tilt from the zone's axis and azimuth in its frame (degrees, azimuth in [0, 360)).
+double azimuth_deg(const Zone& zone, const Vec3& x);
+// The position at a tilt and an azimuth (degrees) of the zone's axis and frame.
+Vec3 zone_position(const Zone& zone, double tilt_deg, double azimuth_deg);
+
+// The signed permutations of the axes that fix `axis` (the identity at least).
+std::vector<Mat3> symmetries_fixing(const Vec3& axis);
 
 Region sphere_region();
 

@@ -23,10 +23,17 @@ struct RegionLimit {
 
 struct RegionLimitOptions {
   double grid_step_deg = 4.0;  // the first candidates: rings this far apart
-  int max_refinements = 2;
+  int max_refinements = 6;
   double relative_gap = 1e-6;  // stop refining once (value - lower_bound) / value is below
 };
 
 RegionLimit region_limit(CriterionKind c, const Region& region, const RegionLimitOptions& options = {});
+
+// The limit a program on the region is judged against: the proven closed form on the sphere, the
+// region's optimal measure elsewhere.
+double limit_value(CriterionKind c, const Region& region);
+// limit / value, D as (limit / value)^(1/P) so that every efficiency reads as the fraction of the
+// ideal measurement effort.
+double efficiency(CriterionKind c, double limit, double value);
 
 }  // namespace scalcal

@@ -1,222 +1,265 @@
 #include "numeric/region/zone_sup.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numbers>
 #include <queue>
 
-#include <boost/numeric/interval.hpp>
-
 #include "numeric/model/paper9.hpp"
+#include "numeric/region/interval.hpp"
 
 namespace scalcal {
 namespace {
 
 namespace bn = boost::numeric;
-using I = bn::interval<double>;
+using I = Interval;
 using Rows = Eigen::Matrix<double, Eigen::Dynamic, 9>;
 
-// The zone in its own frame: x = rho(z) (c(t) e1 + s(t) e2) h + z a, with rho = sqrt(1 - z^2), the
-// rational half-circle c = (1 - t^2)/(1 + t^2), s = 2t/(1 + t^2), t in [-1, 1], and h = +-1 for
-// the two halves. Only +, -, *, / and sqrt: every operation rounds outward, so each box's interval
-// contains every direction the box describes.
-struct Frame {
-  Vec3 e1, e2, a;
-  double z_lo, z_hi;
+// A value with its gradient and Hessian in the chart's two coordinates (u, t): second-order
+// forward differentiation, on intervals (enclosures over a box) or points.
+struct Jet {
+  I v, du, dt, uu, ut, tt;
 };
 
+Jet constant(const I& c) { return {c, I(0.0), I(0.0), I(0.0), I(0.0), I(0.0)}; }
+Jet operator+(const Jet& a, const Jet& b) { return {a.v + b.v, a.du + b.du, a.dt + b.dt, a.uu + b.uu, a.ut + b.ut, a.tt + b.tt}; }
+Jet operator-(const Jet& a, const Jet& b) { return {a.v - b.v, a.du - b.du, a.dt - b.dt, a.uu - b.uu, a.ut - b.ut, a.tt - b.tt}; }
+Jet operator*(const I& c, const Jet& a) { return {c * a.v, c * a.du, c * a.dt, c * a.uu, c * a.ut, c * a.tt}; }
+Jet operator*(const Jet& a, const Jet& b) {
+  return {a.v * b.v,
+          a.du * b.v + a.v * b.du,
+          a.dt * b.v + a.v * b.dt,
+          a.uu * b.v + I(2.0) * a.du * b.du + a.v * b.uu,
+          a.ut * b.v + a.du * b.dt + a.dt * b.du + a.v * b.ut,
+          a.tt * b.v + I(2.0) * a.dt * b.dt + a.v * b.tt};
+}
+Jet square(const Jet& a) {
+  return {bn::square(a.v), I(2.0) * a.v * a.du, I(2.0) * a.v * a.dt, I(2.0) * (bn::square(a.du) + a.v * a.uu),
+          I(2.0) * (a.du * a.dt + a.v * a.ut), I(2.0) * (bn::square(a.dt) + a.v * a.tt)};
+}
+Jet reciprocal(const Jet& a) {
+  const I r = I(1.0) / a.v, r2 = bn::square(r), r3 = r2 * r;
+  return {r,
+          -a.du * r2,
+          -a.dt * r2,
+          I(2.0) * bn::square(a.du) * r3 - a.uu * r2,
+          I(2.0) * a.du * a.dt * r3 - a.ut * r2,
+          I(2.0) * bn::square(a.dt) * r3 - a.tt * r2};
+}
+
+// One piece of a zone: tilts within 90 degrees of `axis`, as u = tan(tilt / 2) in [u0, u1] (a
+// subset of [0, 1]); azimuth on two rational half circles, c = (1 - t^2) / (1 + t^2),
+// s = 2 t / (1 + t^2), t in [-1, 1], signed by `half`. Only +, -, *, /: every operation rounds
+// outward, so each box's enclosure holds for every direction it describes, the pole included.
+struct Chart {
+  Vec3 axis, e1, e2;
+  double u0, u1;
+};
+
+// x(u, t) with its derivatives, on the box U x T (or a point).
+std::array<Jet, 3> position(const Chart& ch, const I& U, const I& T, int half) {
+  const Jet u{U, I(1.0), I(0.0), I(0.0), I(0.0), I(0.0)}, t{T, I(0.0), I(1.0), I(0.0), I(0.0), I(0.0)};
+  const Jet one = constant(I(1.0)), two_u = I(2.0) * u, two_t = I(2.0) * t;
+  const Jet ru = reciprocal(one + square(u)), rt = reciprocal(one + square(t));
+  const Jet cos_tilt = (one - square(u)) * ru, sin_tilt = two_u * ru;
+  const Jet c = I(static_cast<double>(half)) * ((one - square(t)) * rt), s = I(static_cast<double>(half)) * (two_t * rt);
+  const Jet sc = sin_tilt * c, ss = sin_tilt * s;
+  std::array<Jet, 3> x;
+  for (int i = 0; i < 3; ++i)
+    x[static_cast<std::size_t>(i)] = I(ch.e1(i)) * sc + I(ch.e2(i)) * ss + I(ch.axis(i)) * cos_tilt;
+  return x;
+}
+
+Jet norm2(const Rows& C, const std::array<Jet, 3>& x) {
+  const std::array<Jet, 9> h{x[0], x[1], x[2], square(x[0]), square(x[1]), square(x[2]), x[0] * x[1], x[1] * x[2], x[2] * x[0]};
+  Jet out = constant(I(0.0));
+  for (int j = 0; j < C.rows(); ++j) {
+    Jet y = constant(I(0.0));
+    for (int k = 0; k < 9; ++k)
+      if (C(j, k) != 0.0) y = y + I(C(j, k)) * h[static_cast<std::size_t>(k)];
+    out = out + square(y);
+  }
+  return out;
+}
+
+// The midpoint in the current (upward) rounding: any double near the middle will do.
+double mid(const I& x) { return 0.5 * x.lower() + 0.5 * x.upper(); }
+double radius(const I& x) { return 0.5 * (x.upper() - x.lower()); }
+
+// max over s in [-R, R] of alpha + beta s + gamma s^2 (gamma exact), as a proven upper bound.
+double max_1d(const I& alpha, const I& beta, double gamma, double R) {
+  const I r(R);
+  double out = std::max((alpha + beta * r + I(gamma) * bn::square(r)).upper(), (alpha - beta * r + I(gamma) * bn::square(r)).upper());
+  if (gamma < 0) {
+    const double vertex = std::abs(mid(beta)) / (-2 * gamma);
+    if (vertex < R * (1 + 1e-9) + 1e-300) out = std::max(out, (alpha - bn::square(beta) / (I(4.0) * I(gamma))).upper());
+  }
+  return out;
+}
+
+// A proven upper bound on max over |d_u| <= ru, |d_t| <= rt of q(d) = g . d + d^T H d / 2 (g, H
+// exact doubles): on the four edges, and at the interior stationary point when H may be negative
+// definite.
+double max_quadratic(double gu, double gt, double a, double b, double d, double ru, double rt) {
+  double out = -std::numeric_limits<double>::infinity();
+  for (double su : {-1.0, 1.0}) {  // d_u = su ru: alpha + beta d_t + (d / 2) d_t^2
+    const I du = I(su) * I(ru);
+    out = std::max(out, max_1d(I(gu) * du + I(0.5) * I(a) * bn::square(du), I(gt) + I(b) * du, 0.5 * d, rt));
+  }
+  for (double st : {-1.0, 1.0}) {
+    const I dt = I(st) * I(rt);
+    out = std::max(out, max_1d(I(gt) * dt + I(0.5) * I(d) * bn::square(dt), I(gu) + I(b) * dt, 0.5 * a, ru));
+  }
+  const I det = I(a) * I(d) - bn::square(I(b));
+  if (a < 0 && det.upper() > 0) {  // H may be negative definite: an interior maximum is possible
+    if (!(det.lower() > 0)) {  // undecided: q <= |g| . r + (a+ ru^2 + 2 |b| ru rt + d+ rt^2) / 2
+      const I crude = I(std::abs(gu)) * I(ru) + I(std::abs(gt)) * I(rt) +
+                      I(0.5) * (I(std::max(a, 0.0)) * bn::square(I(ru)) + I(2.0 * std::abs(b)) * I(ru) * I(rt) +
+                                I(std::max(d, 0.0)) * bn::square(I(rt)));
+      return std::max(out, crude.upper());
+    }
+    // d* = -H^-1 g; skipped when certainly outside the box (the maximum is then on an edge).
+    const double xu = -(d * gu - b * gt) / mid(det), xt = -(a * gt - b * gu) / mid(det);
+    if (std::abs(xu) <= ru * (1 + 1e-6) && std::abs(xt) <= rt * (1 + 1e-6)) {
+      // -g^T H^-1 g / 2 = -(d gu^2 - 2 b gu gt + a gt^2) / (2 det)
+      const I num = I(d) * bn::square(I(gu)) - I(2.0) * I(b) * I(gu) * I(gt) + I(a) * bn::square(I(gt));
+      out = std::max(out, (-num / (I(2.0) * det)).upper());
+    }
+  }
+  return out;
+}
+
 struct Box {
-  double z0, z1, t0, t1;
+  double u0, u1, t0, t1;
   int half;
   double upper;
   bool operator<(const Box& o) const { return upper < o.upper; }
 };
 
-I clamp_unit(I v) { return I(std::max(-1.0, v.lower()), std::min(1.0, v.upper())); }
-
-std::array<I, 3> position(const Frame& f, const I& z, const I& t, int half) {
-  I one_minus = (I(1.0) - z) * (I(1.0) + z);
-  I rho = bn::sqrt(I(std::max(0.0, one_minus.lower()), std::max(0.0, one_minus.upper())));
-  // c is even and decreasing in |t|, s increasing: their ranges from the endpoints are exact.
-  const double lo_abs = (t.lower() <= 0 && t.upper() >= 0) ? 0.0 : std::min(std::abs(t.lower()), std::abs(t.upper()));
-  const double hi_abs = std::max(std::abs(t.lower()), std::abs(t.upper()));
-  const auto c_at = [](double u) { const I x(u); return (I(1.0) - bn::square(x)) / (I(1.0) + bn::square(x)); };
-  const auto s_at = [](double u) { const I x(u); return I(2.0) * x / (I(1.0) + bn::square(x)); };
-  I c = clamp_unit(I(c_at(hi_abs).lower(), c_at(lo_abs).upper()));
-  I s = clamp_unit(I(s_at(t.lower()).lower(), s_at(t.upper()).upper()));
-  if (half < 0) {
-    c = -c;
-    s = -s;
-  }
-  const I rc = rho * c, rs = rho * s;
-  std::array<I, 3> x;
-  for (int i = 0; i < 3; ++i) x[static_cast<std::size_t>(i)] = rc * I(f.e1(i)) + rs * I(f.e2(i)) + z * I(f.a(i));
-  return x;
+// The bound on one box: the smaller of the natural enclosure and the second-order Taylor form
+// f(c) + g.d + d^T H(B) d / 2 around the centre c.
+double box_bound(const Rows& C, const Chart& ch, const Box& b) {
+  const Jet over = norm2(C, position(ch, I(b.u0, b.u1), I(b.t0, b.t1), b.half));
+  const double cu = 0.5 * (b.u0 + b.u1), ct = 0.5 * (b.t0 + b.t1);
+  const Jet at = norm2(C, position(ch, I(cu), I(ct), b.half));
+  // Half-widths rounded up so that [c - r, c + r] covers the box.
+  const double ru = (I(b.u1) - I(cu)).upper() > (I(cu) - I(b.u0)).upper() ? (I(b.u1) - I(cu)).upper() : (I(cu) - I(b.u0)).upper();
+  const double rt = (I(b.t1) - I(ct)).upper() > (I(ct) - I(b.t0)).upper() ? (I(b.t1) - I(ct)).upper() : (I(ct) - I(b.t0)).upper();
+  const double gu = mid(at.du), gt = mid(at.dt);
+  const double a = mid(over.uu), hb = mid(over.ut), d = mid(over.tt);
+  // What the midpoints leave out: the gradient's enclosure at c and the Hessian's over the box.
+  I spread = I(radius(at.du)) * I(ru) + I(radius(at.dt)) * I(rt);
+  spread += I(0.5) * (I(radius(over.uu)) * bn::square(I(ru)) + I(2.0) * I(radius(over.ut)) * I(ru) * I(rt) +
+                      I(radius(over.tt)) * bn::square(I(rt)));
+  const double taylor = (I(at.v.upper()) + I(max_quadratic(gu, gt, a, hb, d, ru, rt)) + spread).upper();
+  return std::min(over.v.upper(), taylor);
 }
 
-std::array<I, 9> row(const std::array<I, 3>& x) {
-  return {x[0], x[1], x[2], bn::square(x[0]), bn::square(x[1]), bn::square(x[2]), x[0] * x[1], x[1] * x[2], x[2] * x[0]};
-}
-
-I norm2(const Rows& C, const std::array<I, 9>& h) {
-  I out(0.0);
-  for (int j = 0; j < C.rows(); ++j) {
-    I y(0.0);
-    for (int k = 0; k < 9; ++k)
-      if (C(j, k) != 0.0) y += I(C(j, k)) * h[static_cast<std::size_t>(k)];
-    out += bn::square(y);
-  }
-  return out;
-}
-
-// The centred form in the zone's coordinates: F(B) within F(centre) + dF/dz(B) (Z - z_c) +
-// dF/dt(B) (T - t_c) by the mean value theorem, F = f o x. Second order where the gradient
-// vanishes (interior maxima), exact to first order on the rims (box edges follow the rims). Away
-// from the poles only: dx/dz = a - (z / rho)(c e1 + s e2) blows up there.
-I centred_bound(const Rows& C, const Frame& f, double z0, double z1, double t0, double t1, int half) {
-  const I Z(z0, z1), T(t0, t1);
-  I one_minus = (I(1.0) - Z) * (I(1.0) + Z);
-  if (!(one_minus.lower() > 1e-6)) return I::whole();
-  const I rho = bn::sqrt(one_minus);
-  const I q = I(1.0) + bn::square(T);
-  I c = (I(1.0) - bn::square(T)) / q, s = I(2.0) * T / q;
-  I dc = I(-4.0) * T / bn::square(q), ds = I(2.0) * (I(1.0) - bn::square(T)) / bn::square(q);
-  if (half < 0) {
-    c = -c;
-    s = -s;
-    dc = -dc;
-    ds = -ds;
-  }
-  const I drho = -Z / rho;
-  std::array<I, 3> x, xz, xt;
-  for (int i = 0; i < 3; ++i) {
-    const std::size_t k = static_cast<std::size_t>(i);
-    x[k] = rho * (c * I(f.e1(i)) + s * I(f.e2(i))) + Z * I(f.a(i));
-    xz[k] = drho * (c * I(f.e1(i)) + s * I(f.e2(i))) + I(f.a(i));
-    xt[k] = rho * (dc * I(f.e1(i)) + ds * I(f.e2(i)));
-  }
-  // dh/dz and dh/dt by the product rule on h = (x, x_i^2, x_i x_j).
-  const auto dh = [&](const std::array<I, 3>& d) {
-    return std::array<I, 9>{d[0], d[1], d[2], I(2.0) * x[0] * d[0], I(2.0) * x[1] * d[1], I(2.0) * x[2] * d[2],
-                            d[0] * x[1] + x[0] * d[1], d[1] * x[2] + x[1] * d[2], d[2] * x[0] + x[2] * d[0]};
-  };
-  const std::array<I, 9> h = row(x), hz = dh(xz), ht = dh(xt);
-  I Fz(0.0), Ft(0.0);
-  for (int j = 0; j < C.rows(); ++j) {
-    I y(0.0), yz(0.0), yt(0.0);
-    for (int k = 0; k < 9; ++k) {
-      const I cjk(C(j, k));
-      const std::size_t kk = static_cast<std::size_t>(k);
-      y += cjk * h[kk];
-      yz += cjk * hz[kk];
-      yt += cjk * ht[kk];
-    }
-    Fz += I(2.0) * y * yz;
-    Ft += I(2.0) * y * yt;
-  }
-  const double zc = 0.5 * (z0 + z1), tc = 0.5 * (t0 + t1);
-  const I at_centre = norm2(C, row(position(f, I(zc), I(tc), half)));
-  return at_centre + Fz * (Z - I(zc)) + Ft * (T - I(tc));
-}
-
-Vec3 point(const Frame& f, double z, double t, int half) {
-  const double rho = std::sqrt(std::max(0.0, 1.0 - z * z));
+Vec3 point(const Chart& ch, double u, double t, int half) {
+  const double ct = (1 - u * u) / (1 + u * u), st = 2 * u / (1 + u * u);
   const double c = half * (1 - t * t) / (1 + t * t), s = half * 2 * t / (1 + t * t);
-  return (rho * c * f.e1 + rho * s * f.e2 + z * f.a).normalized();
+  return (st * (c * ch.e1 + s * ch.e2) + ct * ch.axis).normalized();
 }
 
 double value_at(const Rows& C, const Vec3& x) { return (C * Paper9Model::row(x)).squaredNorm(); }
 
-Frame frame_of(const Zone& zone) {
-  Frame f;
-  f.a = zone.axis.normalized();
-  const Vec3 helper = std::abs(f.a.z()) < 0.9 ? Vec3(0, 0, 1) : Vec3(1, 0, 0);
-  f.e1 = helper.cross(f.a).normalized();
-  f.e2 = f.a.cross(f.e1);
-  const double deg = std::numbers::pi / 180.0;
-  // Widened outward by a few ulps: a slightly larger zone only makes the bound safer.
-  f.z_lo = std::max(-1.0, std::cos(zone.max_tilt_deg * deg) - 4 * std::numeric_limits<double>::epsilon());
-  f.z_hi = std::min(1.0, std::cos(zone.min_tilt_deg * deg) + 4 * std::numeric_limits<double>::epsilon());
-  return f;
+// tan(tilt / 2) for a tilt in [0, 90] degrees, rounded outward by a few ulps (a slightly larger
+// zone only makes the bound safer); 0 and 90 degrees are exact.
+double half_tangent(double tilt_deg, bool lower) {
+  if (tilt_deg <= 0) return 0.0;
+  if (tilt_deg >= 90) return 1.0;
+  const double v = std::tan(tilt_deg * std::numbers::pi / 360.0);
+  const double widen = 4 * std::numeric_limits<double>::epsilon() * v;
+  return std::clamp(lower ? v - widen : v + widen, 0.0, 1.0);
 }
 
-void pick_near_maxima(std::vector<std::pair<double, Vec3>>& seen, SupBound& out) {
-  std::sort(seen.begin(), seen.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
-  const double cos_apart = std::cos(std::numbers::pi / 180.0);
-  for (const auto& [v, x] : seen) {
-    if (out.near_maxima.size() >= 16) break;
-    if (std::none_of(out.near_maxima.begin(), out.near_maxima.end(), [&](const Vec3& y) { return y.dot(x) > cos_apart; }))
-      out.near_maxima.push_back(x);
-  }
+// The zone as charts of tilts within 90 degrees of +axis and of -axis.
+std::vector<Chart> charts_of(const Zone& zone) {
+  std::vector<Chart> out;
+  const Vec3 a = zone.axis.normalized();
+  const Vec3 helper = std::abs(a.x()) < 0.9 ? Vec3(1, 0, 0) : Vec3(0, 1, 0);
+  const Vec3 e1 = (helper - helper.dot(a) * a).normalized(), e2 = a.cross(e1);
+  if (zone.min_tilt_deg < 90)
+    out.push_back({a, e1, e2, half_tangent(zone.min_tilt_deg, true), half_tangent(std::min(zone.max_tilt_deg, 90.0), false)});
+  if (zone.max_tilt_deg > 90)
+    out.push_back({Vec3(-a), e2, e1, half_tangent(180 - zone.max_tilt_deg, true),
+                   half_tangent(180 - std::max(zone.min_tilt_deg, 90.0), false)});
+  return out;
 }
 
 }  // namespace
 
 SupBound sup_norm2_over_zone(const Rows& C, const Zone& zone, double rel_tol, long box_budget) {
-  const Frame f = frame_of(zone);
+  const RoundingScope rounding;
   SupBound out;
   out.lower = -1;
-  std::priority_queue<Box> queue;
-  std::vector<std::pair<double, Vec3>> seen;
-  const auto visit = [&](double z0, double z1, double t0, double t1, int half) {
+  std::vector<Chart> charts = charts_of(zone);
+  struct Entry {
+    Box box;
+    int chart;
+    bool operator<(const Entry& o) const { return box < o.box; }
+  };
+  std::priority_queue<Entry> queue;
+  const auto visit = [&](int k, Box b) {
+    const Chart& ch = charts[static_cast<std::size_t>(k)];
     ++out.boxes;
-    const double natural = norm2(C, row(position(f, I(z0, z1), I(t0, t1), half))).upper();
-    const double bound = std::min(natural, centred_bound(C, f, z0, z1, t0, t1, half).upper());
-    const Vec3 centre = point(f, 0.5 * (z0 + z1), 0.5 * (t0 + t1), half);
+    b.upper = box_bound(C, ch, b);
+    const Vec3 centre = point(ch, 0.5 * (b.u0 + b.u1), 0.5 * (b.t0 + b.t1), b.half);
     const double v = value_at(C, centre);
     if (v > out.lower) {
       out.lower = v;
       out.argmax = centre;
     }
-    if (v >= (1 - 1e-4) * out.lower) seen.emplace_back(v, centre);
-    queue.push(Box{z0, z1, t0, t1, half, bound});
+    queue.push({b, k});
   };
-  // Start from a modest grid so that every ring and both halves are explored at once.
-  const int nz = 16, nt = 8;
-  for (int half : {1, -1})
-    for (int i = 0; i < nz; ++i)
-      for (int j = 0; j < nt; ++j)
-        visit(f.z_lo + (f.z_hi - f.z_lo) * i / nz, i + 1 == nz ? f.z_hi : f.z_lo + (f.z_hi - f.z_lo) * (i + 1) / nz,
-              -1.0 + 2.0 * j / nt, j + 1 == nt ? 1.0 : -1.0 + 2.0 * (j + 1) / nt, half);
+  constexpr int kStart = 8;
+  for (int k = 0; k < static_cast<int>(charts.size()); ++k) {
+    const Chart& ch = charts[static_cast<std::size_t>(k)];
+    for (int half : {1, -1})
+      for (int i = 0; i < kStart; ++i)
+        for (int j = 0; j < kStart; ++j)
+          visit(k, Box{ch.u0 + (ch.u1 - ch.u0) * i / kStart, i + 1 == kStart ? ch.u1 : ch.u0 + (ch.u1 - ch.u0) * (i + 1) / kStart,
+                       -1.0 + 2.0 * j / kStart, j + 1 == kStart ? 1.0 : -1.0 + 2.0 * (j + 1) / kStart, half, 0.0});
+  }
   while (true) {
-    const Box b = queue.top();
-    out.upper = b.upper;
-    if (b.upper - out.lower <= rel_tol * std::abs(b.upper) || out.boxes >= box_budget) break;
+    const Entry e = queue.top();
+    out.upper = e.box.upper;
+    if (e.box.upper - out.lower <= rel_tol * std::abs(e.box.upper) || out.boxes >= box_budget) break;
     queue.pop();
-    // Split the side that moves x most: dx/dz ~ 1/rho near the poles, dx/dt ~ 2 rho.
-    const double zm = 0.5 * (b.z0 + b.z1), tm = 0.5 * (b.t0 + b.t1);
-    const double rho = std::sqrt(std::max(1e-300, 1 - std::min(b.z0 * b.z0, b.z1 * b.z1)));
-    const double z_side = (b.z1 - b.z0) / std::max(rho, std::sqrt(b.z1 - b.z0)), t_side = 2 * rho * (b.t1 - b.t0);
-    if (z_side >= t_side) {
-      visit(b.z0, zm, b.t0, b.t1, b.half);
-      visit(zm, b.z1, b.t0, b.t1, b.half);
+    const Box& b = e.box;
+    // Split the side that moves x most: |dx/du| = 2 / (1 + u^2), |dx/dt| = sin(tilt) 2 / (1 + t^2).
+    const double tmin = (b.t0 <= 0 && b.t1 >= 0) ? 0.0 : std::min(std::abs(b.t0), std::abs(b.t1));
+    const double u_side = 2 * (b.u1 - b.u0) / (1 + b.u0 * b.u0);
+    const double t_side = 2 * b.u1 / (1 + b.u1 * b.u1) * 2 * (b.t1 - b.t0) / (1 + tmin * tmin);
+    if (u_side >= t_side) {
+      const double m = 0.5 * (b.u0 + b.u1);
+      visit(e.chart, Box{b.u0, m, b.t0, b.t1, b.half, 0.0});
+      visit(e.chart, Box{m, b.u1, b.t0, b.t1, b.half, 0.0});
     } else {
-      visit(b.z0, b.z1, b.t0, tm, b.half);
-      visit(b.z0, b.z1, tm, b.t1, b.half);
+      const double m = 0.5 * (b.t0 + b.t1);
+      visit(e.chart, Box{b.u0, b.u1, b.t0, m, b.half, 0.0});
+      visit(e.chart, Box{b.u0, b.u1, m, b.t1, b.half, 0.0});
     }
   }
-  std::erase_if(seen, [&](const auto& p) { return p.first < (1 - 1e-3) * out.lower; });
-  pick_near_maxima(seen, out);
   return out;
 }
 
 SupBound sup_norm2_over_points(const Rows& C, const std::vector<Vec3>& points) {
+  const RoundingScope rounding;
   SupBound out;
   out.lower = -1;
-  std::vector<std::pair<double, Vec3>> seen;
   for (const Vec3& x : points) {
-    const I bound = norm2(C, row({I(x(0)), I(x(1)), I(x(2))}));
-    out.upper = std::max(out.upper, bound.upper());
+    const Jet j = norm2(C, {constant(I(x(0))), constant(I(x(1))), constant(I(x(2)))});
+    out.upper = std::max(out.upper, j.v.upper());
     const double v = value_at(C, x);
     if (v > out.lower) {
       out.lower = v;
       out.argmax = x;
     }
-    seen.emplace_back(v, x);
   }
   out.boxes = static_cast<long>(points.size());
-  pick_near_maxima(seen, out);
   return out;
 }
 

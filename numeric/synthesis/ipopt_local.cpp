@@ -1,7 +1,10 @@
 // Ipopt TNLP over x = (eta_1, ..., eta_N, extra...), with N norm constraints |eta_i|^2 = 1
-// followed by the criterion's own constraints (dense rows). The criterion is a SmoothProblem:
-// the adapter never knows which one it runs.
+// followed by the criterion's own constraints (dense rows), then one linear row axis . eta_i per
+// position held in a zone of a restricted bench (fixed positions are fixed variables). The
+// criterion is a SmoothProblem: the adapter never knows which one it runs.
 #include "numeric/synthesis/ipopt_local.hpp"
+
+#include "numeric/synthesis/ipopt_application.hpp"
 
 #include <functional>
 #include <string>
@@ -26,15 +29,22 @@ using Ipopt::Number;
 
 class ProgramNlp : public Ipopt::TNLP {
  public:
-  ProgramNlp(const SmoothProblem& problem, std::vector<double> start)
-      : p_(problem), x0_(std::move(start)), n_(static_cast<int>(x0_.size())) {}
+  ProgramNlp(const SmoothProblem& problem, std::vector<double> start, const PositionBounds* bounds)
+      : p_(problem), x0_(std::move(start)), n_(static_cast<int>(x0_.size())) {
+    if (bounds)
+      for (int i = 0; i < p_.positions(); ++i) {
+        const PositionBound& b = (*bounds)[static_cast<std::size_t>(i)];
+        if (b.kind == PositionBound::Kind::Zone) zones_.push_back({i, b});
+        if (b.kind == PositionBound::Kind::Fixed) fixed_.push_back(i);
+      }
+  }
 
   const std::vector<double>& solution() const { return xs_; }
 
   bool get_nlp_info(Index& n, Index& m, Index& nnz_jac, Index& nnz_h, IndexStyleEnum& style) override {
     n = n_;
-    m = p_.positions() + p_.constraints();
-    nnz_jac = 3 * p_.positions() + p_.constraints() * n_;
+    m = p_.positions() + p_.constraints() + static_cast<int>(zones_.size());
+    nnz_jac = 3 * p_.positions() + p_.constraints() * n_ + 3 * static_cast<int>(zones_.size());
     nnz_h = n_ * (n_ + 1) / 2;
     style = TNLP::C_STYLE;
     return true;
@@ -45,8 +55,21 @@ class ProgramNlp : public Ipopt::TNLP {
       x_l[i] = -2e19;
       x_u[i] = 2e19;
     }
+    for (int i : fixed_)
+      for (int c = 0; c < 3; ++c) x_l[3 * i + c] = x_u[3 * i + c] = x0_[static_cast<std::size_t>(3 * i + c)];
     for (int i = 0; i < p_.positions(); ++i) g_l[i] = g_u[i] = 1.0;
+    // A fixed position's norm row loses all its variables: an inactive inequality (with a slack)
+    // keeps the KKT system regular where a constant equality row would not.
+    for (int i : fixed_) {
+      g_l[i] = 0.0;
+      g_u[i] = 4.0;
+    }
     p_.constraint_bounds(g_l + p_.positions(), g_u + p_.positions());
+    const int z0 = zone_row();
+    for (std::size_t k = 0; k < zones_.size(); ++k) {
+      g_l[z0 + static_cast<int>(k)] = zones_[k].bound.lower;
+      g_u[z0 + static_cast<int>(k)] = zones_[k].bound.upper;
+    }
     (void)m;
     return true;
   }
@@ -69,6 +92,11 @@ class ProgramNlp : public Ipopt::TNLP {
   bool eval_g(Index, const Number* x, bool, Index, Number* g) override {
     for (int i = 0; i < p_.positions(); ++i)
       g[i] = x[3 * i] * x[3 * i] + x[3 * i + 1] * x[3 * i + 1] + x[3 * i + 2] * x[3 * i + 2];
+    for (std::size_t k = 0; k < zones_.size(); ++k) {
+      const int i = zones_[k].position;
+      const Vec3& a = zones_[k].bound.axis;
+      g[zone_row() + static_cast<int>(k)] = a(0) * x[3 * i] + a(1) * x[3 * i + 1] + a(2) * x[3 * i + 2];
+    }
     return p_.constraints() == 0 || p_.constraint_values(x, g + p_.positions(), nullptr);
   }
 
@@ -86,9 +114,17 @@ class ProgramNlp : public Ipopt::TNLP {
           rows[k] = N + r;
           cols[k] = j;
         }
+      for (std::size_t z = 0; z < zones_.size(); ++z)
+        for (int c = 0; c < 3; ++c, ++k) {
+          rows[k] = zone_row() + static_cast<int>(z);
+          cols[k] = 3 * zones_[z].position + c;
+        }
       return true;
     }
     for (int i = 0; i < 3 * N; ++i) values[i] = 2.0 * x[i];
+    const int zone_values = 3 * N + mc * n_;
+    for (std::size_t z = 0; z < zones_.size(); ++z)
+      for (int c = 0; c < 3; ++c) values[zone_values + 3 * static_cast<int>(z) + c] = zones_[z].bound.axis(c);
     if (mc == 0) return true;
     std::vector<double> g(static_cast<std::size_t>(mc));
     std::fill(values + 3 * N, values + 3 * N + mc * n_, 0.0);
@@ -119,24 +155,23 @@ class ProgramNlp : public Ipopt::TNLP {
   }
 
  private:
+  struct ZoneRow {
+    int position;
+    PositionBound bound;
+  };
+  int zone_row() const { return p_.positions() + p_.constraints(); }
+
   const SmoothProblem& p_;
   std::vector<double> x0_;
   std::vector<double> xs_;
   int n_;
+  std::vector<ZoneRow> zones_;  // linear rows: their Hessian is zero
+  std::vector<int> fixed_;
 };
 
 }  // namespace
 
-LocalResult run_ipopt(const SmoothProblem& problem, const Program& start, const LocalOptions& options,
-                      const std::function<double(const Program&)>& value_of) {
-  LocalResult out;
-  out.program = start;
-  out.value = value_of(start);
-  if (!std::isfinite(out.value)) {
-    out.summary.message = "rank-deficient start: no local model";
-    return out;
-  }
-  Ipopt::SmartPtr<ProgramNlp> nlp = new ProgramNlp(problem, problem.start(start));
+Ipopt::SmartPtr<Ipopt::IpoptApplication> ipopt_application() {
   // One application per thread, reused: creating and initialising Ipopt costs more than a whole
   // D optimisation at N = 18. (Sequential MUMPS is not thread-safe: synthesize() forks instead.)
   thread_local Ipopt::SmartPtr<Ipopt::IpoptApplication> app;
@@ -146,11 +181,25 @@ LocalResult run_ipopt(const SmoothProblem& problem, const Program& start, const 
     app->Options()->SetStringValue("sb", "yes");
     app->Options()->SetStringValue("mu_strategy", "adaptive");
     app->Options()->SetIntegerValue("min_refinement_steps", 0);  // refine only when the residual asks for it
-    if (app->Initialize() != Ipopt::Solve_Succeeded) {
-      app = nullptr;
-      out.summary.message = "Ipopt could not be initialised";
-      return out;
-    }
+    if (app->Initialize() != Ipopt::Solve_Succeeded) app = nullptr;
+  }
+  return app;
+}
+
+LocalResult run_ipopt(const SmoothProblem& problem, const Program& start, const LocalOptions& options,
+                      const std::function<double(const Program&)>& value_of, const PositionBounds* bounds) {
+  LocalResult out;
+  out.program = start;
+  out.value = value_of(start);
+  if (!std::isfinite(out.value)) {
+    out.summary.message = "rank-deficient start: no local model";
+    return out;
+  }
+  Ipopt::SmartPtr<ProgramNlp> nlp = new ProgramNlp(problem, problem.start(start), bounds);
+  const Ipopt::SmartPtr<Ipopt::IpoptApplication> app = ipopt_application();
+  if (Ipopt::IsNull(app)) {
+    out.summary.message = "Ipopt could not be initialised";
+    return out;
   }
   app->Options()->SetStringValue("hessian_approximation", "exact");
   app->Options()->SetNumericValue("tol", options.tolerance);

@@ -48,6 +48,29 @@ LocalResult local_start(const Program& start, LocalSolver solver) {
   }
 }
 
+// The best of the starts (lowest value, then lowest start index) with its summary.
+template <Criterion C>
+SynthesisResult best_of_starts(const std::vector<LocalResult>& results) {
+  std::size_t best = 0;
+  for (std::size_t k = 1; k < results.size(); ++k)
+    if (results[k].value < results[best].value) best = k;
+  SynthesisResult out;
+  out.program = results[best].program;
+  out.value = results[best].value;
+  out.summary = results[best].summary;
+  return out;
+}
+
+// How many starts reached out.value, and how many different programs those are up to C's symmetry.
+template <Criterion C>
+void count_hits(const std::vector<LocalResult>& results, SynthesisResult& out) {
+  std::vector<Program> optima;
+  for (const auto& r : results)
+    if (r.value <= out.value * (1 + kHitTolerance)) optima.push_back(r.program);
+  out.hits = static_cast<int>(optima.size());
+  out.distinct = count_distinct(optima, C::symmetry, kSameProgramTolerance);
+}
+
 template <Criterion C, class Model = Paper9Model>
 SynthesisResult synthesize(const SynthesisOptions& options) {
   if (options.positions < Model::kParameters)
@@ -63,12 +86,7 @@ SynthesisResult synthesize(const SynthesisOptions& options) {
         return local_start<C, Model>(start, options.local);
       },
       options.progress);
-  SynthesisResult out;
-  std::size_t best = 0;
-  for (std::size_t k = 1; k < results.size(); ++k)
-    if (results[k].value < results[best].value) best = k;
-  out.program = results[best].program;
-  out.value = results[best].value;
+  SynthesisResult out = best_of_starts<C>(results);
   out.starts = starts;
   out.local_solver = uses_newton<C>(options.local) ? "newton" : "ipopt";
   if (uses_newton<C>(options.local)) {
@@ -88,15 +106,10 @@ SynthesisResult synthesize(const SynthesisOptions& options) {
       out.value = check.value;
     }
   } else {
-    out.summary = results[best].summary;
     out.summary.message = out.summary.converged() ? "the best Ipopt start converged"
                                                   : "the best Ipopt start did not converge";
   }
-  std::vector<Program> optima;
-  for (const auto& r : results)
-    if (r.value <= out.value * (1 + kHitTolerance)) optima.push_back(r.program);
-  out.hits = static_cast<int>(optima.size());
-  out.distinct = count_distinct(optima, C::symmetry, kSameProgramTolerance);
+  count_hits<C>(results, out);
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;
 }

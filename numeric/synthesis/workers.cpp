@@ -146,4 +146,19 @@ std::vector<LocalResult> run_in_workers(int tasks, int workers, int positions,
   return results;
 }
 
+std::vector<double> run_in_child(int size, const std::function<std::vector<double>()>& f) {
+  const int positions = (size + 2) / 3;
+  const LocalResult r = run_in_workers(1, 1, positions, [&](int) {
+    std::vector<double> v = f();
+    v.resize(static_cast<std::size_t>(3 * positions), 0.0);
+    LocalResult out;
+    for (int i = 0; i < positions; ++i) out.program.positions.emplace_back(v[3 * i], v[3 * i + 1], v[3 * i + 2]);
+    return out;
+  })[0];
+  std::vector<double> out;
+  for (const Vec3& x : r.program.positions) out.insert(out.end(), {x(0), x(1), x(2)});
+  out.resize(static_cast<std::size_t>(size));
+  return out;
+}
+
 }  // namespace scalcal

@@ -16,4 +16,8 @@ std::vector<LocalResult> run_in_workers(int tasks, int workers, int positions,
                                         const std::function<LocalResult(int)>& task,
                                         const std::function<void(int done, int total)>& progress = {});
 
+// f() in one child process (for work that initialises Ipopt, whose MUMPS state a later fork must
+// not inherit); its `size` doubles come back through the same pipe as a program's coordinates.
+std::vector<double> run_in_child(int size, const std::function<std::vector<double>()>& f);
+
 }  // namespace scalcal
