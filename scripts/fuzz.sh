@@ -11,12 +11,12 @@ bash scripts/install-deps.sh
 flags="-O1 -g1 -fno-omit-frame-pointer -fsanitize=address,undefined -fno-sanitize-recover=all -fsanitize=fuzzer-no-link"
 cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=None -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_CXX_FLAGS="$flags" \
   -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" -DSCALCAL_FUZZ=ON >/dev/null
-targets=(fuzz_program_csv fuzz_measurements_csv fuzz_catalogue_name)
+targets=(fuzz_program_csv fuzz_measurements_csv fuzz_catalogue_name fuzz_region_spec)
 cmake --build build-fuzz -j"$(nproc)" $(printf -- '--target %s ' "${targets[@]}")
 
 # Seeds: the programs and bench files in the repository, and a few catalogue names.
 corpus=build-fuzz/corpus
-rm -rf "$corpus" && mkdir -p "$corpus"/{fuzz_program_csv,fuzz_measurements_csv,fuzz_catalogue_name} build-fuzz/findings
+rm -rf "$corpus" && mkdir -p "$corpus"/{fuzz_program_csv,fuzz_measurements_csv,fuzz_catalogue_name,fuzz_region_spec} build-fuzz/findings
 find data experiments/docs -name '*.csv' | while read -r f; do
   if head -c 4096 "$f" | grep -q 'ix'; then
     for m in 0 1; do { printf "\\x3$m"; cat "$f"; } >"$corpus/fuzz_measurements_csv/$m-$(basename "$f")"; done
@@ -28,6 +28,10 @@ i=0
 for name in classic18 rotation-6 rotation-6-p15 octahedral-1-0-1 random-18-s7 dodecahedral-12 icosahedral-20 \
   nine-2axes table1-A table3-S; do
   printf '%s' "$name" >"$corpus/fuzz_catalogue_name/$((i++))"
+done
+i=0
+for specs in sphere cap:30 'cap:30:1,1,1' band:60:120 'band:10:170:0,1,0' faces:20 $'cap:20\ncap:20:0,0,-1'; do
+  printf '%s' "$specs" >"$corpus/fuzz_region_spec/$((i++))"
 done
 export SCALCAL_DATA="$PWD/data"
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1"

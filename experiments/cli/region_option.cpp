@@ -5,6 +5,7 @@
 
 #include "experiments/cli/options.hpp"
 #include "numeric/criteria/identifiability.hpp"
+#include "numeric/io/input_error.hpp"
 
 namespace scalcal::cli {
 
@@ -18,6 +19,14 @@ void add_region_option(CLI::App& app, std::vector<std::string>& specs) {
 Region resolve_region(const std::vector<std::string>& specs, const std::string& command) {
   Region region = parse_region(specs);
   const double condition = check_region_identifiable(region);
+  if (condition > kBeyondDouble) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%.3g", condition);
+    throw InputError("--region", 0,
+                     "'" + region.text() + "': even the uniform measure has condition number " + text +
+                         ", beyond what double precision resolves (1e14): bias and scale factor are confounded "
+                         "there (a cap narrower than about 4 degrees)");
+  }
   if (condition > kIllConditioned) {
     char text[64];
     std::snprintf(text, sizeof text, "%.3g", condition);

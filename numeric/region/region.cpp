@@ -286,8 +286,8 @@ Region parse_region(const std::vector<std::string>& specs) {
 namespace scalcal {
 
 double check_region_identifiable(const Region& region) {
-  Program grid;
-  grid.positions = region.grid(4.0);
+  Program grid;  // fine enough that even a cap of a fraction of a degree gets many positions
+  grid.positions = region.grid(region.grid_step_for(500, 0.001, 4.0));
   if (grid.size() < kMinimumPositions)
     throw InputError("--region", 0,
                      "'" + display_name(region.text()) + "' has only " + std::to_string(grid.size()) +

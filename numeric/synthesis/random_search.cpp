@@ -59,15 +59,17 @@ __attribute__((target_clones("arch=x86-64-v3", "default")))
 #endif
 // `score` is the criterion's score_information<C>; `batched` its kDeterminantOnly path.
 void search_chunk(Xoshiro256x4& rng, long long begin, long long end, int n, double (*score)(const double*, int),
-                  bool batched, Buffers& buf,
-                  Best& mine) {
+                  bool batched, const PositionSampler& sampler, Buffers& buf, Best& mine) {
   const int np = padded_size(n);
   alignas(32) double m[45][kLanes];
   double m45[45];
   for (long long k0 = begin; k0 < end; k0 += kLanes) {
     const int lanes = static_cast<int>(std::min<long long>(kLanes, end - k0));
     for (int l = 0; l < lanes; ++l) {
-      sample_sphere(rng, n, buf.x(l), buf.y(l), buf.z(l));
+      if (sampler)
+        sampler(rng, n, buf.x(l), buf.y(l), buf.z(l));
+      else
+        sample_sphere(rng, n, buf.x(l), buf.y(l), buf.z(l));
       accumulate_information(buf.x(l), buf.y(l), buf.z(l), np, n, m45);
       for (int e = 0; e < 45; ++e) m[e][l] = m45[e];
     }
@@ -89,7 +91,7 @@ void search_chunk(Xoshiro256x4& rng, long long begin, long long end, int n, doub
 }  // namespace
 
 RandomSearchResult random_search(int positions, long long count, CriterionKind criterion, std::uint64_t seed,
-                                 int threads) {
+                                 int threads, const PositionSampler& sampler) {
   if (positions < 9) throw std::invalid_argument("random_search: at least 9 positions are needed");
   if (count < 1) throw std::invalid_argument("random_search: count must be positive");
   const auto t0 = std::chrono::steady_clock::now();
@@ -105,7 +107,7 @@ RandomSearchResult random_search(int positions, long long count, CriterionKind c
     mine.eta.assign(static_cast<std::size_t>(3 * positions), 0.0);
     for (long long c; (c = next.fetch_add(1)) < chunks;) {
       Xoshiro256x4 rng(start_seed(seed ^ kRandomStream, static_cast<std::uint64_t>(c)));
-      search_chunk(rng, c * kChunk, std::min(count, (c + 1) * kChunk), positions, score, batched, buf, mine);
+      search_chunk(rng, c * kChunk, std::min(count, (c + 1) * kChunk), positions, score, batched, sampler, buf, mine);
     }
   };
   std::vector<std::thread> pool;

@@ -2,6 +2,7 @@
 // (random_search_kernel.hpp) on all cores; the same seed gives the same answer on any thread count.
 #pragma once
 #include <cstdint>
+#include <functional>
 
 #include "numeric/criteria/registry.hpp"
 #include "numeric/program/program.hpp"
@@ -15,8 +16,15 @@ struct RandomSearchResult {
   double seconds = 0;
 };
 
+class Xoshiro256x4;
+
+// Draws n positions into x, y, z (each with room for sample_buffer_size(n) of
+// random_search_kernel.hpp, zero past n) from the generator: how the random programs of a
+// restricted bench are made (numeric/region/region_sampler.hpp). Empty: uniform on the sphere.
+using PositionSampler = std::function<void(Xoshiro256x4& rng, int n, double* x, double* y, double* z)>;
+
 // Throws std::invalid_argument when positions < 9 or count < 1.
 RandomSearchResult random_search(int positions, long long count, CriterionKind criterion, std::uint64_t seed,
-                                 int threads = 0);
+                                 int threads = 0, const PositionSampler& sampler = {});
 
 }  // namespace scalcal

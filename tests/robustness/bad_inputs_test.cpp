@@ -271,6 +271,32 @@ std::vector<Case> cases() {
          for (auto& e : p.positions) e *= std::ldexp(1.0, 990);
          return "evaluate --json " + file("p300.csv", program_text(p));
        }, E::same, {}, [] { return "evaluate --json " + file("lf.csv", program_text(Program::classic18())); }},
+      // Regions of a bench (issue 11): malformed, out of range, degenerate, unreadable, refused.
+      {"RegionNotANumber", [] { return std::string("limits --region cap:abc"); }, E::error,
+       {"--region", "'abc' is not a number"}},
+      {"RegionAngleRange", [] { return std::string("optimize --positions 12 --region cap:200"); }, E::error,
+       {"--region", "outside [0, 180] degrees"}},
+      {"RegionZeroAxis", [] { return std::string("random --positions 12 --count 10 --region cap:30:0,0,0"); }, E::error,
+       {"--region", "zero vector"}},
+      {"RegionUnknown", [] { return std::string("sweep --positions 12 --criteria D --region torus:3"); }, E::error,
+       {"--region", "unknown region 'torus'"}},
+      {"RegionEmptyBand", [] { return std::string("evaluate classic18 --region band:60:60"); }, E::error,
+       {"--region", "LO must be less than HI"}},
+      {"RegionGreatCircle", [] {
+         std::string csv = "x,y,z\n";
+         for (int k = 0; k < 12; ++k) csv += std::to_string(std::cos(0.5 * k)) + "," + std::to_string(std::sin(0.5 * k)) + ",0\n";
+         return "limits --region candidates:" + file("equator.csv", csv);
+       }, E::error, {"--region", "rank 9", "not identifiable"}},
+      {"RegionCandidatesBinary", [] { return std::string("limits --region candidates:/dev/urandom"); }, E::error,
+       {"/dev/urandom", "not a text file"}},
+      {"RegionOutside", [] { return std::string("evaluate classic18 --region cap:30"); }, E::error,
+       {"classic18", "outside the region cap:30", "tilt"}},
+      {"RegionDigits", [] { return std::string("optimize --positions 12 --region cap:60 --digits 20"); }, E::error,
+       {"--digits", "--region cap:60"}},
+      {"RegionTinyCap", [] { return std::string("optimize --positions 12 --region cap:3 --starts 1"); }, E::error,
+       {"--region", "condition number", "beyond what double precision resolves"}},
+      {"RegionSmallCap", [] { return std::string("optimize --positions 12 --region cap:5 --starts 1"); }, E::warn,
+       {"warning", "condition number", "nearly confounded"}},
       // Output that cannot be written.
       {"OutFull", [] { return std::string("evaluate classic18 --out /dev/full"); }, E::write, {"/dev/full"}},
       {"OptimizeOutFull", [] { return std::string("optimize --positions 12 --starts 2 --out /dev/full"); }, E::write,
@@ -279,6 +305,8 @@ std::vector<Case> cases() {
        E::write, {"/dev/full"}},
       {"OutNoDirectory", [] { return std::string("evaluate classic18 --out /nonexistent/p.csv"); }, E::write,
        {"/nonexistent/p.csv"}},
+      {"AugmentOutFull", [] { return std::string("augment --program classic18 --add 2 --region cap:60 --out /dev/full"); },
+       E::write, {"/dev/full"}},
   };
 }
 
