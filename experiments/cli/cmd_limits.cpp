@@ -2,6 +2,8 @@
 // measures on the sphere, derived symbolically (symbolic/limits.hpp), with the moments of an
 // optimal measure; on a restricted region, an optimal measure found numerically and a lower bound
 // certified by weak duality over the whole region (numeric/region/region_limit.hpp).
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -80,6 +82,12 @@ int region_limits(const Options& o) {
     entry["candidates"] = l.candidates;
     entry["refinements"] = l.refinements;
     entry["equivalence_gap"] = l.equivalence_gap;
+    // The optimal measure's RMS errors per group, theta_q = sqrt(max K(r,r)) (normalised as N = 1).
+    for (int g = 0; g < 3; ++g) {
+      double worst = 0;
+      for (int r : group_members<Paper9Model>(static_cast<ParameterGroup>(g))) worst = std::max(worst, l.K(r, r));
+      entry["theta_" + std::string(kGroupNames[static_cast<std::size_t>(g)])] = std::sqrt(worst);
+    }
     out[std::string(criterion_name(c))] = entry;
     if (o.json) continue;
     std::cout << criterion_name(c) << " >= " << text("%.10g", l.value) << " (numerically, an optimal measure on "

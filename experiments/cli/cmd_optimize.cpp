@@ -95,7 +95,7 @@ int run(Options& o) {
               << std::setprecision(3) << r.seconds << " s)\n";
     if (limit)
       std::cout << "on " << region->text() << ": limit " << std::setprecision(10) << *limit << ", efficiency "
-                << std::setprecision(6) << efficiency(opt.criterion, *limit, r.value)
+                << std::setprecision(9) << efficiency(opt.criterion, *limit, r.value)
                 << " (limit / value; D as its 9th root)\n";
     if (polished)
       std::cout << criterion_name(opt.criterion) << " = " << polished->value_digits << "  (" << polished->digits

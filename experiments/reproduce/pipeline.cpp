@@ -62,6 +62,7 @@ RunSummary run(const Options& options, bool show_progress) {
       {"figure 9", figure_9},
       {"figure 10", figure_limits},
       {"figure 11", figure_sphere},
+      {"figure 12", figure_regions},
       {"tables 1-3", tables_1_2_3},
       {"summary", summary},
   };

@@ -23,16 +23,12 @@ constexpr double kInf = 2e19;
 
 int pair(int a, int b) { return a >= b ? a * (a + 1) / 2 + b : b * (b + 1) / 2 + a; }
 
-// A smooth criterion's phi(M) and its derivatives d phi = tr(G dM), dG = c (A dM B + B dM A);
-// false where M is not positive definite.
-using SmoothObjective = std::function<bool(const Mat9& M, MatrixDerivatives<double, P>& d)>;
-
 // Variables w (n), then the form's extras; rows: sum w = 1, then the form's constraints (dense).
 // The smooth form has no extras and no constraints of its own; its exact Hessian is n x n dense,
 // d^2 phi / dw_i dw_j = 2 c (h_i^T A h_j)(h_i^T B h_j).
 class WeightsNlp : public Ipopt::TNLP {
  public:
-  enum class Form { Smooth, Eigenvalue, Diagonal };
+  using Form = WeightForm;
 
   WeightsNlp(Form form, const std::vector<Vec3>& candidates, const std::vector<double>& start, std::vector<int> rows,
              SmoothObjective objective = {})
@@ -277,17 +273,12 @@ class WeightsNlp : public Ipopt::TNLP {
   Ipopt::SolverReturn status_ = Ipopt::INTERNAL_ERROR;
 };
 
-template <class Crit>
-std::optional<ExactWeights> solve(const std::vector<Vec3>& candidates, const std::vector<double>& start) {
+}  // namespace
+
+std::optional<ExactWeights> exact_weights(WeightForm form, const std::vector<Vec3>& candidates,
+                                          const std::vector<double>& start, const std::vector<int>& rows,
+                                          const SmoothObjective& objective) {
   const int n = static_cast<int>(candidates.size());
-  std::vector<int> rows;
-  if constexpr (MaxDiagonalCriterion<Crit>) rows = Crit::template rows<Model>();
-  constexpr auto form = SmoothCriterion<Crit>         ? WeightsNlp::Form::Smooth
-                        : MaxEigenvalueCriterion<Crit> ? WeightsNlp::Form::Eigenvalue
-                                                       : WeightsNlp::Form::Diagonal;
-  SmoothObjective objective;
-  if constexpr (SmoothCriterion<Crit>)
-    objective = [](const Mat9& M, MatrixDerivatives<double, P>& d) { return Crit::derivatives(M, 1, d); };
   // The solve runs in a child process: Ipopt's MUMPS state must not be inherited by later forks.
   const int size = 1 + n + 81 + static_cast<int>(rows.size());
   const std::vector<double> packed = run_in_child(size, [&] {
@@ -303,11 +294,11 @@ std::optional<ExactWeights> solve(const std::vector<Vec3>& candidates, const std
     out[0] = 1.0;
     for (int i = 0; i < n; ++i) out[static_cast<std::size_t>(1 + i)] = std::max(0.0, nlp->solution()[static_cast<std::size_t>(i)]);
     const std::vector<double>& lambda = nlp->multipliers();
-    if (form == WeightsNlp::Form::Eigenvalue) {
+    if (form == WeightForm::Eigenvalue) {
       for (int a = 0; a < P; ++a)
         for (int b = 0; b < P; ++b)  // Z = -Lambda, off-diagonal multipliers halved
           out[static_cast<std::size_t>(1 + n + 9 * a + b)] = -(a == b ? 1.0 : 0.5) * lambda[static_cast<std::size_t>(1 + pair(a, b))];
-    } else if (form == WeightsNlp::Form::Diagonal) {
+    } else if (form == WeightForm::Diagonal) {
       for (std::size_t r = 0; r < rows.size(); ++r) out[static_cast<std::size_t>(1 + n + 81) + r] = std::max(0.0, lambda[1 + r]);
     }
     return out;
@@ -320,7 +311,7 @@ std::optional<ExactWeights> solve(const std::vector<Vec3>& candidates, const std
   for (double v : w.weights) total += v;
   for (double& v : w.weights) v /= total;
   w.dual = Mat9::Zero();
-  if (form == WeightsNlp::Form::Eigenvalue) {
+  if (form == WeightForm::Eigenvalue) {
     for (int a = 0; a < P; ++a)
       for (int b = 0; b < P; ++b) w.dual(a, b) = packed[static_cast<std::size_t>(1 + n + 9 * a + b)];
     // Any Z >= 0 gives a valid certificate: clip the multipliers' rounding to the PSD cone.
@@ -329,20 +320,13 @@ std::optional<ExactWeights> solve(const std::vector<Vec3>& candidates, const std
     w.dual = eig.eigenvectors() * l.asDiagonal() * eig.eigenvectors().transpose();
     if (!(w.dual.trace() > 0)) return std::nullopt;
     w.dual /= w.dual.trace();
-  } else if (form == WeightsNlp::Form::Diagonal) {
+  } else if (form == WeightForm::Diagonal) {
     double sum = 0;
     for (std::size_t r = 0; r < rows.size(); ++r) sum += packed[static_cast<std::size_t>(1 + n + 81) + r];
     if (!(sum > 0)) return std::nullopt;
     for (std::size_t r = 0; r < rows.size(); ++r) w.row_weights.push_back(packed[static_cast<std::size_t>(1 + n + 81) + r] / sum);
   }
   return w;
-}
-
-}  // namespace
-
-std::optional<ExactWeights> exact_weights(CriterionKind criterion, const std::vector<Vec3>& candidates,
-                                          const std::vector<double>& start) {
-  return visit_criterion(criterion, [&](auto C) { return solve<decltype(C)>(candidates, start); });
 }
 
 }  // namespace scalcal

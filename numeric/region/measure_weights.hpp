@@ -6,11 +6,12 @@
 // the dual of the optimum (the eigenvalue form's Z, the diagonal form's row weights), which the
 // region's certificate needs.
 #pragma once
+#include <functional>
 #include <optional>
 #include <vector>
 
-#include "numeric/criteria/registry.hpp"
-#include "numeric/model/model.hpp"
+#include "numeric/criteria/criterion.hpp"
+#include "numeric/model/paper9.hpp"
 
 namespace scalcal {
 
@@ -21,8 +22,30 @@ struct ExactWeights {
   bool converged = false;
 };
 
-// start: weights to begin from (the multiplicative algorithm's). Empty when Ipopt fails.
-std::optional<ExactWeights> exact_weights(CriterionKind criterion, const std::vector<Vec3>& candidates,
-                                          const std::vector<double>& start);
+enum class WeightForm { Smooth, Eigenvalue, Diagonal };
+
+// A smooth criterion's phi(M) and its derivatives d phi = tr(G dM), dG = c (A dM B + B dM A);
+// false where M is not positive definite.
+using SmoothObjective = std::function<bool(const Mat9& M, MatrixDerivatives<double, 9>& d)>;
+
+// The solve itself (measure_weights.cpp), for a form: `rows` of a diagonal form, `objective` of a
+// smooth one. start: weights to begin from (the multiplicative algorithm's). Empty when Ipopt fails.
+std::optional<ExactWeights> exact_weights(WeightForm form, const std::vector<Vec3>& candidates,
+                                          const std::vector<double>& start, const std::vector<int>& rows,
+                                          const SmoothObjective& objective);
+
+// The same for a criterion type, registered or not.
+template <Criterion Crit>
+std::optional<ExactWeights> exact_weights(const std::vector<Vec3>& candidates, const std::vector<double>& start) {
+  if constexpr (SmoothCriterion<Crit>) {
+    return exact_weights(WeightForm::Smooth, candidates, start, {},
+                         [](const Mat9& M, MatrixDerivatives<double, 9>& d) { return Crit::derivatives(M, 1, d); });
+  } else if constexpr (MaxEigenvalueCriterion<Crit>) {
+    return exact_weights(WeightForm::Eigenvalue, candidates, start, {}, {});
+  } else {
+    static_assert(MaxDiagonalCriterion<Crit>, "exact_weights: a criterion of an unknown form");
+    return exact_weights(WeightForm::Diagonal, candidates, start, Crit::template rows<Paper9Model>(), {});
+  }
+}
 
 }  // namespace scalcal

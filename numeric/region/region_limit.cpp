@@ -45,6 +45,12 @@ RegionLimit zonal_limit(const Zone& zone) {
   out.equivalence_gap = m.equivalence_gap;
   zonal_positions(zone, m, out.support, out.weights);
   out.candidates = static_cast<int>(out.support.size());
+  Mat9 M = Mat9::Zero();
+  for (std::size_t i = 0; i < out.support.size(); ++i) {
+    const Vec9 h = Model::row(out.support[i]);
+    M += out.weights[i] * h * h.transpose();
+  }
+  out.K = M.llt().solve(Mat9::Identity());
   return out;
 }
 
@@ -100,7 +106,7 @@ void exact_weights_of(const std::vector<Vec3>& candidates, std::vector<double>& 
                       std::optional<ExactDual<P>>& dual) {
   if (candidates.size() > kExactCandidates) return;
   {
-    if (const auto exact = exact_weights(CriterionKind::of<Crit>(), candidates, weights)) {
+    if (const auto exact = exact_weights<Crit>(candidates, weights)) {
       Eigen::LLT<Mat9> llt(information(candidates, exact->weights));
       const Mat9 Ke = llt.solve(Mat9::Identity());
       if (llt.info() == Eigen::Success && criterion_value<Crit>(Ke) <= criterion_value<Crit>(K)) {
@@ -203,8 +209,9 @@ RegionLimit limit_of(const Region& region, const RegionLimitOptions& options) {
     exact_weights_of<Crit>(candidates, weights, K, dual);
   }
   out.value = criterion_value<Crit>(K);
+  out.K = K;
   if (sphere) out.lower_bound = sphere->value;
-  if (!near_sphere && !(sphere && out.value <= sphere->value * (1 + kAtSphereLimit))) {
+  if (options.certify && !near_sphere && !(sphere && out.value <= sphere->value * (1 + kAtSphereLimit))) {
     if (const auto certificate = dual_certificate<Crit, Model>(K, sharpness, dual ? &*dual : nullptr)) {
       // The proof: weak duality with the sup of the certificate's function over the whole region.
       double upper = 0;

@@ -12,6 +12,7 @@ namespace scalcal {
 
 struct RegionLimit {
   double value = 0;                   // the criterion of the measure below (normalised, weights sum 1)
+  Mat9 K = Mat9::Zero();              // the measure's inverse information matrix (its thetas: sqrt K(r,r))
   std::optional<double> lower_bound;  // certified; empty for a criterion without a dual bound
   std::vector<Vec3> support;          // positions of the measure with weight >= 1e-6
   std::vector<double> weights;        // their weights (the rest of the mass is below 1e-6 each)
@@ -24,7 +25,7 @@ struct RegionLimit {
 struct RegionLimitOptions {
   double grid_step_deg = 4.0;  // the first candidates: rings this far apart
   int max_refinements = 6;
-  double relative_gap = 1e-6;  // stop refining once (value - lower_bound) / value is below
+  bool certify = true;         // false: the value only (no interval search; lower_bound only the sphere's)
 };
 
 RegionLimit region_limit(CriterionKind c, const Region& region, const RegionLimitOptions& options = {});

@@ -1,0 +1,195 @@
+// fig12 (new, issue 11): what a restricted bench costs. For caps (tilt up to theta from one axis),
+// bands (elevation within theta of a plane) and the six remounted faces (tilt up to theta from each
+// axis): (a) each criterion's limit on the region relative to the sphere's, (b) the RMS errors
+// theta_q of the region's D-optimal measure relative to the sphere's, (c) the smallest N whose best
+// program comes within 1 % of the region's D limit. Data: fig12.csv, fig12_thetas.csv, fig12_n.csv.
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <optional>
+#include <tuple>
+
+#include "experiments/reproduce/figures.hpp"
+#include "experiments/reproduce/format.hpp"
+#include "numeric/program/catalogue.hpp"
+#include "numeric/region/region_limit.hpp"
+#include "numeric/region/region_synthesis.hpp"
+#include "plots/csv_writer.hpp"
+#include "plots/figure.hpp"
+
+namespace scalcal::reproduce {
+namespace {
+
+// Angles as a user types them: "30", "22.5".
+std::string angle(double deg) {
+  char s[32];
+  std::snprintf(s, sizeof s, "%g", deg);
+  return s;
+}
+
+struct Family {
+  const char* name;   // cap, band, faces
+  const char* label;  // for the key
+  std::vector<double> angles;
+  std::string spec(double theta) const {
+    if (std::string(name) == "band") return "band:" + angle(90 - theta) + ":" + angle(90 + theta);
+    return std::string(name) + ":" + angle(theta);
+  }
+};
+
+std::vector<Family> families(bool quick) {
+  if (quick) return {{"cap", "cap", {30, 90}}, {"band", "band", {30}}, {"faces", "six faces", {20}}};
+  return {{"cap", "cap", {10, 20, 30, 45, 60, 90, 120, 135, 150, 180}},
+          {"band", "band", {10, 20, 30, 45, 60, 90}},
+          {"faces", "six faces", {5, 10, 20, 30, 45}}};
+}
+
+// sqrt(max K(r,r)) over each group: the measure's normalised RMS errors.
+std::array<double, 3> thetas(const Mat9& K) {
+  std::array<double, 3> out{};
+  for (int g = 0; g < 3; ++g)
+    for (int r : group_members<Paper9Model>(static_cast<ParameterGroup>(g))) out[g] = std::max(out[g], std::sqrt(K(r, r)));
+  return out;
+}
+
+// The smallest N of `sizes` whose best program on the region comes within 1 % of `limit`.
+std::optional<std::pair<int, double>> smallest_n(const Region& region, double limit, const std::vector<int>& sizes,
+                                                 const Context& ctx) {
+  for (int n : sizes) {
+    SynthesisOptions o;
+    o.positions = n;
+    o.criterion = CriterionKind::D;
+    o.starts = ctx.options.quick ? 2 : 4;
+    o.seed = ctx.options.seed;
+    o.threads = ctx.threads();
+    const SynthesisResult r = synthesize_on_region(o, region);
+    if (r.value <= 1.01 * limit) return std::make_pair(n, r.value);
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+using plots::CsvWriter;
+
+void figure_regions(Context& ctx) {
+  auto& rep = ctx.report;
+  rep.heading(2, "fig12 (new): what a restricted bench costs");
+  CsvWriter limits(ctx.file("fig12.csv"), {"family", "theta_deg", "region", "criterion", "value", "relative_to_sphere"});
+  CsvWriter errors(ctx.file("fig12_thetas.csv"),
+                   {"family", "theta_deg", "region", "theta_bias", "theta_scale", "theta_nonorth", "bias_relative",
+                    "scale_relative", "nonorth_relative"});
+  CsvWriter sizes(ctx.file("fig12_n.csv"), {"family", "theta_deg", "region", "smallest_N", "D", "ratio"});
+  // The sphere's D-optimal measure: any 4-design, e.g. the dodecahedral jig's 12 face normals.
+  const std::array<double, 3> sphere_thetas = [] {
+    const Evaluation ev = evaluate(resolve_program("dodecahedral-12"));
+    return std::array<double, 3>{ev.theta_bias, ev.theta_scale, ev.theta_nonorth};
+  }();
+  RegionLimitOptions quick_limits;
+  quick_limits.certify = false;  // the values only: `scalcal limits --region` proves each bound
+  quick_limits.max_refinements = 3;
+  std::vector<int> n_scan;  // every N from 9 up, until one comes within 1 %
+  for (int n = 9; n <= (ctx.options.quick ? 12 : 40); ++n) n_scan.push_back(n);
+  std::string n_table = "| region | smallest N within 1 % of the D limit | its D / limit |\n| --- | ---: | ---: |\n";
+  struct LimitRow {
+    std::string family;
+    CriterionKind criterion;
+    double theta;
+    std::vector<std::string> cells;
+  };
+  std::vector<LimitRow> rows;
+  ctx.progress.stage("region limits and smallest N (fig12)");
+  long long total = 0, done = 0;
+  for (const auto& f : families(ctx.options.quick)) total += static_cast<long long>(f.angles.size());
+  for (const auto& f : families(ctx.options.quick))
+    for (double theta : f.angles) {
+      ctx.progress.step(done++, total);
+      const std::string spec = f.spec(theta);
+      const Region region = parse_region({spec});
+      std::optional<RegionLimit> d_limit;
+      for (auto c : kCriteria) {
+        const RegionLimit l = region.is_sphere() ? RegionLimit{} : region_limit(c, region, quick_limits);
+        const double value = region.is_sphere() ? criterion_limit(c).value : l.value;
+        rows.push_back({f.name, c, theta, {f.name, csv_num(theta), spec, std::string(criterion_name(c)), csv_num(value),
+                                           csv_num(value / criterion_limit(c).value)}});
+        if (c == CriterionKind::D && !region.is_sphere()) d_limit = l;
+      }
+      const std::array<double, 3> t = d_limit ? thetas(d_limit->K) : sphere_thetas;
+      errors.row({f.name, csv_num(theta), spec, csv_num(t[0]), csv_num(t[1]), csv_num(t[2]), csv_num(t[0] / sphere_thetas[0]),
+                  csv_num(t[1] / sphere_thetas[1]), csv_num(t[2] / sphere_thetas[2])});
+      const double limit = d_limit ? d_limit->value : criterion_limit(CriterionKind::D).value;
+      const auto n = smallest_n(region, limit, n_scan, ctx);
+      sizes.row({f.name, csv_num(theta), spec, n ? std::to_string(n->first) : "", n ? csv_num(n->second) : "",
+                 n ? csv_num(n->second / limit) : ""});
+      n_table += "| `" + spec + "` | " + (n ? std::to_string(n->first) : "over " + std::to_string(n_scan.back())) + " | " +
+                 (n ? decimal(n->second / limit, 5) : "") + " |\n";
+    }
+  // By family, then criterion, then angle: each curve is one run of rows, so gnuplot joins it.
+  std::stable_sort(rows.begin(), rows.end(), [](const LimitRow& a, const LimitRow& b) {
+    return std::tie(a.family, a.criterion) < std::tie(b.family, b.criterion);
+  });
+  for (const auto& row : rows) limits.row(row.cells);
+  limits.close();
+  errors.close();
+  sizes.close();
+
+  using namespace plots::style;
+  const char* colours[] = {optimised, uniform, rotation, jig};
+  const char* dashes[] = {"1", "2", "3"};  // cap solid, band dashed, faces dotted
+  std::string body =
+      "set multiplot layout 1,3 margins 0.065,0.98,0.14,0.9 spacing 0.065,0\nset grid\nset xrange [0:185]\n"
+      "set xtics 30\nset xlabel 'half-angle θ (degrees)'\nset key top right\n";
+  body += "set title '(a) limit on the region / limit on the sphere'\nset logscale y\nset format y '10^{%T}'\n"
+          "set ylabel 'relative limit'\nplot ";
+  int k = 0;
+  const auto fams = families(ctx.options.quick);
+  // Colour and point say the criterion, the dash the family: a key of seven lines, not twelve.
+  for (std::size_t fi = 0; fi < fams.size(); ++fi)
+    for (int ci = 0; ci < 4; ++ci) {
+      const std::string cn(criterion_name(kCriteria[static_cast<std::size_t>(ci)]));
+      body += std::string(k++ ? ", \\\n     " : "") + "'fig12.csv' skip 1 using 2:((strcol(1) eq '" + fams[fi].name +
+              "' && strcol(4) eq '" + cn + "') ? $6 : NaN) with linespoints dt " + dashes[fi] + " pt " +
+              std::to_string(5 + 2 * ci) + " lw 2 lc rgb '" + colours[ci] + "' " +
+              (fi == 0 ? "title " + plots::gp_quote(cn) : std::string("notitle"));
+    }
+  for (std::size_t fi = 0; fi < fams.size(); ++fi)
+    body += ", \\\n     NaN with lines dt " + std::string(dashes[fi]) + " lw 2 lc rgb 'black' title " +
+            plots::gp_quote(fams[fi].label);
+  body += "\nset title '(b) RMS errors of the D-optimal measure / the sphere''s'\nset ylabel 'θ_q relative to the sphere'\nplot ";
+  const char* groups[] = {"bias", "scale", "nonorth"};
+  k = 0;
+  for (std::size_t fi = 0; fi < fams.size(); ++fi)
+    for (int g = 0; g < 3; ++g)
+      body += std::string(k++ ? ", \\\n     " : "") + "'fig12_thetas.csv' skip 1 using 2:(strcol(1) eq '" + fams[fi].name +
+              "' ? $" + std::to_string(7 + g) + " : NaN) with linespoints dt " + dashes[fi] + " pt " +
+              std::to_string(5 + 2 * g) + " lw 2 lc rgb '" + colours[g] + "' " +
+              (fi == 0 ? "title " + plots::gp_quote(std::string("θ_{") + groups[g] + "}") : std::string("notitle"));
+  for (std::size_t fi = 0; fi < fams.size(); ++fi)
+    body += ", \\\n     NaN with lines dt " + std::string(dashes[fi]) + " lw 2 lc rgb 'black' title " +
+            plots::gp_quote(fams[fi].label);
+  // The scan's largest N as a line: the panel has a point to draw even when no region was reached.
+  body += "\nset title '(c) smallest N within 1 % of the region''s D limit'\nunset logscale y\nset format y '%g'\n"
+          "set ylabel 'N'\nset yrange [0:" + std::to_string(n_scan.back() + 4) + "]\nplot " +
+          std::to_string(n_scan.back()) + " with lines dt 4 lc rgb '" + random + "' title 'largest N tried'";
+  for (std::size_t fi = 0; fi < fams.size(); ++fi)
+    body += std::string(", \\\n     ") + "'fig12_n.csv' skip 1 using 2:(strcol(1) eq '" + fams[fi].name +
+            "' ? $4 : NaN) with linespoints dt " + dashes[fi] + " pt 7 lw 2 lc rgb '" + colours[fi] + "' title " +
+            plots::gp_quote(fams[fi].label);
+  body += "\nunset multiplot\n";
+  render_figure(ctx, "fig12", "what a restricted bench costs: region limits, RMS errors and the N to reach them", body,
+                1800, 650);
+  rep.figure("fig12", "fig12: (a) each criterion's limit on a cap (solid), a band (dashed) and the six faces (dotted) "
+                      "relative to the sphere's; (b) the RMS errors of the region's D-optimal measure relative to the "
+                      "sphere's; (c) the smallest N within 1 % of the region's D limit");
+  rep.paragraph("Data: [fig12.csv](fig12.csv), [fig12_thetas.csv](fig12_thetas.csv), [fig12_n.csv](fig12_n.csv). A cap "
+                "of half-angle θ holds the directions within θ of +z, a band those within θ of the horizontal plane, "
+                "the six faces those within θ of ±x, ±y or ±z. D on a cap or band is exact (numeric/region/zonal_d.hpp, "
+                "proofs/cap_d_limit.md); A, E, S are optimal measures found numerically (`scalcal limits --region` "
+                "adds their proven lower bounds). The smallest N is the first of N = " + std::to_string(n_scan.front()) +
+                ", " + std::to_string(n_scan.front() + 1) + ", ..., " + std::to_string(n_scan.back()) +
+                " whose best program (" + std::to_string(ctx.options.quick ? 2 : 4) +
+                " exchange starts) comes within 1 %:");
+  rep.paragraph(n_table);
+}
+
+}  // namespace scalcal::reproduce
