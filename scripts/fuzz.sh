@@ -29,6 +29,9 @@ for name in classic18 rotation-6 rotation-6-p15 octahedral-1-0-1 random-18-s7 do
   nine-2axes table1-A table3-S; do
   printf '%s' "$name" >"$corpus/fuzz_catalogue_name/$((i++))"
 done
+for m in 2 6; do  # a raw log (text), magnitude auto and 1
+  { printf "\\x3$m"; head -c 30000 data/xsens_acc.txt; } >"$corpus/fuzz_measurements_csv/raw$m-xsens"
+done
 i=0
 for specs in sphere cap:30 'cap:30:1,1,1' band:60:120 'band:10:170:0,1,0' faces:20 $'cap:20\ncap:20:0,0,-1'; do
   printf '%s' "$specs" >"$corpus/fuzz_region_spec/$((i++))"

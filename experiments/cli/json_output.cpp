@@ -20,6 +20,7 @@ Json matrix_json(const Mat9& m) {
   return rows;
 }
 
-void print_json(const Json& j) { std::cout << j.dump(2) << "\n"; }
+void print_json(const Json& j) { write_json(std::cout, j); }
+void write_json(std::ostream& out, const Json& j) { out << j.dump(2) << "\n"; }
 
 }  // namespace scalcal::cli

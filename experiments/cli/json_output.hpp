@@ -1,6 +1,8 @@
 // JSON output of the CLI through nlohmann::ordered_json: keys stay in the documented order, doubles
 // print in the shortest form that reads back to the same bits, NaN and infinity print as null.
 #pragma once
+#include <ostream>
+
 #include <nlohmann/json.hpp>
 
 #include "numeric/model/paper9.hpp"
@@ -13,5 +15,6 @@ using Json = nlohmann::ordered_json;
 Json program_json(const Program& program);  // [[x, y, z], ...]
 Json matrix_json(const Mat9& m);            // nine rows of nine numbers
 void print_json(const Json& j);             // to stdout, indented, one trailing newline
+void write_json(std::ostream& out, const Json& j);  // the same to any stream
 
 }  // namespace scalcal::cli

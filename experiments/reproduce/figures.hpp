@@ -16,6 +16,7 @@ void figure_9(Context& ctx);
 void figure_limits(Context& ctx);  // fig10: optimum of each criterion against N, with its limit
 void figure_sphere(Context& ctx);  // fig11: the optimal N = 12 and 18 programs on the sphere
 void figure_regions(Context& ctx); // fig12: what a restricted bench (cap, band, faces) costs
+void real_data(Context& ctx);      // fig13: the Xsens log calibrated end to end
 void tables_1_2_3(Context& ctx);
 void summary(Context& ctx);        // the paper's stated numbers beside scalcal's, at the top
 

@@ -63,6 +63,7 @@ RunSummary run(const Options& options, bool show_progress) {
       {"figure 10", figure_limits},
       {"figure 11", figure_sphere},
       {"figure 12", figure_regions},
+      {"figure 13 (real log)", real_data},
       {"tables 1-3", tables_1_2_3},
       {"summary", summary},
   };

@@ -38,6 +38,10 @@ struct CalibrationOptionsTpl {
   Modulus modulus = Modulus::norm;
   Scalar magnitude = Scalar(1);  // |I| in the units of the samples
   int max_iterations = 50;
+  // Each position's weight in the least squares: its number of samples (the paper's eq. 6 for
+  // white noise), or 1 (a raw log's intervals are as long as the hand held still: their length
+  // says nothing about their worth, and errors that differ between positions dominate there).
+  bool weight_by_samples = true;
   // The update is negligible when max |dX| falls below this (X is dimensionless).
   Scalar tolerance = Scalar(1e4) * Eigen::NumTraits<Scalar>::epsilon();
 };
@@ -115,7 +119,7 @@ CalibrationResultTpl<Scalar> calibrate(const std::vector<PositionSamplesTpl<Scal
       const Vec3T<Scalar> eta = options.modulus == Modulus::norm ? Vec3T<Scalar>(c.normalized())
                                                                  : Vec3T<Scalar>(data[i].nominal->normalized());
       J[i] = detail::modulus_of(c, data[i], options.modulus) / M - Scalar(1);
-      const Scalar w(static_cast<int>(data[i].samples.size()));
+      const Scalar w = options.weight_by_samples ? Scalar(static_cast<int>(data[i].samples.size())) : Scalar(1);
       const Vec9T<Scalar> h = Paper9Model::row(eta);
       info += w * h * h.transpose();
       rhs += w * J[i] * h;
@@ -143,6 +147,21 @@ CalibrationResultTpl<Scalar> calibrate(const std::vector<PositionSamplesTpl<Scal
   residuals(X);
   Eigen::LDLT<Mat9T<Scalar>> ldlt(info);
   r.K = ldlt.solve(Mat9T<Scalar>::Identity());
+  if (!options.weight_by_samples) {
+    // Equal weights: the covariance of X is K (sum_i h_i h_i^T / n_i) K per unit of a sample's
+    // variance (each position's mean has variance sigma^2 / n_i); r.K holds that, so that
+    // X_std = sigma_J sqrt(K(r, r)) stays true.
+    const MeterTpl<Scalar> meter = MeterTpl<Scalar>::from_parameters(X, M);
+    Mat9T<Scalar> middle = Mat9T<Scalar>::Zero();
+    for (std::size_t i = 0; i < data.size(); ++i) {
+      const Vec3T<Scalar> c = meter.compensate(means[i]);
+      const Vec3T<Scalar> eta = options.modulus == Modulus::norm ? Vec3T<Scalar>(c.normalized())
+                                                                 : Vec3T<Scalar>(data[i].nominal->normalized());
+      const Vec9T<Scalar> h = Paper9Model::row(eta);
+      middle += h * h.transpose() / Scalar(static_cast<int>(data[i].samples.size()));
+    }
+    r.K = r.K * middle * r.K;
+  }
   Scalar ss(0);
   for (std::size_t i = 0; i < data.size(); ++i) ss += J[i] * J[i];
   r.residual_rms = sqrt(ss / Scalar(r.positions)) * M;

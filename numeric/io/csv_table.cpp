@@ -26,10 +26,14 @@ std::string trim(const std::string& s) {
   return s.substr(b, e - b + 1);
 }
 
-std::vector<std::string> split(const std::string& line) {
+std::vector<std::string> split(const std::string& line, bool whitespace) {
   std::vector<std::string> fields;
   std::string field;
   std::istringstream in(line);
+  if (whitespace) {
+    while (in >> field) fields.push_back(field);
+    return fields;
+  }
   while (std::getline(in, field, ',')) fields.push_back(trim(field));
   if (!line.empty() && line.back() == ',') fields.push_back("");
   return fields;
@@ -84,7 +88,9 @@ int CsvTable::column(const std::string& name) const {
   return -1;
 }
 
-CsvTable parse_csv(const std::string& input, const std::string& name) {
+CsvTable parse_csv(const std::string& input, const std::string& name) { return parse_table(input, name, {}); }
+
+CsvTable parse_table(const std::string& input, const std::string& name, const TableFormat& format) {
   using L = CsvLimits;
   if (input.size() > L::max_file_bytes)
     throw InputError(name, 0, "file larger than the limit of " + std::to_string(L::max_file_bytes >> 20) + " MiB");
@@ -95,7 +101,8 @@ CsvTable parse_csv(const std::string& input, const std::string& name) {
   std::istringstream in(text);
   std::string raw;
   int line_no = 0;
-  bool header_seen = false;
+  bool header_seen = !format.columns.empty();
+  table.columns = format.columns;
   while (std::getline(in, raw)) {
     ++line_no;
     if (raw.size() > L::max_line_chars)
@@ -105,7 +112,7 @@ CsvTable parse_csv(const std::string& input, const std::string& name) {
     if (const auto hash = line.find('#'); hash != std::string::npos) line.erase(hash);
     line = trim(line);
     if (line.empty()) continue;
-    auto fields = split(line);
+    auto fields = split(line, format.whitespace);
     if (fields.size() > L::max_columns)
       throw InputError(name, line_no, std::to_string(fields.size()) + " columns, more than the limit of " +
                                           std::to_string(L::max_columns));
@@ -132,13 +139,14 @@ CsvTable parse_csv(const std::string& input, const std::string& name) {
       double v;
       if (!parse_number(fields[c], v))
         throw InputError(name, line_no, in_quotes(fields[c]) + " in column " + table.columns[c] + " is not a number");
-      if (!std::isfinite(v))
+      if (!std::isfinite(v) && !format.nonfinite_allowed)
         throw InputError(name, line_no, "value in column " + table.columns[c] + " is not finite (" + display_name(fields[c]) + ")");
       row.values.push_back(v);
     }
     table.rows.push_back(std::move(row));
   }
   if (!header_seen) throw InputError(name, 0, "empty file: no header line and no data");
+  if (!format.columns.empty() && table.rows.empty()) throw InputError(name, 0, "empty file: no data");
   return table;
 }
 
@@ -192,9 +200,16 @@ class InputFile {
 
 }  // namespace
 
+CsvTable read_csv(const std::string& path) { return read_table(path, {}); }
+
 // Reads at most the size limit plus one byte, so a device or pipe that never ends (/dev/zero,
 // /dev/urandom) or a huge file costs no more than the limit; a directory is refused by name.
-CsvTable read_csv(const std::string& path) {
+
+CsvTable read_table(const std::string& path, const TableFormat& format) {
+  return parse_table(read_text_file(path), path, format);
+}
+
+std::string read_text_file(const std::string& path) {
   InputFile in(path);
   constexpr std::size_t limit = CsvLimits::max_file_bytes;
   std::string text;
@@ -207,7 +222,7 @@ CsvTable read_csv(const std::string& path) {
     if (looks_binary(piece)) throw InputError(path, 0, binary_reason(text.empty() ? piece : std::string_view(text)));
     text.append(piece.substr(0, limit + 1 - text.size()));
   }
-  return parse_csv(text, path);
+  return text;
 }
 
 }  // namespace scalcal

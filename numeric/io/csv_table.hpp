@@ -32,11 +32,25 @@ struct CsvTable {
   bool has(const std::string& name) const { return column(name) >= 0; }
 };
 
+// How a table is written, when it is not scalcal's default CSV (a raw instrument log).
+struct TableFormat {
+  bool whitespace = false;           // fields separated by runs of spaces or tabs, not commas
+  std::vector<std::string> columns;  // the columns' names when the file has no header line
+  bool nonfinite_allowed = false;    // NaN and inf are read (a log's dropouts, counted later), not refused
+};
+
 // Reads and checks a CSV file; throws InputError on any defect (missing or unreadable file,
 // binary content, no header, ragged rows, non-numeric, NaN or infinite values).
 CsvTable read_csv(const std::string& path);
+// The same under a format, with the same limits and messages.
+CsvTable read_table(const std::string& path, const TableFormat& format);
+
+// The file's text, at most the size limit plus one byte (so /dev/zero or a huge file costs no
+// more), refused at once when binary; a directory or a named pipe nobody writes to is refused by name.
+std::string read_text_file(const std::string& path);
 
 // The same for text already in memory; `name` is used in messages.
 CsvTable parse_csv(const std::string& text, const std::string& name);
+CsvTable parse_table(const std::string& text, const std::string& name, const TableFormat& format);
 
 }  // namespace scalcal

@@ -30,7 +30,9 @@ Vec3 climb(const F& f, Vec3 x, const Region& region, double start_deg = 1.0, dou
   };
   double radius = start_deg * kDeg, best = f(x);
   for (int it = 0; it < 200 && radius > end_deg * kDeg; ++it) {
-    const auto [e1, e2] = azimuth_frame(x);
+    // Named copies, not a structured binding: clang (C++20 before 16) cannot capture bindings.
+    const auto frame = azimuth_frame(x);
+    const Vec3 e1 = frame.first, e2 = frame.second;
     const double h = std::clamp(0.1 * radius, 1e-6, 1e-3);
     const auto at = [&](double a, double b) { return f((x + a * e1 + b * e2).normalized()); };
     const double f0 = best, fpa = at(h, 0), fma = at(-h, 0), fpb = at(0, h), fmb = at(0, -h);

@@ -139,7 +139,7 @@ TEST(CalibrateCli, BadInputIsOneLineAndExitTwo) {
       {"missing_column.csv", "position,ix,iy\n1,2,3\n", "", "missing column 'iz'"},
       {"bad_number.csv", bad_number, "", ":5: 'abc' in column ix is not a number"},
       {"eight.csv", eight, "", "8 distinct positions"},
-      {"wrong_units.csv", good, "", "times --magnitude"},
+      {"wrong_units.csv", good, "--modulus projection", "the projection modulus needs data in the field's units"},
       {"planar.csv", planar, "--modulus projection", "not identifiable: bias_z"},
       {"no_nominal.csv", "ix,iy,iz\n1,0,0\n", "--modulus projection", "nominal direction"},
   };
@@ -155,6 +155,36 @@ TEST(CalibrateCli, BadInputIsOneLineAndExitTwo) {
   const CliRun usage = scalcal("calibrate --magnitude 9.8");
   EXPECT_EQ(usage.status, 2);
   EXPECT_NE(usage.err.find("--measurements"), std::string::npos);
+}
+
+// The same bench read with --magnitude 1000 instead of 9.80665: in any units the calibration starts
+// from an ellipsoid, and its correction is the first one scaled by 1000 / 9.80665 (the paper's
+// convention fixes the rotation in both).
+TEST(CalibrateCli, AnyUnitsGiveTheSameCorrectionScaled) {
+  const fs::path file = write_file("scaled.csv", bench_csv(example_meter(1e-3, kG), 1e-3, 1, 3));
+  const CliRun a = scalcal("calibrate --measurements " + file.string() + " --magnitude 9.80665 --json");
+  const CliRun b = scalcal("calibrate --measurements " + file.string() + " --magnitude 1000 --json");
+  ASSERT_EQ(a.status, 0) << a.err;
+  ASSERT_EQ(b.status, 0) << b.err;
+  EXPECT_NE(b.out.find("\"start\": \"ellipsoid\""), std::string::npos);
+  EXPECT_NE(a.out.find("\"start\": \"none\""), std::string::npos);
+  const auto matrix = [](const std::string& json) {
+    const std::regex re("\"matrix\"\\s*:\\s*\\[([^\\]]*\\][^\\]]*\\][^\\]]*\\])");
+    std::smatch m;
+    std::vector<double> out;
+    if (!std::regex_search(json, m, re)) return out;
+    const std::string body = m[1];
+    const std::regex number("[-+0-9.eE]+");
+    for (auto it = std::sregex_iterator(body.begin(), body.end(), number); it != std::sregex_iterator(); ++it)
+      out.push_back(std::stod(it->str()));
+    return out;
+  };
+  const std::vector<double> ma = matrix(a.out), mb = matrix(b.out);
+  ASSERT_EQ(ma.size(), 9u);
+  ASSERT_EQ(mb.size(), 9u);
+  for (int k = 0; k < 9; ++k) EXPECT_NEAR(mb[k] * kG / 1000, ma[k], 1e-6) << k;
+  const auto oa = json_triple(a.out, "offset"), ob = json_triple(b.out, "offset");
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(oa[k], ob[k], 1e-6) << k;
 }
 
 TEST(SimulateCli, SameSeedSameOutputAndThetaWithinSamplingError) {

@@ -1,30 +1,50 @@
-// libFuzzer target: the bench measurement CSV reader (ix,iy,iz [,position] [,x,y,z]) and the whole
-// calibrate path after it: outlier samples, the data checks, the estimator and the goodness of fit.
-// The first byte picks the modulus. Only InputError is an expected outcome, as in the CLI.
+// libFuzzer target: the bench measurement CSV reader (ix,iy,iz [,position] [,x,y,z]) and the raw log
+// reader (t,ix,iy,iz as CSV or whitespace text), and the whole calibrate path after them: static
+// intervals, outlier samples, the data checks, the start in any units, the estimator and the
+// goodness of fit. The first byte picks the modulus (bit 0), a raw log (bit 1) and the magnitude
+// (bit 2: 1, else auto). Only InputError is an expected outcome, as in the CLI.
 #include <cstddef>
 #include <cstdint>
 #include <string>
 
-#include "numeric/calibration/data_checks.hpp"
+#include "numeric/calibration/any_units.hpp"
 #include "numeric/calibration/goodness_of_fit.hpp"
 #include "numeric/calibration/outlier_samples.hpp"
+#include "numeric/calibration/static_intervals.hpp"
 #include "numeric/io/csv_table.hpp"
 #include "numeric/io/input_error.hpp"
 #include "numeric/io/measurements_csv.hpp"
+#include "numeric/io/raw_log.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size == 0) return 0;
   const scalcal::Modulus modulus = data[0] & 1 ? scalcal::Modulus::projection : scalcal::Modulus::norm;
+  const bool raw = data[0] & 2;
   const std::string text(reinterpret_cast<const char*>(data + 1), size - 1);
   try {
-    auto samples =
-        scalcal::measurements_from_table(scalcal::parse_csv(text, "fuzz.csv"), modulus == scalcal::Modulus::projection);
+    std::vector<scalcal::PositionSamples> samples;
+    if (raw) {
+      const scalcal::RawLog log = scalcal::parse_raw_log(text, "fuzz.txt");
+      scalcal::StaticIntervalOptions o;  // short enough for the small logs a fuzzer writes
+      o.still_seconds = 0.5;
+      o.window_seconds = 0.05;
+      o.min_seconds = 0.05;
+      for (const auto& iv : scalcal::detect_static_intervals(log, o).intervals) {
+        scalcal::PositionSamples p;
+        for (int i = iv.begin; i <= iv.end; ++i) p.samples.push_back(log.samples[static_cast<std::size_t>(i)]);
+        samples.push_back(p);
+      }
+    } else {
+      samples = scalcal::measurements_from_table(scalcal::parse_csv(text, "fuzz.csv"),
+                                                 modulus == scalcal::Modulus::projection);
+    }
     (void)scalcal::exclude_outlier_samples(samples);
-    scalcal::check_calibration_data("fuzz.csv", samples, modulus, 1.0);
-    scalcal::CalibrationOptions options;
-    options.modulus = modulus;
-    const auto result = scalcal::calibrate(samples, options);
-    (void)scalcal::goodness_of_fit(samples, result, modulus, 1.0);
+    scalcal::AnyUnitsOptions options;
+    options.modulus = raw ? scalcal::Modulus::norm : modulus;
+    options.magnitude_auto = !(data[0] & 4);
+    options.weight_by_samples = !raw;
+    const auto result = scalcal::calibrate_any_units("fuzz", samples, options);
+    (void)scalcal::goodness_of_fit(samples, result.estimate, options.modulus, result.magnitude);
   } catch (const scalcal::InputError&) {
   }
   return 0;

@@ -218,8 +218,10 @@ std::vector<Case> cases() {
       {"SeedNegative", [] { return std::string("random --positions 12 --count 10 --seed -1"); }, E::error, {"--seed"}},
       {"MagnitudeZero", [] { return "calibrate --magnitude 0 --measurements " + file("b.csv", bench_text()); },
        E::error, {"--magnitude"}},
-      {"MagnitudeWrongUnits", [] { return "calibrate --magnitude 9.81 --measurements " + file("b.csv", bench_text()); },
-       E::error, {"b.csv", "--magnitude 9.81"}},
+      // In any units the norm modulus starts from an ellipsoid (issue 12); the projection modulus cannot.
+      {"MagnitudeWrongUnits", [] {
+         return "calibrate --magnitude 9.81 --modulus projection --measurements " + file("b.csv", bench_text());
+       }, E::error, {"b.csv", "the projection modulus needs data in the field's units"}},
       {"ModulusUnknown", [] { return "calibrate --magnitude 1 --modulus foo --measurements x.csv"; }, E::error,
        {"--modulus"}},
       {"SweepPositionsGarbage", [] { return std::string("sweep --positions 9abc --criteria D"); }, E::error,
@@ -271,6 +273,32 @@ std::vector<Case> cases() {
          for (auto& e : p.positions) e *= std::ldexp(1.0, 990);
          return "evaluate --json " + file("p300.csv", program_text(p));
        }, E::same, {}, [] { return "evaluate --json " + file("lf.csv", program_text(Program::classic18())); }},
+      // Raw logs and the correction (issue 12).
+      {"LogTimeBackwards", [] { return "calibrate --magnitude 9.81 --measurements " + file("back.txt", "0.0 1 2 3\n0.1 1 2 3\n0.05 1 2 3\n"); },
+       E::error, {"back.txt:3:", "does not increase"}},
+      {"LogAllNan", [] { return "calibrate --magnitude 9.81 --measurements " + file("nan.txt", "0.0 nan 2 3\n0.1 nan 2 3\n"); },
+       E::error, {"nan.txt", "fewer than two rows with finite t, ix, iy, iz"}},
+      {"LogStillTooShort", [] {
+         std::string text;
+         for (int i = 0; i < 400; ++i) text += std::to_string(0.01 * i) + " " + std::to_string(32768 + i % 3) + " 32768 36000\n";
+         return "calibrate --magnitude 9.81 --still 0.5 --measurements " + file("short.txt", text);
+       }, E::error, {"short.txt", "initial still period", "--still"}},
+      {"LogOneInterval", [] {
+         std::string text;
+         for (int i = 0; i < 5000; ++i)
+           text += std::to_string(0.01 * i) + " " + std::to_string(32768 + i % 3) + " " + std::to_string(32700 + i % 5) + " " +
+                   std::to_string(36000 + i % 2) + "\n";
+         return "calibrate --magnitude 9.81 --measurements " + file("one.txt", text);
+       }, E::error, {"one.txt", "found 1 static intervals", "needs at least 9"}},
+      {"MagnitudeGarbage", [] { return std::string("calibrate --magnitude 9.81x --measurements x.txt"); }, E::error,
+       {"--magnitude", "positive number or auto"}},
+      {"FormatUnknown", [] { return std::string("calibrate --magnitude 9.81 --format xml --measurements x.txt"); }, E::error,
+       {"--format"}},
+      {"CorrectNoCalibration", [] { return std::string("correct --calibration /nonexistent/cal.json --measurements x.txt"); },
+       E::error, {"/nonexistent/cal.json", "cannot open file"}},
+      {"CorrectNotJson", [] {
+         return "correct --calibration " + file("cal.json", "{\"offset\": [1, 2]") + " --measurements " + file("m.txt", "0 1 2 3\n");
+       }, E::error, {"cal.json", "not a JSON object"}},
       // Regions of a bench (issue 11): malformed, out of range, degenerate, unreadable, refused.
       {"RegionNotANumber", [] { return std::string("limits --region cap:abc"); }, E::error,
        {"--region", "'abc' is not a number"}},
@@ -305,6 +333,10 @@ std::vector<Case> cases() {
        E::write, {"/dev/full"}},
       {"OutNoDirectory", [] { return std::string("evaluate classic18 --out /nonexistent/p.csv"); }, E::write,
        {"/nonexistent/p.csv"}},
+      {"CorrectOutFull", [] {
+         return "correct --calibration " + file("ok.json", "{\"offset\": [0, 0, 0], \"matrix\": [[1,0,0],[0,1,0],[0,0,1]]}") +
+                " --measurements " + file("m2.txt", "0 1 2 3\n0.01 1 2 3\n") + " --out /dev/full";
+       }, E::write, {"/dev/full"}},
       {"AugmentOutFull", [] { return std::string("augment --program classic18 --add 2 --region cap:60 --out /dev/full"); },
        E::write, {"/dev/full"}},
   };

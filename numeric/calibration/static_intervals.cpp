@@ -1,0 +1,145 @@
+#include "numeric/calibration/static_intervals.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "numeric/io/input_error.hpp"
+
+namespace scalcal {
+namespace {
+
+constexpr std::size_t kLinesKept = 5;
+
+// An ADC's rail: zero, or an integer next to a power of two from 2^7 to 2^32 (full scale of an
+// 8- to 32-bit converter, signed or unsigned). Only at a rail is a plateau clipping: a quiet output
+// may well repeat its extreme value.
+bool is_rail(double v) {
+  if (v != std::floor(v)) return false;
+  const double a = std::abs(v);
+  if (a == 0) return true;
+  for (int k = 7; k <= 32; ++k) {
+    const double p = std::ldexp(1.0, k);
+    if (a == p || a == p - 1) return true;
+  }
+  return false;
+}
+
+// Samples that sit at an output's overall extreme, at a rail, for three or more consecutive rows:
+// a clipped (saturated) output, whose value says nothing about the field.
+std::vector<char> saturated_samples(const RawLog& log) {
+  const int n = log.size();
+  std::vector<char> out(static_cast<std::size_t>(n), 0);
+  for (int c = 0; c < 3; ++c) {
+    double lo = INFINITY, hi = -INFINITY;
+    for (int i = 0; i < n; ++i)
+      if (log.finite(i)) {
+        lo = std::min(lo, log.samples[static_cast<std::size_t>(i)](c));
+        hi = std::max(hi, log.samples[static_cast<std::size_t>(i)](c));
+      }
+    for (double extreme : {lo, hi}) {
+      if (!is_rail(extreme)) continue;
+      for (int i = 0; i < n;) {
+        int j = i;
+        while (j < n && log.finite(j) && log.samples[static_cast<std::size_t>(j)](c) == extreme) ++j;
+        if (j - i >= 3)
+          for (int k = i; k < j; ++k) out[static_cast<std::size_t>(k)] = 1;
+        i = std::max(j, i + 1);
+      }
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+IntervalDetection detect_static_intervals(const RawLog& log, const StaticIntervalOptions& options) {
+  IntervalDetection d;
+  const int n = log.size();
+  std::vector<char> usable(static_cast<std::size_t>(n), 1);
+  const std::vector<char> clipped = saturated_samples(log);
+  std::vector<double> steps;
+  int previous = -1;
+  for (int i = 0; i < n; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    if (!log.finite(i)) {
+      usable[k] = 0;
+      ++d.nonfinite;
+      if (d.nonfinite_lines.size() < kLinesKept) d.nonfinite_lines.push_back(log.lines[k]);
+      continue;
+    }
+    if (clipped[k]) {
+      usable[k] = 0;
+      ++d.saturated;
+      if (d.saturated_lines.size() < kLinesKept) d.saturated_lines.push_back(log.lines[k]);
+    }
+    if (previous >= 0) steps.push_back(log.t[k] - log.t[static_cast<std::size_t>(previous)]);
+    previous = i;
+  }
+  std::nth_element(steps.begin(), steps.begin() + static_cast<std::ptrdiff_t>(steps.size() / 2), steps.end());
+  d.sample_period = steps[steps.size() / 2];
+  // In doubles first: a log whose time steps are tiny would overflow an int.
+  const double window = std::clamp(options.window_seconds / d.sample_period, 11.0, static_cast<double>(std::max(n, 11)));
+  d.window = std::max(11, static_cast<int>(std::lround(window)) | 1);
+  const int h = d.window / 2;
+
+  // The still period: the usable samples within still_seconds of the first one.
+  int first = 0;
+  while (first < n && !usable[static_cast<std::size_t>(first)]) ++first;
+  Vec3 sum = Vec3::Zero(), sum2 = Vec3::Zero();
+  int count = 0;
+  for (int i = first; i < n && log.t[static_cast<std::size_t>(i)] <= log.t[static_cast<std::size_t>(first)] + options.still_seconds; ++i)
+    if (usable[static_cast<std::size_t>(i)]) {
+      const Vec3& s = log.samples[static_cast<std::size_t>(i)];
+      sum += s;
+      sum2 += s.cwiseProduct(s);
+      ++count;
+    }
+  if (count < d.window)
+    throw InputError(log.file, 0,
+                     "the initial still period (" + std::to_string(options.still_seconds) + " s) holds " +
+                         std::to_string(count) + " usable samples, fewer than one variance window (" +
+                         std::to_string(d.window) + "); lengthen --still or shorten --window");
+  const Vec3 mean = sum / count;
+  d.still_variance = (sum2 / count - mean.cwiseProduct(mean)).cwiseMax(0.0).norm();
+  if (!(d.still_variance > 0))
+    throw InputError(log.file, 0,
+                     "the initial still period has no noise at all (a constant or clipped output): nothing to set the "
+                     "static threshold by");
+  d.threshold = options.threshold_factor * d.still_variance;
+
+  // Moving variance by prefix sums over the samples (an unusable sample makes its windows unusable).
+  std::vector<Vec3> ps(static_cast<std::size_t>(n) + 1, Vec3::Zero()), ps2(static_cast<std::size_t>(n) + 1, Vec3::Zero());
+  std::vector<int> bad(static_cast<std::size_t>(n) + 1, 0);
+  for (int i = 0; i < n; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    const Vec3 s = usable[k] ? log.samples[k] : Vec3::Zero();
+    ps[k + 1] = ps[k] + s;
+    ps2[k + 1] = ps2[k] + s.cwiseProduct(s);
+    bad[k + 1] = bad[k] + (usable[k] ? 0 : 1);
+  }
+  const auto is_static = [&](int i) {
+    if (i - h < 0 || i + h >= n) return false;
+    const auto a = static_cast<std::size_t>(i - h), b = static_cast<std::size_t>(i + h + 1);
+    if (bad[b] - bad[a] > 0) return false;
+    const Vec3 m = (ps[b] - ps[a]) / d.window;
+    // Shifted by the window's mean: the raw sums of counts near 32768 would cancel badly.
+    Vec3 var = (ps2[b] - ps2[a]) / d.window - m.cwiseProduct(m);
+    return var.cwiseMax(0.0).norm() < d.threshold;
+  };
+  const int min_samples =
+      static_cast<int>(std::clamp(std::ceil(options.min_seconds / d.sample_period), 1.0, static_cast<double>(n) + 1));
+  for (int i = 0; i < n;) {
+    if (!is_static(i)) {
+      ++i;
+      continue;
+    }
+    int j = i;
+    while (j + 1 < n && is_static(j + 1)) ++j;
+    if (j - i + 1 >= min_samples)
+      d.intervals.push_back({i, j, log.t[static_cast<std::size_t>(i)], log.t[static_cast<std::size_t>(j)]});
+    i = j + 1;
+  }
+  return d;
+}
+
+}  // namespace scalcal
