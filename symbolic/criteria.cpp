@@ -69,22 +69,23 @@ std::string ExactValue::str() const {
 }
 
 std::vector<std::vector<int>> blocks(const matrix& M) {
-  std::vector<int> label(9, -1);
+  const int P = static_cast<int>(M.rows());
+  std::vector<int> label(static_cast<std::size_t>(P), -1);
   int next = 0;
-  for (int start = 0; start < 9; ++start) {
+  for (int start = 0; start < P; ++start) {
     if (label[start] >= 0) continue;
     std::vector<int> stack{start};
     label[start] = next;
     while (!stack.empty()) {
       const int i = stack.back();
       stack.pop_back();
-      for (int j = 0; j < 9; ++j)
+      for (int j = 0; j < P; ++j)
         if (label[j] < 0 && !M(i, j).is_zero()) label[j] = next, stack.push_back(j);
     }
     ++next;
   }
   std::vector<std::vector<int>> out(next);
-  for (int i = 0; i < 9; ++i) out[label[i]].push_back(i);
+  for (int i = 0; i < P; ++i) out[label[i]].push_back(i);
   return out;
 }
 
@@ -95,6 +96,19 @@ void add_distinct(std::vector<ex>& list, const ex& e) {
   for (const auto& c : list)
     if (is_zero_exact(c - e)) return;
   list.push_back(e);
+}
+
+// sqrt(r) with the square part of a positive rational r taken out (sqrt(40960) = 64 sqrt(10)),
+// which GiNaC does not do; anything else as GiNaC's sqrt.
+ex simplified_sqrt(const ex& r) {
+  if (!GiNaC::is_a<GiNaC::numeric>(r)) return GiNaC::sqrt(r);
+  const GiNaC::numeric q = GiNaC::ex_to<GiNaC::numeric>(r);
+  if (!q.is_rational() || !q.is_positive()) return GiNaC::sqrt(r);
+  // sqrt(n/d) = sqrt(n d) / d; then n d = s^2 m with m free of squares below the trial bound.
+  GiNaC::numeric m = q.numer() * q.denom(), s = 1;
+  for (long p = 2; p <= 100000 && GiNaC::numeric(p * p) <= m; ++p)
+    while (GiNaC::irem(m, GiNaC::numeric(p * p)).is_zero()) m = m / GiNaC::numeric(p * p), s = s * GiNaC::numeric(p);
+  return s / q.denom() * GiNaC::sqrt(ex(m));
 }
 
 // Eigenvalues (with multiplicity) of a symmetric block, or empty when there is no closed form.
@@ -114,7 +128,7 @@ std::vector<ex> block_eigenvalues(const matrix& B) {
   }
   if (s == 2) {
     const ex tr = B(0, 0) + B(1, 1);
-    const ex disc = GiNaC::sqrt(canonical(GiNaC::pow(B(0, 0) - B(1, 1), 2) + 4 * GiNaC::pow(B(0, 1), 2)));
+    const ex disc = simplified_sqrt(canonical(GiNaC::pow(B(0, 0) - B(1, 1), 2) + 4 * GiNaC::pow(B(0, 1), 2)));
     return {canonical((tr - disc) / 2), canonical((tr + disc) / 2)};
   }
   return {};
@@ -138,10 +152,20 @@ std::vector<ex> numeric_eigenvalues(const matrix& B) {
 
 }  // namespace
 
-ExactCriteria exact_criteria(const matrix& M, const ex& N) {
+std::vector<ParameterGroup> paper9_groups() {
+  using G = ParameterGroup;
+  return {G::bias, G::bias, G::bias, G::scale, G::scale, G::scale, G::nonorth, G::nonorth, G::nonorth};
+}
+
+ExactCriteria exact_criteria(const matrix& M, const ex& N) { return exact_criteria(M, N, paper9_groups()); }
+
+ExactCriteria exact_criteria(const matrix& M, const ex& N, const std::vector<ParameterGroup>& groups) {
+  const int P = static_cast<int>(M.rows());
+  if (static_cast<int>(groups.size()) != P || static_cast<int>(M.cols()) != P)
+    throw std::invalid_argument("exact_criteria: M must be square with one group per row");
   ExactCriteria c;
   c.N = N;
-  c.K_diagonal.assign(9, ex(0));
+  c.K_diagonal.assign(static_cast<std::size_t>(P), ex(0));
   ex det = 1, trace = 0;
   std::vector<ex> eig;
   bool eig_exact = true;
@@ -164,14 +188,15 @@ ExactCriteria exact_criteria(const matrix& M, const ex& N) {
     eig.insert(eig.end(), ev.begin(), ev.end());
   }
   c.eigenvalues = eig;
-  c.D.candidates = {canonical(GiNaC::pow(N, 9) / det)};
+  c.D.candidates = {canonical(GiNaC::pow(N, P) / det)};
   c.A.candidates = {canonical(N * trace)};
   for (const auto& l : eig) add_distinct(c.E.candidates, eig_exact ? canonical(N / l) : GiNaC::evalf(N / l));
   c.E.exact = eig_exact;
-  for (int r = 0; r < 9; ++r) add_distinct(c.S.candidates, canonical(N * c.K_diagonal[r]));
-  ExactValue* theta[3] = {&c.theta_bias, &c.theta_scale, &c.theta_nonorth};
-  for (int g = 0; g < 3; ++g)
-    for (int r = 3 * g; r < 3 * g + 3; ++r) add_distinct(theta[g]->candidates, GiNaC::sqrt(canonical(N * c.K_diagonal[r])));
+  for (int r = 0; r < P; ++r) add_distinct(c.S.candidates, canonical(N * c.K_diagonal[r]));
+  ExactValue* theta[4] = {&c.theta_bias, &c.theta_scale, &c.theta_nonorth, &c.theta_cubic};
+  for (int r = 0; r < P; ++r)
+    add_distinct(theta[static_cast<int>(groups[static_cast<std::size_t>(r)])]->candidates,
+                 GiNaC::sqrt(canonical(N * c.K_diagonal[r])));
   return c;
 }
 

@@ -1,6 +1,7 @@
-// Exact criteria of a moment matrix M = H^T H (or sum w h h^T) of N positions: N^9 det K,
-// N trace K, N lambda_max K, N max K(r,r) and the thetas, with K = M^-1 inverted block by
-// block (the connected components of M's sparsity pattern), so symmetric programs stay cheap.
+// Exact criteria of a moment matrix M = H^T H (or sum w h h^T) of N positions for a model of P
+// parameters: N^P det K, N trace K, N lambda_max K, N max K(r,r) and the thetas of the model's
+// groups, with K = M^-1 inverted block by block (the connected components of M's sparsity
+// pattern), so symmetric programs stay cheap.
 #pragma once
 #include <string>
 #include <vector>
@@ -8,6 +9,7 @@
 #include <ginac/ginac.h>
 
 #include "numeric/criteria/registry.hpp"
+#include "numeric/model/model.hpp"
 
 namespace scalcal::symbolic {
 
@@ -26,9 +28,9 @@ struct ExactValue {
 struct ExactCriteria {
   GiNaC::ex N;
   ExactValue D, A, E, S;
-  ExactValue theta_bias, theta_scale, theta_nonorth;
+  ExactValue theta_bias, theta_scale, theta_nonorth, theta_cubic;  // no candidates: the model lacks the group
   std::vector<GiNaC::ex> eigenvalues;  // of M (one per eigenvalue with multiplicity) when exact
-  std::vector<GiNaC::ex> K_diagonal;    // K(r, r), r = 0..8
+  std::vector<GiNaC::ex> K_diagonal;    // K(r, r), r = 0..P-1
 
   // The paper's four criteria by their numeric handle; nullptr for a criterion with no closed form here.
   const ExactValue* of(CriterionKind c) const {
@@ -36,8 +38,13 @@ struct ExactCriteria {
   }
 };
 
+// The paper's nine parameters in their groups (bias, scale, non-orthogonality, three each).
+std::vector<ParameterGroup> paper9_groups();
+
+// groups: the group of each of M's rows (paper9_groups() for the paper's model).
 // Throws std::invalid_argument when M is singular (a block has zero determinant).
 ExactCriteria exact_criteria(const GiNaC::matrix& M, const GiNaC::ex& N);
+ExactCriteria exact_criteria(const GiNaC::matrix& M, const GiNaC::ex& N, const std::vector<ParameterGroup>& groups);
 
 // The components of M's sparsity pattern (index sets, each ascending).
 std::vector<std::vector<int>> blocks(const GiNaC::matrix& M);

@@ -78,4 +78,14 @@ matrix moment_matrix(const std::vector<WeightedPoint>& points) {
   return M;
 }
 
+MomentFunction point_moments(std::vector<WeightedPoint> points) {
+  return [points = std::move(points)](int a, int b, int c) {
+    // x^0 is 1 even at x = 0 (GiNaC leaves pow(0, 0) undefined).
+    const auto power = [](const ex& x, int k) { return k == 0 ? ex(1) : GiNaC::pow(x, k); };
+    ex sum = 0;
+    for (const auto& p : points) sum += p.weight * power(p.eta[0], a) * power(p.eta[1], b) * power(p.eta[2], c);
+    return canonical(sum);
+  };
+}
+
 }  // namespace scalcal::symbolic

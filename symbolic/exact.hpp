@@ -3,6 +3,7 @@
 // symbols), and a canonical form that rationalises square roots out of denominators.
 #pragma once
 #include <array>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,11 @@ GiNaC::matrix design_row(const Point& eta);
 
 // sum_i w_i h(eta_i) h(eta_i)^T with every entry in canonical form (see canonical()).
 GiNaC::matrix moment_matrix(const std::vector<WeightedPoint>& points);
+
+// sum_i w_i x^a y^b z^c over a program, exactly (canonical): what any model's moment matrix is
+// made of, whatever its monomials (symbolic/model_moments.hpp).
+using MomentFunction = std::function<GiNaC::ex(int a, int b, int c)>;
+MomentFunction point_moments(std::vector<WeightedPoint> points);
 
 // Expanded numerator over a denominator free of square roots of numbers: two equal elements of
 // Q(sqrt p, sqrt q, ...)(symbols) then print alike, and a zero test is `canonical(x).is_zero()`.

@@ -11,6 +11,7 @@
 #include <ginac/ginac.h>
 
 #include "numeric/program/program.hpp"
+#include "symbolic/exact.hpp"
 
 namespace scalcal::symbolic {
 
@@ -24,7 +25,8 @@ using ParamMap = std::map<std::string, GiNaC::ex>;
 
 struct FamilyInstance {
   GiNaC::ex N;       // number of positions (a closed form when multiplicities are symbols)
-  GiNaC::matrix M;   // H^T H, exact
+  GiNaC::matrix M;   // H^T H of the paper's model, exact
+  MomentFunction moment;  // any moment of the program, for the other models (--model)
 };
 
 struct Family {

@@ -1,6 +1,6 @@
-// `scalcal augment --program FILE --add K [--criterion C] [--region SPEC]... [--out FILE] [--json]`:
-// keeps the lab's positions and adds the K inside the bench's region that improve the criterion
-// most (numeric/region/augment.hpp).
+// `scalcal augment --program FILE --add K [--criterion C] [--model NAME] [--region SPEC]... [--out FILE]
+// [--json]`: keeps the lab's positions and adds the K inside the bench's region that improve the
+// criterion of the model most (numeric/region/augment.hpp).
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -20,7 +20,7 @@ namespace scalcal::cli {
 namespace {
 
 struct Options {
-  std::string program, criterion = "D", out;
+  std::string program, criterion = "D", out, model = "paper9";
   std::vector<std::string> regions;
   int add = 0;
   bool json = false;
@@ -39,19 +39,23 @@ int run(const Options& o) {
   const Program given = resolve_program(o.program);
   const Region region = resolve_region(o.regions, "augment");
   const CriterionKind c = criterion_of(o.criterion);
-  const AugmentedProgram a = augment_program(given, o.add, c, region);
+  const ModelKind model = model_of(o.model);
+  const AugmentedProgram a = augment_program(given, o.add, c, region, model);
   if (!o.out.empty()) write_program_file(o.out, a.program, region_columns(region, a.program));
   if (o.json) {
     Json added = Json::array();
     for (const Vec3& x : a.added) added.push_back(Json{x.x(), x.y(), x.z()});
-    print_json(Json{{"criterion", std::string(criterion_name(c))},
-                    {"region", region.text()},
-                    {"value_before", value_json(a.value_before)},
-                    {"value", value_json(a.value)},
-                    {"added", added},
-                    {"program", program_json(a.program)}});
+    Json j{{"criterion", std::string(criterion_name(c))},
+           {"region", region.text()},
+           {"value_before", value_json(a.value_before)},
+           {"value", value_json(a.value)},
+           {"added", added},
+           {"program", program_json(a.program)}};
+    if (model != ModelKind::paper9) j["model"] = o.model;
+    print_json(j);
     return 0;
   }
+  if (model != ModelKind::paper9) std::cout << "model " << o.model << ", ";
   std::cout << criterion_name(c) << ": " << value_text(a.value_before) << " with the " << given.size()
             << " given positions, " << value_text(a.value) << " with " << a.added.size() << " added on "
             << region.text() << ":\n";
@@ -69,13 +73,16 @@ Runner setup(CLI::App& app) {
            {"the program the lab has: a catalogue name or a CSV file", "file path", kRequired});
   add_integer(app, "--add", o->add, 1, 1000, {"how many positions to add", "positions", kRequired});
   add_criterion(app, o->criterion, "D");
+  add_model(app, o->model);
   add_region_option(app, o->regions);
   add_text(app, "--out", o->out, "FILE", {"write the whole program (given, then added) as CSV", "file path"});
   add_switch(app, "--json", o->json, "print one JSON object");
   return [o] { return run(*o); };
 }
 
-const Registration reg({"augment", "augment --program FILE --add K [--criterion C] [--region SPEC]... [--out FILE] [--json]",
+const Registration reg({"augment",
+                        "augment --program FILE --add K [--criterion C] [--model NAME] [--region SPEC]... [--out FILE] "
+                        "[--json]",
                         "add the K positions that improve a program most, inside the bench's region", 55, setup});
 
 }  // namespace

@@ -11,6 +11,7 @@
 #include <sstream>
 #include <vector>
 
+#include "experiments/cli/calibrate_model.hpp"
 #include "experiments/cli/command.hpp"
 #include "experiments/cli/json_output.hpp"
 #include "experiments/cli/options.hpp"
@@ -33,7 +34,7 @@ constexpr const char* kUsage =
     "calibrate --measurements FILE --magnitude M|auto [--modulus norm|projection] [--format auto|csv|text] "
     "[--still S] [--window W] [--threshold-factor K] [--min-interval T] [--weights auto|samples|positions] "
     "[--keep-outliers] [--suggest K] "
-    "[--criterion C] [--region SPEC]... [--out FILE] [--json]";
+    "[--criterion C] [--region SPEC]... [--model NAME] [--out FILE] [--json]";
 constexpr double kOutlierSigmas = 5;  // a position's standardised residual above this is flagged
 
 const char* kParameterNames[9] = {"bias_x", "bias_y", "bias_z", "scale_x", "scale_y", "scale_z",
@@ -50,7 +51,8 @@ std::string lines_text(const std::vector<int>& lines, int total) {
 }
 
 struct Options {
-  std::string file, modulus = "norm", magnitude, format = "auto", criterion = "D", out, weights = "auto";
+  std::string file, modulus = "norm", magnitude, format = "auto", criterion = "D", out, weights = "auto",
+              model = "paper9";
   std::vector<std::string> regions;
   StaticIntervalOptions intervals;
   int suggest = 3;
@@ -64,7 +66,7 @@ struct Input {
   IntervalDetection detection;
 };
 
-Input read_input(const Options& o, bool need_nominal) {
+Input read_input(const Options& o, bool need_nominal, int parameters) {
   Input in;
   const std::string text = read_text_file(o.file);
   if (o.format == "text" || (o.format == "auto" && looks_like_text_log(text))) {
@@ -90,9 +92,9 @@ Input read_input(const Options& o, bool need_nominal) {
     std::cerr << "scalcal calibrate: " << o.file << ": warning: " << d.saturated
               << " samples sit at an output's extreme in runs of three or more (saturated) and are not used (lines "
               << lines_text(d.saturated_lines, d.saturated) << ")\n";
-  if (d.intervals.size() < static_cast<std::size_t>(kParameters)) {
+  if (d.intervals.size() < static_cast<std::size_t>(parameters)) {
     std::ostringstream s;
-    s << "found " << d.intervals.size() << " static intervals; scalar calibration needs at least " << kParameters
+    s << "found " << d.intervals.size() << " static intervals; scalar calibration needs at least " << parameters
       << " positions. A window of " << d.window << " samples is static when its variance norm stays below "
       << d.threshold << " = --threshold-factor " << o.intervals.threshold_factor << " x " << d.still_variance
       << " (the first " << o.intervals.still_seconds << " s), for at least --min-interval " << o.intervals.min_seconds
@@ -119,12 +121,30 @@ int run(const Options& o) {
   ao.magnitude = ao.magnitude_auto ? 1.0 : std::stod(o.magnitude);
   const Region region = resolve_region(o.regions, "calibrate");
   const CriterionKind criterion = criterion_of(o.criterion);
+  const ModelKind model = model_of(o.model);
+  if (model != ModelKind::paper9 && ao.magnitude_auto)
+    throw UsageError("calibrate: --magnitude auto works with the paper9 model only: for --model " + o.model +
+                     " the field's strength would be one more unknown (with the mean scale factor for axis6 and "
+                     "cubic12, with nothing to fix the gain for bias3); give |I|");
+  if (model != ModelKind::paper9 && !o.regions.empty())
+    throw UsageError("calibrate: --region (the advice on what to add) works with the paper9 model only");
 
-  Input in = read_input(o, modulus == Modulus::projection);
+  Input in = read_input(o, modulus == Modulus::projection, model_parameters(model));
   ao.weight_by_samples = o.weights == "samples" || (o.weights == "auto" && !in.log);
   std::vector<ExcludedSample> excluded;
   if (!o.keep_outliers) excluded = exclude_outlier_samples(in.data);
   if (!excluded.empty()) std::cerr << "scalcal calibrate: " << o.file << ": warning: " << outlier_warning(excluded) << "\n";
+  if (model != ModelKind::paper9) {
+    ModelCalibrationRequest q;
+    q.file = o.file;
+    q.out = o.out;
+    q.model = model;
+    q.modulus = modulus;
+    q.magnitude = ao.magnitude;
+    q.weight_by_samples = ao.weight_by_samples;
+    q.json = o.json;
+    return calibrate_with_model(q, in.data);
+  }
   const AnyUnitsCalibration a = calibrate_any_units(o.file, in.data, ao);
   const CalibrationResult& r = a.estimate;
   const bool have_std = r.noise_source != NoiseSource::none;
@@ -308,6 +328,7 @@ Runner setup(CLI::App& app) {
   add_integer(app, "--suggest", o->suggest, 0, 100, {"how many positions to suggest adding", "positions"});
   add_criterion(app, o->criterion, "D");
   add_region_option(app, o->regions);
+  add_model(app, o->model);
   add_text(app, "--out", o->out, "FILE", {"also write the JSON object to FILE (for `scalcal correct`)", "file path"});
   add_switch(app, "--json", o->json, "print one JSON object");
   return [o] { return run(*o); };

@@ -41,6 +41,9 @@ FullCorrection read_calibration(const std::string& file) {
   } catch (const nlohmann::json::parse_error& e) {
     throw InputError(file, 0, std::string("not a JSON object written by `calibrate --out`: ") + e.what());
   }
+  if (j.is_object() && j.contains("model") && j.contains("offset") && !j.contains("matrix"))
+    throw InputError(file, 0, "the " + j["model"].dump() + " calibration has no linear correction (its cubic term "
+                              "makes the correction nonlinear); `correct` applies linear ones only");
   if (!j.is_object() || !j.contains("offset") || !j.contains("matrix"))
     throw InputError(file, 0, "needs the keys 'offset' and 'matrix' (write it with `scalcal calibrate ... --out FILE`)");
   const auto& o = j["offset"];

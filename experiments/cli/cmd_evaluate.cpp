@@ -12,6 +12,8 @@
 #include "experiments/cli/options.hpp"
 #include "experiments/cli/output_file.hpp"
 #include "experiments/cli/region_option.hpp"
+#include "experiments/cli/synthesis_cli.hpp"
+#include "numeric/criteria/model_evaluation.hpp"
 #include "numeric/io/input_error.hpp"
 #include "numeric/program/catalogue.hpp"
 #include "numeric/region/region_limit.hpp"
@@ -20,7 +22,7 @@ namespace scalcal::cli {
 namespace {
 
 struct Options {
-  std::string program, out;
+  std::string program, out, model = "paper9";
   std::vector<std::string> regions;
   bool json = false;
 };
@@ -50,7 +52,7 @@ void refuse_outside(const std::string& name, const Program& program, const Regio
 
 // limit / value per criterion, D as (limit / value)^(1/P) so that every efficiency reads as the
 // fraction of the ideal measurement effort.
-Json region_efficiency(const Evaluation& ev, const Region& region) {
+Json region_efficiency(const ModelEvaluation& ev, const Region& region) {
   Json out = Json::object();
   for (auto c : kCriteria) {
     if (progress_enabled()) std::cerr << "evaluate: the " << criterion_name(c) << " limit on " << region.text() << "\n";
@@ -61,7 +63,10 @@ Json region_efficiency(const Evaluation& ev, const Region& region) {
 
 int run(const Options& o) {
   const Program program = resolve_program(o.program);
-  const Evaluation ev = evaluate(program);
+  const ModelKind model = model_of(o.model);
+  if (model != ModelKind::paper9 && !o.regions.empty())
+    throw UsageError("evaluate: --region has limits for the paper9 model only (got --model " + o.model + ")");
+  const ModelEvaluation ev = evaluate(model, program);
   if (!ev.full_rank()) throw InputError(o.program, 0, rank_deficiency(ev));
   if (ev.condition > kIllConditioned)
     std::cerr << "scalcal evaluate: " << o.program << ": warning: " << ill_conditioning(ev) << "\n";
@@ -102,12 +107,13 @@ Runner setup(CLI::App& app) {
   auto o = std::make_shared<Options>();
   add_positional(app, "PROGRAM", o->program, "a catalogue name (scalcal catalogue) or a CSV file (x,y,z or alpha1_deg,alpha2_deg)");
   add_region_option(app, o->regions);
+  add_model(app, o->model);
   add_text(app, "--out", o->out, "FILE", {"also write the program as CSV x,y,z,alpha1_deg,alpha2_deg", "file path"});
   add_switch(app, "--json", o->json, "print one JSON object (the criteria, the program and K)");
   return [o] { return run(*o); };
 }
 
-const Registration reg({"evaluate", "evaluate PROGRAM [--region SPEC]... [--out FILE] [--json]",
+const Registration reg({"evaluate", "evaluate PROGRAM [--model NAME] [--region SPEC]... [--out FILE] [--json]",
                         "criteria D, A, E, S, the RMS errors theta and K of a catalogue program or CSV file", 10,
                         setup});
 

@@ -1,16 +1,20 @@
-// `scalcal family NAME [--param key=value ...] [--json]`: the exact criteria of a family member
-// (closed forms from symbolic/, numbers from them), or closed forms in symbolic parameters. Every
-// expression prints through symbolic::canonical_text, so equal runs print equal bytes.
+// `scalcal family NAME [--param key=value ...] [--model NAME] [--json]`: the exact criteria of a
+// family member (closed forms from symbolic/, numbers from them), or closed forms in symbolic
+// parameters, for the paper's model or any registered model (its moment matrix from the family's
+// moments). Every expression prints through symbolic::canonical_text, so equal runs print equal bytes.
 #include <iostream>
 #include <memory>
+#include <vector>
 
 #include "experiments/cli/command.hpp"
 #include "experiments/cli/json_output.hpp"
 #include "experiments/cli/options.hpp"
+#include "experiments/cli/synthesis_cli.hpp"
 #include "numeric/io/input_error.hpp"
 #include "symbolic/criteria.hpp"
 #include "symbolic/exact.hpp"
 #include "symbolic/family.hpp"
+#include "symbolic/model_moments.hpp"
 
 namespace scalcal::cli {
 namespace {
@@ -18,6 +22,7 @@ namespace {
 struct Options {
   std::string name;
   std::vector<std::string> params;
+  std::string model = "paper9";
   bool json = false;
 };
 
@@ -34,28 +39,40 @@ int run(const Options& o) {
   const auto& family = symbolic::find_family(o.name);
   const auto params = symbolic::parse_params(family, o.params);
   const auto inst = family.instance(params);
+  const ModelKind model = model_of(o.model);
+  const bool paper9 = model == ModelKind::paper9;
+  const int P = model_parameters(model);
+  if (!paper9 && !inst.moment)
+    throw InputError(o.name, 0, "the family gives only the paper's H^T H (no moment function), so --model " +
+                                    o.model + " cannot be evaluated: give FamilyInstance a MomentFunction");
   symbolic::ExactCriteria c;
   try {
-    c = symbolic::exact_criteria(inst.M, inst.N);
+    c = paper9 ? symbolic::exact_criteria(inst.M, inst.N)
+               : symbolic::exact_criteria(symbolic::model_moment_matrix(model, inst.moment), inst.N,
+                                          symbolic::model_groups(model));
   } catch (const std::invalid_argument&) {
-    throw InputError(o.name, 0, "the information matrix is singular: these parameters cannot identify all nine");
+    throw InputError(o.name, 0,
+                     "the information matrix is singular: these parameters cannot identify all " +
+                         (paper9 ? std::string("nine") : std::to_string(P) + " parameters of --model " + o.model));
   }
   const std::string n = symbolic::canonical_text(inst.N);
-  const struct {
+  struct Row {
     const char* key;
     const symbolic::ExactValue* v;
-  } rows[] = {{"D", &c.D},
-              {"A", &c.A},
-              {"E", &c.E},
-              {"S", &c.S},
-              {"theta_bias", &c.theta_bias},
-              {"theta_scale", &c.theta_scale},
-              {"theta_nonorth", &c.theta_nonorth}};
+  };
+  std::vector<Row> rows = {{"D", &c.D}, {"A", &c.A}, {"E", &c.E}, {"S", &c.S}};
+  const Row thetas[] = {{"theta_bias", &c.theta_bias},
+                        {"theta_scale", &c.theta_scale},
+                        {"theta_nonorth", &c.theta_nonorth},
+                        {"theta_cubic", &c.theta_cubic}};
+  for (const Row& t : thetas)
+    if (!t.v->candidates.empty()) rows.push_back(t);  // only the groups the model has
   if (o.json) {
     Json ps = Json::object();
     for (const auto& [k, v] : params) ps[k] = symbolic::canonical_text(v);
     // positions is always the exact text; positions_value the number, null when N is symbolic.
     Json out{{"family", family.name}, {"params", ps}, {"positions", n}};
+    if (!paper9) out["model"] = o.model;
     out["positions_value"] = positions_value(inst.N);
     for (const auto& r : rows) out[r.key] = number_or_null(*r.v);
     Json exact = Json::object();
@@ -67,6 +84,7 @@ int run(const Options& o) {
   }
   std::cout << "family " << family.name;
   for (const auto& [k, v] : params) std::cout << " " << k << "=" << symbolic::canonical_text(v);
+  if (!paper9) std::cout << " (model " << o.model << ", D = N^" << P << " det K)";
   std::cout << "\npositions N = " << n << "\n";
   for (const auto& r : rows) {
     std::cout << "  " << r.key << " = " << (r.v->exact ? r.v->str() : std::string("(no closed form)"));
@@ -96,11 +114,13 @@ Runner setup(CLI::App& app) {
   add_repeatable(app, "--param", o->params, "KEY=VALUE",
                  {"a parameter of the family, a number or a symbol (repeatable)",
                   "positions for multiplicities, degrees for a phase", "the family's own, listed above"});
+  add_model(app, o->model);
   add_switch(app, "--json", o->json, "print one JSON object");
   return [o] { return run(*o); };
 }
 
-const Registration reg({"family", "family NAME [--param key=value ...] [--json]   (NAME:" + names() + ")",
+const Registration reg({"family",
+                        "family NAME [--param key=value ...] [--model NAME] [--json]   (NAME:" + names() + ")",
                         "exact closed forms of D, A, E, S and the thetas for a program family; symbolic values allowed",
                         60, setup});
 

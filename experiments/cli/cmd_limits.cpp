@@ -14,6 +14,7 @@
 #include "experiments/cli/json_output.hpp"
 #include "experiments/cli/options.hpp"
 #include "experiments/cli/region_option.hpp"
+#include "experiments/cli/synthesis_cli.hpp"
 #include "numeric/region/region_limit.hpp"
 #include "symbolic/exact.hpp"
 #include "symbolic/limits.hpp"
@@ -23,6 +24,7 @@ namespace {
 
 struct Options {
   std::vector<std::string> regions;
+  std::string model = "paper9";
   bool json = false;
 };
 
@@ -53,6 +55,47 @@ int sphere_limits(bool json) {
              {"b", number(l.b)}};
   }
   if (json) print_json(out);
+  return 0;
+}
+
+// A model other than the paper's states its limits in its own file (numeric/model/), each proven
+// in the proof document it names (checked under ctest -L proof).
+int model_limits(ModelKind model, bool json) {
+  Json out = Json::object();
+  for (auto c : kCriteria) {
+    const auto l = stated_limit(model, criterion_name(c));
+    if (!l) continue;
+    Json moments = Json{{"E[x^2]", "1/3"}};
+    if (!l->x4.empty()) moments["E[x^4]"] = std::string(l->x4);
+    if (!l->x2y2.empty()) moments["E[x^2 y^2]"] = std::string(l->x2y2);
+    if (!l->x6.empty()) moments["E[x^6]"] = std::string(l->x6);
+    moments["odd"] = "0";
+    const std::string proof(visit_model(model, [](auto M) { return decltype(M)::proof; }));
+    if (!json) {
+      std::ostringstream decimal;
+      decimal << l->value;
+      const std::string exact(l->exact);
+      std::cout << criterion_name(c) << " >= " << exact << (decimal.str() == exact ? "" : " = " + decimal.str())
+                << "   optimal measure: " << l->measure << "; attained: " << l->attained << "\n";
+      continue;
+    }
+    out[std::string(criterion_name(c))] = Json{{"exact", std::string(l->exact)},
+                                               {"value", l->value},
+                                               {"moments", moments},
+                                               {"b", std::isnan(l->b) ? Json(nullptr) : Json(l->b)},
+                                               {"measure", std::string(l->measure)},
+                                               {"attained", std::string(l->attained)},
+                                               {"proof", proof}};
+  }
+  if (json) {
+    Json j = Json::object();
+    j["model"] = std::string(model_name(model));
+    for (auto& [k, v] : out.items()) j[k] = v;
+    print_json(j);
+  } else {
+    std::cout << "(model " << model_name(model) << ", " << model_parameters(model) << " parameters; proofs: "
+              << visit_model(model, [](auto M) { return decltype(M)::proof; }) << ")\n";
+  }
   return 0;
 }
 
@@ -103,6 +146,12 @@ int region_limits(const Options& o) {
 }
 
 int run(const Options& o) {
+  const ModelKind model = model_of(o.model);
+  if (model != ModelKind::paper9) {
+    if (!o.regions.empty() && !(o.regions.size() == 1 && o.regions[0] == "sphere"))
+      throw UsageError("limits: --region has limits for the paper9 model only (got --model " + o.model + ")");
+    return model_limits(model, o.json);
+  }
   if (o.regions.empty() || (o.regions.size() == 1 && o.regions[0] == "sphere")) return sphere_limits(o.json);
   return region_limits(o);
 }
@@ -110,11 +159,12 @@ int run(const Options& o) {
 Runner setup(CLI::App& app) {
   auto o = std::make_shared<Options>();
   add_region_option(app, o->regions);
+  add_model(app, o->model);
   add_switch(app, "--json", o->json, "print one JSON object keyed by criterion");
   return [o] { return run(*o); };
 }
 
-const Registration reg({"limits", "limits [--region SPEC]... [--json]",
+const Registration reg({"limits", "limits [--model NAME] [--region SPEC]... [--json]",
                         "N -> infinity limits of the normalised D, A, E, S criteria: exact on the sphere, certified "
                         "bounds on a region",
                         61, setup});

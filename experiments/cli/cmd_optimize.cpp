@@ -26,7 +26,7 @@ namespace {
 
 struct Options {
   SynthesisOptions synthesis;
-  std::string criterion = "D", local = "auto", out;
+  std::string criterion = "D", local = "auto", out, model = "paper9";
   std::vector<std::string> regions;
   int digits = 0;
   bool json = false;
@@ -36,6 +36,11 @@ int run(Options& o) {
   SynthesisOptions& opt = o.synthesis;
   opt.criterion = criterion_of(o.criterion);
   opt.local = o.local == "ipopt" ? LocalSolver::Ipopt : LocalSolver::Automatic;
+  opt.model = model_of(o.model);
+  const bool paper9 = opt.model == ModelKind::paper9;
+  require_positions("optimize", opt.positions, opt.model);
+  if (!paper9 && (!o.regions.empty() || o.digits > 0))
+    throw UsageError("optimize: --region and --digits work with the paper9 model only (got --model " + o.model + ")");
   if (progress_enabled())
     opt.progress = [](int done, int total) { std::cerr << "\rstart " << done << "/" << total << std::flush; };
   const std::optional<Region> region =
@@ -61,7 +66,9 @@ int run(Options& o) {
   const Program& best = polished ? polished->program : r.program;
   if (!o.out.empty()) write_program_file(o.out, best, region ? region_columns(*region, best) : std::vector<ExtraColumn>{});
   std::optional<double> limit;
-  if (region) {
+  if (!paper9) {
+    if (const auto l = stated_limit(opt.model, criterion_name(opt.criterion))) limit = l->value;
+  } else if (region) {
     if (opt.progress) std::cerr << "the " << criterion_name(opt.criterion) << " limit on " << region->text() << "\n";
     limit = limit_value(opt.criterion, *region);
   }
@@ -76,7 +83,13 @@ int run(Options& o) {
            {"seconds", r.seconds},
            {"local_solver", r.local_solver},
            {"confirmed", r.summary.converged()}};
-    if (limit) {
+    if (!paper9) {
+      j["model"] = std::string(model_name(opt.model));
+      if (limit) {
+        j["limit"] = *limit;
+        j["efficiency"] = efficiency(opt.criterion, *limit, r.value, model_parameters(opt.model));
+      }
+    } else if (limit) {
       j["region"] = region->text();
       j["limit"] = *limit;
       j["efficiency"] = efficiency(opt.criterion, *limit, r.value);
@@ -93,7 +106,12 @@ int run(Options& o) {
               << "  (N = " << opt.positions << ", " << r.hits << " of " << r.starts << " starts reached it, "
               << r.distinct << (r.distinct == 1 ? " program" : " distinct programs") << " up to symmetry, "
               << std::setprecision(3) << r.seconds << " s)\n";
-    if (limit)
+    if (limit && !paper9)
+      std::cout << "model " << model_name(opt.model) << ": limit " << std::setprecision(10) << *limit
+                << ", efficiency " << std::setprecision(9)
+                << efficiency(opt.criterion, *limit, r.value, model_parameters(opt.model))
+                << " (limit / value; D as its " << model_parameters(opt.model) << "th root)\n";
+    else if (limit)
       std::cout << "on " << region->text() << ": limit " << std::setprecision(10) << *limit << ", efficiency "
                 << std::setprecision(9) << efficiency(opt.criterion, *limit, r.value)
                 << " (limit / value; D as its 9th root)\n";
@@ -107,8 +125,10 @@ int run(Options& o) {
 
 Runner setup(CLI::App& app) {
   auto o = std::make_shared<Options>();
-  add_integer(app, "--positions", o->synthesis.positions, 9, 1000, {"number of positions N", "positions", kRequired});
+  add_integer(app, "--positions", o->synthesis.positions, 3, 1000,
+              {"number of positions N (at least the model's number of parameters)", "positions", kRequired});
   add_criterion(app, o->criterion);
+  add_model(app, o->model);
   add_starts(app, o->synthesis.starts);
   add_region_option(app, o->regions);
   add_seed(app, o->synthesis.seed);
@@ -124,7 +144,7 @@ Runner setup(CLI::App& app) {
 }
 
 const Registration reg({"optimize",
-                        "optimize --positions N --criterion D|A|E|S [--region SPEC]... [--starts K] [--seed S] "
+                        "optimize --positions N --criterion D|A|E|S [--model NAME] [--region SPEC]... [--starts K] [--seed S] "
                         "[--threads T] [--digits P] [--local auto|ipopt] [--out FILE] [--json]",
                         "the optimal program for a criterion (Newton/Ipopt multistart, optional high-precision polish)",
                         40, setup});

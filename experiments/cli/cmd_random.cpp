@@ -1,5 +1,5 @@
-// `scalcal random --positions N --count R [--seed S] [--criterion C] [--region SPEC]... [--threads T]
-// [--json]`: the best of R uniform random programs (the paper's dashed line, R = 100000), on all
+// `scalcal random --positions N --count R [--seed S] [--criterion C] [--model NAME] [--region SPEC]...
+// [--threads T] [--json]`: the best of R uniform random programs (the paper's dashed line, R = 100000), on all
 // cores; on a restricted region, uniform on it (numeric/region/region_sampler.hpp).
 #include <iomanip>
 #include <iostream>
@@ -21,13 +21,15 @@ struct Options {
   int positions = 0, threads = 0;
   long long count = 0;
   std::uint64_t seed = 1;
-  std::string criterion = "D";
+  std::string criterion = "D", model = "paper9";
   std::vector<std::string> regions;
   bool json = false;
 };
 
 int run(const Options& o) {
   const CriterionKind c = criterion_of(o.criterion);
+  const ModelKind model = model_of(o.model);
+  require_positions("random", o.positions, model);
   PositionSampler sampler;
   std::string region_text;
   if (!o.regions.empty()) {
@@ -37,14 +39,16 @@ int run(const Options& o) {
       region_text = region.text();
     }
   }
-  const RandomSearchResult r = random_search(o.positions, o.count, c, o.seed, o.threads, sampler);
+  const RandomSearchResult r = random_search(o.positions, o.count, c, o.seed, o.threads, sampler, model);
   if (o.json) {
     Json j{{"best", r.best}, {"count", r.count}, {"program", program_json(r.program)}, {"seconds", r.seconds}};
     if (!region_text.empty()) j["region"] = region_text;
+    if (model != ModelKind::paper9) j["model"] = std::string(model_name(model));
     print_json(j);
   } else {
     std::cout << "best " << criterion_name(c) << " = " << std::setprecision(12) << r.best << " of " << r.count
-              << " random programs of " << o.positions << " positions" << (region_text.empty() ? "" : " on " + region_text)
+              << " random programs of " << o.positions << " positions"
+              << (model == ModelKind::paper9 ? "" : " (model " + std::string(model_name(model)) + ")") << (region_text.empty() ? "" : " on " + region_text)
               << " (" << std::setprecision(3) << r.seconds
               << " s, " << r.count / r.seconds / 1e6 << " M programs/s)\n";
   }
@@ -53,10 +57,12 @@ int run(const Options& o) {
 
 Runner setup(CLI::App& app) {
   auto o = std::make_shared<Options>();
-  add_integer(app, "--positions", o->positions, 9, 100000, {"number of positions N", "positions", kRequired});
+  add_integer(app, "--positions", o->positions, 3, 100000,
+              {"number of positions N (at least the model's number of parameters)", "positions", kRequired});
   add_integer(app, "--count", o->count, 1, 1000000000LL, {"random programs drawn", "programs", kRequired});
   add_seed(app, o->seed);
   add_criterion(app, o->criterion);
+  add_model(app, o->model);
   add_region_option(app, o->regions);
   add_threads(app, o->threads);
   add_switch(app, "--json", o->json, "print one JSON object");
@@ -64,8 +70,8 @@ Runner setup(CLI::App& app) {
 }
 
 const Registration reg({"random",
-                        "random --positions N --count R [--seed S] [--criterion C] [--region SPEC]... [--threads T] "
-                        "[--json]",
+                        "random --positions N --count R [--seed S] [--criterion C] [--model NAME] [--region SPEC]... "
+                        "[--threads T] [--json]",
                         "the best of R uniform random programs (the paper's dashed line), on all cores", 41, setup});
 
 }  // namespace

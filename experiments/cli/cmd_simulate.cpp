@@ -1,11 +1,12 @@
 // `scalcal simulate --program P --trials T --noise SIGMA [--bench-error DEG] [--modulus ...]
-// [--seed S] [--json]`: Monte-Carlo calibration of simulated meters, the empirical covariance of
-// the estimates against sigma^2 K, the estimator's bias, and the effect of bench errors.
+// [--model NAME] [--seed S] [--json]`: Monte-Carlo calibration of simulated meters, the empirical
+// covariance of the estimates against sigma^2 K, the estimator's bias, and the effect of bench errors.
 #include <cmath>
 #include <iomanip>
 #include <iostream>
 #include <memory>
 #include <sstream>
+#include <stdexcept>
 #include <vector>
 
 #include "experiments/cli/command.hpp"
@@ -15,7 +16,10 @@
 #include "experiments/cli/synthesis_cli.hpp"
 #include "numeric/program/catalogue.hpp"
 #include "numeric/criteria/evaluation.hpp"
+#include "numeric/criteria/identifiability.hpp"
+#include "numeric/criteria/model_evaluation.hpp"
 #include "numeric/io/input_error.hpp"
+#include "numeric/calibration/model_calibration.hpp"
 #include "numeric/calibration/monte_carlo.hpp"
 #include "numeric/model/paper9.hpp"
 
@@ -23,17 +27,17 @@ namespace scalcal::cli {
 namespace {
 
 constexpr const char* kUsage =
-    "simulate --program P --trials T --noise SIGMA [--bench-error DEG] [--modulus norm|projection] [--seed S] "
-    "[--samples K] [--size A] [--json]";
+    "simulate --program P --trials T --noise SIGMA [--bench-error DEG] [--modulus norm|projection] [--model NAME] "
+    "[--seed S] [--samples K] [--size A] [--json]";
 
 const char* modulus_name(Modulus m) { return m == Modulus::norm ? "norm" : "projection"; }
 
 Json result_json(const MonteCarloResult& r, Modulus m) {
   Json params = Json::array();
-  for (int k = 0; k < 9; ++k) {
+  for (int k = 0; k < static_cast<int>(r.truth.size()); ++k) {
     const double th = std::sqrt(r.theoretical_cov(k, k));
     const double se_mean = std::sqrt(r.empirical_cov(k, k) / std::max(1, r.converged));
-    params.push_back(Json{{"name", std::string(kParameterNames[k])},
+    params.push_back(Json{{"name", std::string(r.names[static_cast<std::size_t>(k)])},
                           {"truth", r.truth(k)},
                           {"mean", r.mean(k)},
                           {"bias", r.mean(k) - r.truth(k)},
@@ -46,7 +50,8 @@ Json result_json(const MonteCarloResult& r, Modulus m) {
                           {"std_ratio", std::sqrt(r.empirical_cov(k, k)) / th}});
   }
   Json te = Json::object(), tt = Json::object();
-  for (int q = 0; q < 3; ++q) {
+  for (int q = 0; q < 4; ++q) {
+    if (std::isnan(r.theta_theoretical(q))) continue;  // a group the model lacks
     te[std::string(kGroupNames[q])] = r.theta_empirical(q);
     tt[std::string(kGroupNames[q])] = r.theta_theoretical(q);
   }
@@ -65,19 +70,20 @@ void print_result(std::ostream& out, const MonteCarloResult& r, Modulus m) {
   out << "\nmodulus " << modulus_name(m) << ": " << r.converged << " converged trials, "
       << std::setprecision(3) << r.mean_iterations << " iterations on average\n";
   out << "  parameter        truth         bias   bias/se  lin. error   emp. std  theor. std   ratio\n";
-  for (int k = 0; k < 9; ++k) {
+  for (int k = 0; k < static_cast<int>(r.truth.size()); ++k) {
     const double th = std::sqrt(r.theoretical_cov(k, k));
     const double emp = std::sqrt(r.empirical_cov(k, k));
     const double se_mean = emp / std::sqrt(std::max(1, r.converged));
-    out << "  " << std::left << std::setw(11) << kParameterNames[k] << std::right << std::setprecision(4)
+    out << "  " << std::left << std::setw(11) << r.names[static_cast<std::size_t>(k)] << std::right << std::setprecision(4)
         << std::setw(12) << r.truth(k) << std::setw(13) << r.mean(k) - r.truth(k) << std::setw(10)
         << std::setprecision(2) << (r.mean(k) - r.truth(k)) / se_mean << std::setprecision(4) << std::setw(12)
         << r.noise_free(k) - r.truth(k) << std::setw(11) << emp
         << std::setw(12) << th << std::setw(8) << std::setprecision(3) << emp / th << "\n";
   }
   out << "  theta (sqrt(N max var)/sigma)  empirical / theoretical:";
-  for (int q = 0; q < 3; ++q)
-    out << "  " << kGroupNames[q] << " " << std::setprecision(4) << r.theta_empirical(q) << " / "
+  for (int q = 0; q < 4; ++q)
+    if (!std::isnan(r.theta_theoretical(q)))
+      out << "  " << kGroupNames[q] << " " << std::setprecision(4) << r.theta_empirical(q) << " / "
         << r.theta_theoretical(q);
   out << "\n  sampling error of an empirical std: " << std::setprecision(2) << 100 * r.std_sampling_error()
       << "% (1 sigma); max normalised covariance difference " << std::setprecision(3)
@@ -99,7 +105,7 @@ void print_result(std::ostream& out, const MonteCarloResult& r, Modulus m) {
 constexpr double kNoiseRefuseAbove = 1.0, kNoiseRefuseBelow = 1e-15;
 constexpr double kNoiseWarnAbove = 0.01, kNoiseWarnBelow = 1e-9, kSpreadWarnAbove = 0.05;
 
-void check_noise(double noise, const Evaluation& ev, int samples, const std::string& program) {
+void check_noise(double noise, const ModelEvaluation& ev, int samples, const std::string& program) {
   std::ostringstream s;
   s << std::setprecision(3);
   if (noise >= kNoiseRefuseAbove) {
@@ -134,7 +140,7 @@ void check_noise(double noise, const Evaluation& ev, int samples, const std::str
 }
 
 struct Options {
-  std::string program, modulus;
+  std::string program, modulus, model = "paper9";
   int trials = 0, samples = 1;
   double noise = 0, bench = 0, size = 1e-3;
   std::uint64_t seed = 1;
@@ -152,17 +158,25 @@ int run(const Options& o) {
   const bool json = o.json;
 
   const Program program = resolve_program(*program_name);
-  const Evaluation ev = evaluate(program);
+  const ModelKind model = model_of(o.model);
+  const ModelEvaluation ev = evaluate(model, program);
+  try {
+    meter_indices(model);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string("simulate: ") + e.what());
+  }
   if (!ev.full_rank()) throw InputError(*program_name, 0, rank_deficiency(ev));
   check_noise(noise, ev, samples, *program_name);
 
   Json all{{"program", *program_name}, {"positions", program.size()}, {"trials", trials},   {"noise", noise},
            {"bench_error_deg", bench},    {"seed", seed},                {"samples", samples}, {"size", size}};
+  if (model != ModelKind::paper9) all["model"] = o.model;
   Json results = Json::array();
   if (!json)
     std::cout << "Monte-Carlo calibration: program " << *program_name << " (N = " << program.size() << "), " << trials
               << " trials, noise " << noise << " |I|, bench error " << bench << " deg, " << samples
-              << " sample(s) per position, error size " << size << ", seed " << seed << "\n";
+              << " sample(s) per position, error size " << size << ", seed " << seed
+              << (model == ModelKind::paper9 ? "" : ", model " + o.model) << "\n";
   for (const Modulus m : moduli) {
     MonteCarloOptions mc;
     mc.program = program;
@@ -179,7 +193,7 @@ int run(const Options& o) {
         std::cerr << "\rsimulate " << modulus_name(m) << ": " << done << "/" << total << std::flush;
         if (done == total) std::cerr << "\n";
       };
-    const MonteCarloResult r = run_monte_carlo(mc, progress);
+    const MonteCarloResult r = run_monte_carlo(mc, progress, model);
     if (json) results.push_back(result_json(r, m));
     else print_result(std::cout, r, m);
   }
@@ -200,6 +214,7 @@ Runner setup(CLI::App& app) {
              {"every true position is the nominal one tipped by this angle", "degrees"});
   add_choice(app, "--modulus", o->modulus, {"norm", "projection"},
              {"the modulus the estimator fits", "none", "both, one after the other"});
+  add_model(app, o->model);
   add_seed(app, o->seed);
   add_integer(app, "--samples", o->samples, 1, 100000, {"samples per position", "samples"});
   add_number(app, "--size", o->size, number_in(0, 0.2),

@@ -1,9 +1,11 @@
-// `scalcal sweep --positions 9..40 --criteria D,A,E,S [--region SPEC]... [--starts K] [--seed S]
-// [--threads T] [--out FILE] [--json] [--no-timing]`: the best program for every N and criterion,
-// with its ratio to the N -> infinity limit (the region's, on a restricted bench). --no-timing
+// `scalcal sweep --positions 9..40 --criteria D,A,E,S [--model NAME] [--region SPEC]... [--starts K]
+// [--seed S] [--threads T] [--out FILE] [--json] [--no-timing]`: the best program for every N and
+// criterion, with its ratio to the N -> infinity limit (the region's on a restricted bench, the
+// model's stated limit for a model other than the paper's). --no-timing
 // leaves out the only columns that differ between runs.
 #include <charconv>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <sstream>
@@ -24,10 +26,10 @@
 namespace scalcal::cli {
 namespace {
 
-constexpr int kMinN = 9, kMaxN = 1000;
+constexpr int kMinN = 3, kMaxN = 1000;  // N >= the model's parameters is checked in run()
 
 struct Options {
-  std::string positions = "9..40", criteria = "D,A,E,S", out;
+  std::string positions = "9..40", criteria = "D,A,E,S", out, model = "paper9";
   std::vector<std::string> regions;
   int starts = 0, threads = 0;
   std::uint64_t seed = 1;
@@ -72,6 +74,11 @@ std::string program_cell(const Program& p) {
 int run(const Options& o) {
   const auto [lo, hi] = *read_range(o.positions);
   const auto criteria = read_criteria(o.criteria);
+  const ModelKind model = model_of(o.model);
+  const bool paper9 = model == ModelKind::paper9;
+  require_positions("sweep", lo, model);
+  if (!paper9 && !o.regions.empty())
+    throw UsageError("sweep: --region works with the paper9 model only (got --model " + o.model + ")");
   const std::optional<Region> region =
       o.regions.empty() ? std::nullopt : std::optional<Region>(resolve_region(o.regions, "sweep"));
   const bool restricted = region && !region->is_sphere();
@@ -88,7 +95,11 @@ int run(const Options& o) {
               << "\n";
   for (const CriterionKind c : criteria) {
     if (restricted && progress_enabled()) std::cerr << "the " << criterion_name(c) << " limit on " << region->text() << "\n";
-    const double limit = restricted ? limit_value(c, *region) : criterion_limit(c).value;
+    const std::optional<ModelLimit> stated = stated_limit(model, criterion_name(c));
+    const double limit = restricted ? limit_value(c, *region)
+                         : paper9   ? criterion_limit(c).value
+                         : stated   ? stated->value
+                                    : std::numeric_limits<double>::quiet_NaN();
     for (int n = lo; n <= hi; ++n) {
       SynthesisOptions opt;
       opt.positions = n;
@@ -96,6 +107,7 @@ int run(const Options& o) {
       opt.starts = o.starts;
       opt.seed = o.seed;
       opt.threads = o.threads;
+      opt.model = model;
       const SynthesisResult r = restricted ? synthesize_on_region(opt, *region) : synthesize(opt);
       const std::string name(criterion_name(c));
       if (o.json) {
@@ -103,6 +115,10 @@ int run(const Options& o) {
                {"ratio", r.value / limit}, {"program", program_json(r.program)}, {"hits", r.hits},
                {"starts", r.starts}, {"distinct", r.distinct}};
         if (!o.no_timing) j["seconds"] = r.seconds;
+        if (!paper9) {
+          j["model"] = std::string(model_name(model));
+          j["limit"] = limit;
+        }
         if (region) {
           j["region"] = region->text();
           j["limit"] = limit;
@@ -132,14 +148,16 @@ Runner setup(CLI::App& app) {
   add_checked_text(app, "--positions", o->positions, "A..B", {"N or a range A..B of N", "positions"},
                    [](const std::string& s) -> std::string {
                      return read_range(s) ? ""
-                                          : fmt::format("must be N or A..B with {} <= A <= B <= {}, got '{}'", kMinN,
-                                                        kMaxN, s);
+                                          : fmt::format("must be N or A..B with {} <= A <= B <= {} (and A at least "
+                                                        "the model's parameters), got '{}'",
+                                                        kMinN, kMaxN, s);
                    });
   add_checked_text(app, "--criteria", o->criteria, "LIST", {"comma-separated criteria"},
                    [](const std::string& s) -> std::string {
                      return read_criteria(s).empty() ? "must be a comma-separated list of D, A, E, S, got '" + s + "'"
                                                      : "";
                    });
+  add_model(app, o->model);
   add_region_option(app, o->regions);
   add_starts(app, o->starts);
   add_seed(app, o->seed);
@@ -151,7 +169,7 @@ Runner setup(CLI::App& app) {
 }
 
 const Registration reg({"sweep",
-                        "sweep --positions 9..40 --criteria D,A,E,S [--region SPEC]... [--starts K] [--seed S] "
+                        "sweep --positions 9..40 --criteria D,A,E,S [--model NAME] [--region SPEC]... [--starts K] [--seed S] "
                         "[--threads T] [--out FILE] [--json] [--no-timing]",
                         "the best program for every N and criterion, and its ratio to the N -> infinity limit", 42,
                         setup});

@@ -1,7 +1,9 @@
 #include "experiments/cli/synthesis_cli.hpp"
 
 #include <stdexcept>
+#include <string>
 
+#include "experiments/cli/command.hpp"
 #include "experiments/cli/options.hpp"
 
 namespace scalcal::cli {
@@ -16,6 +18,28 @@ CriterionKind criterion_of(const std::string& name) {
   const auto c = parse_criterion(name);
   if (!c) throw std::logic_error("unchecked criterion '" + name + "'");
   return *c;
+}
+
+void add_model(CLI::App& app, std::string& target) {
+  std::vector<std::string> names;
+  for (int i = 0; i < kModelCount; ++i) names.push_back(std::string(model_name(ModelKind(i))));
+  add_choice(app, "--model", target, names,
+             {"the calibration model: paper9 (the paper's 9 parameters), axis6 (bias and scale factor), bias3 "
+              "(offsets only), cubic12 (paper9 plus x^3, y^3, z^3)"});
+}
+
+ModelKind model_of(const std::string& name) {
+  if (name.empty()) return ModelKind::paper9;
+  const auto m = parse_model(name);
+  if (!m) throw std::logic_error("unchecked model '" + name + "'");
+  return *m;
+}
+
+void require_positions(const std::string& command, int positions, ModelKind model) {
+  if (positions < model_parameters(model))
+    throw UsageError(command + ": --positions " + std::to_string(positions) + " is below the " +
+                     std::to_string(model_parameters(model)) + " parameters of --model " +
+                     std::string(model_name(model)));
 }
 
 void add_seed(CLI::App& app, std::uint64_t& seed) {

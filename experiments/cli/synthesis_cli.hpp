@@ -7,11 +7,18 @@
 
 #include "experiments/cli/options.hpp"
 #include "numeric/criteria/registry.hpp"
+#include "numeric/model/registry.hpp"
 
 namespace scalcal::cli {
 
 void add_criterion(CLI::App& app, std::string& target, const std::string& fallback_text = "");
 CriterionKind criterion_of(const std::string& name);  // a name add_criterion has checked
+
+// --model NAME (default paper9), one of the registered models.
+void add_model(CLI::App& app, std::string& target);
+ModelKind model_of(const std::string& name);  // a name add_model has checked
+// UsageError from `command` unless positions >= the model's number of parameters.
+void require_positions(const std::string& command, int positions, ModelKind model);
 
 void add_seed(CLI::App& app, std::uint64_t& seed);
 void add_starts(CLI::App& app, int& starts);

@@ -1,8 +1,11 @@
 #include "numeric/calibration/monte_carlo.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
-#include "numeric/criteria/evaluation.hpp"
+#include "numeric/calibration/model_calibration.hpp"
+#include "numeric/criteria/model_evaluation.hpp"
 
 namespace scalcal {
 
@@ -12,8 +15,8 @@ double MonteCarloResult::std_sampling_error() const {
 
 double MonteCarloResult::max_normalised_cov_difference() const {
   double worst = 0;
-  for (int r = 0; r < 9; ++r)
-    for (int s = 0; s < 9; ++s)
+  for (Eigen::Index r = 0; r < theoretical_cov.rows(); ++r)
+    for (Eigen::Index s = 0; s < theoretical_cov.cols(); ++s)
       worst = std::max(worst, std::abs(empirical_cov(r, s) - theoretical_cov(r, s)) /
                                   std::sqrt(theoretical_cov(r, r) * theoretical_cov(s, s)));
   return worst;
@@ -30,8 +33,13 @@ Meter reference_meter(double size) {
   return m;
 }
 
-std::vector<PositionSamples> simulate_measurements(const Meter& meter, const Program& nominal, double noise,
-                                                   double bench_error_deg, int samples, GaussianSource& rng) {
+namespace {
+
+// One data set of any meter with measure() (eq. 2, or a model's meter): each position tipped by
+// the bench error, samples with noise.
+template <class AnyMeter>
+std::vector<PositionSamples> simulate_with(const AnyMeter& meter, const Program& nominal, double noise,
+                                           double bench_error_deg, int samples, GaussianSource& rng) {
   std::vector<PositionSamples> data;
   const double angle = bench_error_deg * M_PI / 180.0;
   for (const Vec3& eta_nominal : nominal.positions) {
@@ -45,33 +53,70 @@ std::vector<PositionSamples> simulate_measurements(const Meter& meter, const Pro
   return data;
 }
 
-MonteCarloResult run_monte_carlo(const MonteCarloOptions& o, const std::function<void(int, int)>& progress) {
+struct Estimate {
+  Eigen::VectorXd X;
+  double noise = 0;
+  int iterations = 0;
+  bool converged = false;
+};
+
+}  // namespace
+
+std::vector<PositionSamples> simulate_measurements(const Meter& meter, const Program& nominal, double noise,
+                                                   double bench_error_deg, int samples, GaussianSource& rng) {
+  return simulate_with(meter, nominal, noise, bench_error_deg, samples, rng);
+}
+
+MonteCarloResult run_monte_carlo(const MonteCarloOptions& o, const std::function<void(int, int)>& progress,
+                                 ModelKind model) {
   MonteCarloResult r;
+  const bool paper9 = model == ModelKind::paper9;
   const Meter meter = reference_meter(o.size);
-  r.truth = meter.parameters(1.0);
+  const ModelMeter model_meter = paper9 ? ModelMeter{meter, Vec3::Zero()} : reference_model_meter(model, o.size);
+  const std::vector<int> index = meter_indices(model);
+  {
+    const Eigen::Matrix<double, 12, 1> all = model_meter.parameters(1.0);
+    r.truth.resize(static_cast<Eigen::Index>(index.size()));
+    for (std::size_t k = 0; k < index.size(); ++k) r.truth(static_cast<Eigen::Index>(k)) = all(index[k]);
+  }
   GaussianSource rng(o.seed);
   CalibrationOptions co;
   co.modulus = o.modulus;
+  const auto simulate = [&](double noise, double bench, int samples, GaussianSource& g) {
+    return paper9 ? simulate_with(meter, o.program, noise, bench, samples, g)
+                  : simulate_with(model_meter, o.program, noise, bench, samples, g);
+  };
+  const auto estimate = [&](const std::vector<PositionSamples>& data) {
+    Estimate e;
+    if (paper9) {
+      const CalibrationResult c = calibrate(data, co);
+      e = {Eigen::VectorXd(c.X), c.noise, c.iterations, c.converged};
+    } else {
+      const ModelCalibration c = calibrate_model(model, data, co);
+      e = {c.X, c.noise, c.iterations, c.converged};
+    }
+    return e;
+  };
   {
     GaussianSource unused(0);
-    r.noise_free = calibrate(simulate_measurements(meter, o.program, 0.0, 0.0, 1, unused), co).X;
+    r.noise_free = estimate(simulate(0.0, 0.0, 1, unused)).X;
   }
-  std::vector<Vec9> estimates;
+  std::vector<Eigen::VectorXd> estimates;
   double noise_ratio = 0, iterations = 0;
   for (int t = 0; t < o.trials; ++t) {
     if (progress && (t % 100 == 0)) progress(t, o.trials);
-    const auto data = simulate_measurements(meter, o.program, o.noise, o.bench_error_deg, o.samples, rng);
-    const CalibrationResult c = calibrate(data, co);
+    const Estimate c = estimate(simulate(o.noise, o.bench_error_deg, o.samples, rng));
     if (!c.converged) continue;
     estimates.push_back(c.X);
     noise_ratio += c.noise / o.noise;
     iterations += c.iterations;
   }
   if (progress) progress(o.trials, o.trials);
+  const Eigen::Index P = r.truth.size();
   r.converged = static_cast<int>(estimates.size());
-  r.mean.setZero();
+  r.mean = Eigen::VectorXd::Zero(P);
   for (const auto& e : estimates) r.mean += e;
-  r.empirical_cov.setZero();
+  r.empirical_cov = Eigen::MatrixXd::Zero(P, P);
   if (r.converged > 0) {
     r.mean /= r.converged;
     r.mean_noise_ratio = noise_ratio / r.converged;
@@ -80,13 +125,16 @@ MonteCarloResult run_monte_carlo(const MonteCarloOptions& o, const std::function
   for (const auto& e : estimates) r.empirical_cov += (e - r.mean) * (e - r.mean).transpose();
   if (r.converged > 1) r.empirical_cov /= (r.converged - 1);
 
-  const Evaluation ev = evaluate(o.program);
+  const ModelEvaluation ev = evaluate(model, o.program);
+  r.names = ev.parameter_names;
   r.theoretical_cov = o.noise * o.noise / o.samples * ev.K;
-  r.theta_theoretical = Vec3(ev.theta_bias, ev.theta_scale, ev.theta_nonorth);
   const double N = o.program.size();
-  for (int q = 0; q < 3; ++q) {
-    const double v = r.empirical_cov.diagonal().segment<3>(3 * q).maxCoeff();
-    r.theta_empirical(q) = std::sqrt(N * o.samples * v) / o.noise;
+  for (int q = 0; q < 4; ++q) {
+    r.theta_theoretical(q) = ev.theta[static_cast<std::size_t>(q)];
+    double v = -1;
+    for (Eigen::Index k = 0; k < P; ++k)
+      if (static_cast<int>(ev.parameter_groups[static_cast<std::size_t>(k)]) == q) v = std::max(v, r.empirical_cov(k, k));
+    r.theta_empirical(q) = v < 0 ? std::numeric_limits<double>::quiet_NaN() : std::sqrt(N * o.samples * v) / o.noise;
   }
   return r;
 }

@@ -4,10 +4,13 @@
 #pragma once
 #include <cstdint>
 #include <functional>
+#include <string_view>
+#include <vector>
 
 #include "numeric/calibration/meter_model.hpp"
 #include "numeric/program/program.hpp"
 #include "numeric/calibration/scalar_calibration.hpp"
+#include "numeric/model/registry.hpp"
 
 namespace scalcal {
 
@@ -22,16 +25,19 @@ struct MonteCarloOptions {
   double size = 1e-3;             // scale of the simulated meter's errors (see reference_meter)
 };
 
+// P entries for a model of P parameters (9 for the paper's), in the model's order.
 struct MonteCarloResult {
-  Vec9 truth;                 // X of the simulated meter (gamma = phi_kj + phi_jk)
-  Vec9 mean;                  // mean estimate over the converged trials
+  std::vector<std::string_view> names;  // the model's parameter names
+  Eigen::VectorXd truth;      // X of the simulated meter (gamma = phi_kj + phi_jk)
+  Eigen::VectorXd mean;       // mean estimate over the converged trials
   // The estimate from noise-free data without bench errors: truth + the error of the first-order
   // model itself (second order in the meter's errors), the value the noisy estimates scatter about.
-  Vec9 noise_free;
-  Mat9 empirical_cov;         // covariance of the estimates about their mean
-  Mat9 theoretical_cov;       // sigma^2 K / samples
-  Vec3 theta_empirical;       // sqrt(N max_r var_r) / sigma per group (bias, scale, nonorth)
-  Vec3 theta_theoretical;     // the same from K: theta_q of evaluate()
+  Eigen::VectorXd noise_free;
+  Eigen::MatrixXd empirical_cov;    // covariance of the estimates about their mean
+  Eigen::MatrixXd theoretical_cov;  // sigma^2 K / samples
+  // sqrt(N max_r var_r) / sigma per group (bias, scale, nonorth, cubic; NaN for a group the model
+  // lacks), and the same from K: theta_q of evaluate().
+  Eigen::Vector4d theta_empirical, theta_theoretical;
   double mean_noise_ratio = 0;  // mean over trials of the estimated noise / sigma
   int converged = 0;          // trials whose iteration converged (only these are counted)
   double mean_iterations = 0;
@@ -50,8 +56,11 @@ Meter reference_meter(double size);
 std::vector<PositionSamples> simulate_measurements(const Meter& meter, const Program& nominal, double noise,
                                                    double bench_error_deg, int samples, GaussianSource& rng);
 
-// `progress(done, total)` is called now and then (may be empty).
+// `progress(done, total)` is called now and then (may be empty). The paper's model by default;
+// another model's meter is reference_model_meter (numeric/calibration/model_calibration.hpp),
+// calibrated by calibrate_model.
 MonteCarloResult run_monte_carlo(const MonteCarloOptions& options,
-                                 const std::function<void(int, int)>& progress = {});
+                                 const std::function<void(int, int)>& progress = {},
+                                 ModelKind model = ModelKind::paper9);
 
 }  // namespace scalcal

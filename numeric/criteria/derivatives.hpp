@@ -30,7 +30,7 @@ PositionsT<Scalar> gradient_from_dM(const PositionsT<Scalar>& eta, const Informa
 // With d grad_i = 2 (T(G h_i) + J_i^T G J_i) d eta_i + 2 J_i^T dG h_i and
 // dM = sum_j (J_j d eta_j h_j^T + h_j d eta_j^T J_j^T), block (i, j) is
 //   2c [ (h_j^T B h_i) J_i^T A J_j + (J_i^T A h_j)(J_j^T B h_i)^T + (A <-> B) ]
-// plus, for i = j, 2 T(G h_i) + 2 J_i^T G J_i, where T(w) = Model::curvature(w).
+// plus, for i = j, 2 T(G h_i) + 2 J_i^T G J_i, where T(w) = Model::curvature(w, eta_i).
 template <class Model = Paper9Model, class Scalar>
 MatXT<Scalar> hessian_from_dM(const PositionsT<Scalar>& eta, const InformationT<Model, Scalar>& G,
                               const InformationT<Model, Scalar>& A, const InformationT<Model, Scalar>& B,
@@ -57,7 +57,7 @@ MatXT<Scalar> hessian_from_dM(const PositionsT<Scalar>& eta, const InformationT<
       block *= two_c;
       if (i == j) {
         const RowT<Model, Scalar> w = G * h[i];
-        block += two * Model::curvature(w) + two * (J[i].transpose() * G * J[i]);
+        block += two * Model::curvature(w, eta[i]) + two * (J[i].transpose() * G * J[i]);
       }
       H.template block<3, 3>(3 * static_cast<int>(i), 3 * static_cast<int>(j)) = block;
       H.template block<3, 3>(3 * static_cast<int>(j), 3 * static_cast<int>(i)) = block.transpose();

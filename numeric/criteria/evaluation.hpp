@@ -30,7 +30,7 @@ struct EvaluationTpl {
   Scalar D, A, E, S;
   // theta_q = sqrt(N max K(r,r)) over the parameters of each group (eq. 7, times sqrt N); NaN for a
   // group the model does not have.
-  Scalar theta_bias, theta_scale, theta_nonorth;
+  Scalar theta_bias, theta_scale, theta_nonorth, theta_cubic;
   // The same criteria without normalisation.
   Scalar det_K, trace_K, lambda_max_K, max_diag_K;
   InformationT<Model, Scalar> information;  // H^T H
@@ -97,7 +97,7 @@ EvaluationTpl<Scalar, Model> evaluate(const ProgramTpl<Scalar>& program) {
   const Scalar inf = std::numeric_limits<Scalar>::infinity();
   ev.values.fill(inf);
   ev.D = ev.A = ev.E = ev.S = inf;
-  ev.theta_bias = ev.theta_scale = ev.theta_nonorth = inf;
+  ev.theta_bias = ev.theta_scale = ev.theta_nonorth = ev.theta_cubic = inf;
   ev.det_K = ev.trace_K = ev.lambda_max_K = ev.max_diag_K = inf;
   ev.condition = inf;
   ev.K.setZero();
@@ -132,6 +132,7 @@ EvaluationTpl<Scalar, Model> evaluate(const ProgramTpl<Scalar>& program) {
   ev.theta_bias = detail::group_theta<Model>(diag, N, ParameterGroup::bias);
   ev.theta_scale = detail::group_theta<Model>(diag, N, ParameterGroup::scale);
   ev.theta_nonorth = detail::group_theta<Model>(diag, N, ParameterGroup::nonorth);
+  ev.theta_cubic = detail::group_theta<Model>(diag, N, ParameterGroup::cubic);
   return ev;
 }
 

@@ -4,7 +4,7 @@
 #pragma once
 #include <string>
 
-#include "numeric/criteria/evaluation.hpp"
+#include "numeric/criteria/model_evaluation.hpp"
 
 namespace scalcal {
 
@@ -13,9 +13,11 @@ namespace scalcal {
 inline constexpr double kIllConditioned = 1e10;
 
 // "rank-deficient program: rank 5 of 9; not identifiable: bias_z, scale_z, nonorth_yz, nonorth_zx"
+std::string rank_deficiency(const ModelEvaluation& ev);
 std::string rank_deficiency(const Evaluation& ev);
 
 // "ill-conditioned program (condition 3.2e+12): the combination poorly determined is mostly scale_z, ..."
+std::string ill_conditioning(const ModelEvaluation& ev);
 std::string ill_conditioning(const Evaluation& ev);
 
 }  // namespace scalcal

@@ -20,8 +20,8 @@ using Mat3 = Mat3T<double>;
 template <class Scalar> using PositionsT = std::vector<Vec3T<Scalar>>;
 
 // The groups the paper reports RMS errors for (eq. 7); a model may have any of them.
-enum class ParameterGroup { bias = 0, scale = 1, nonorth = 2 };
-inline constexpr std::array<std::string_view, 3> kGroupNames = {"bias", "scale", "nonorth"};
+enum class ParameterGroup { bias = 0, scale = 1, nonorth = 2, cubic = 3 };
+inline constexpr std::array<std::string_view, 4> kGroupNames = {"bias", "scale", "nonorth", "cubic"};
 
 template <class Model, class Scalar> using RowT = Eigen::Matrix<Scalar, Model::kParameters, 1>;
 template <class Model, class Scalar> using JacobianT = Eigen::Matrix<Scalar, Model::kParameters, 3>;
@@ -31,7 +31,8 @@ using InformationT = Eigen::Matrix<Scalar, Model::kParameters, Model::kParameter
 // What a model must give; a missing piece is a compile error wherever the model is used.
 //   row(eta)        h(eta), P entries
 //   jacobian(eta)   dh/d eta, P x 3
-//   curvature(w)    sum_a w_a d^2 h_a / d eta^2, 3 x 3 (the second derivatives the Newton step needs)
+//   curvature(w, eta)  sum_a w_a d^2 h_a / d eta^2 at eta, 3 x 3 (the second derivatives the Newton
+//                      step needs; constant for the quadratic models, not for cubic12)
 template <class M>
 concept CalibrationModel = requires(const Vec3T<double>& eta, const RowT<M, double>& w) {
   { M::kParameters } -> std::convertible_to<int>;
@@ -40,7 +41,7 @@ concept CalibrationModel = requires(const Vec3T<double>& eta, const RowT<M, doub
   { M::parameter_groups[0] } -> std::convertible_to<ParameterGroup>;
   { M::row(eta) } -> std::same_as<RowT<M, double>>;
   { M::jacobian(eta) } -> std::same_as<JacobianT<M, double>>;
-  { M::curvature(w) } -> std::same_as<Mat3T<double>>;
+  { M::curvature(w, eta) } -> std::same_as<Mat3T<double>>;
 };
 
 // N^P, the normalisation of det K that makes it comparable across N.

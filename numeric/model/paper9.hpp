@@ -8,6 +8,9 @@ namespace scalcal {
 struct Paper9Model {
   static constexpr int kParameters = 9;
   static constexpr std::string_view name = "paper9";
+  static constexpr std::string_view summary = "h = (x, y, z, x^2, y^2, z^2, xy, yz, zx): the paper's model";
+  // Its limits come from the criteria and symbolic/limits.hpp, proven here:
+  static constexpr std::string_view proof = "proofs/d_limit.md, proofs/aes_limits.md";
   static constexpr std::array<std::string_view, 9> parameter_names = {
       "bias_x", "bias_y", "bias_z", "scale_x", "scale_y", "scale_z", "nonorth_xy", "nonorth_yz", "nonorth_zx"};
   static constexpr std::array<ParameterGroup, 9> parameter_groups = {
@@ -39,7 +42,7 @@ struct Paper9Model {
 
   // Only the quadratic rows curve: d^2(x^2) = 2 e_x e_x^T, d^2(xy) = e_x e_y^T + e_y e_x^T, ...
   template <class Scalar>
-  static Mat3T<Scalar> curvature(const RowT<Paper9Model, Scalar>& w) {
+  static Mat3T<Scalar> curvature(const RowT<Paper9Model, Scalar>& w, const Vec3T<Scalar>& /*at*/) {
     const Scalar two(2);
     Mat3T<Scalar> T;
     T << two * w(3), w(6), w(8),

@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "numeric/criteria/evaluation.hpp"
-#include "numeric/region/exchange.hpp"
+#include "numeric/synthesis/exchange.hpp"
 #include "numeric/region/region_synthesis.hpp"
 #include "numeric/synthesis/ipopt_local.hpp"
 #include "numeric/synthesis/workers.hpp"
@@ -11,24 +11,24 @@
 namespace scalcal {
 namespace {
 
-template <Criterion C>
-AugmentedProgram augment_with(const Program& given, int add, const Region& region) {
+template <Criterion C, class Model>
+AugmentedProgram augment_with(const Program& given, int add, const Region& region, ModelKind model) {
   AugmentedProgram out;
-  out.value_before = given.size() > 0 ? criterion_value<C>(given) : INFINITY;
+  out.value_before = given.size() > 0 ? criterion_value<C, Model>(given) : INFINITY;
   if (!std::isfinite(out.value_before)) out.value_before = INFINITY;
   // Greedy on the grid (ranked through a ridge while the program is rank-deficient, so that what a
   // candidate makes identifiable decides), then exchanges among the added positions.
   const std::vector<Vec3> candidates = region.grid(region.grid_step_for(kRegionGridCandidates));
-  const ExchangeResult ex = greedy_exchange(CriterionKind::of<C>(), candidates, given.positions, add);
+  const ExchangeResult ex = greedy_exchange(CriterionKind::of<C>(), candidates, given.positions, add, model);
   Program best{ex.positions};
-  double value = criterion_value<C>(best);
+  double value = criterion_value<C, Model>(best);
   // Then the added positions move continuously inside their zones, the given ones held fixed
   // (in a worker process: Ipopt's MUMPS state must not be inherited by later forks).
   if (!region.zones.empty() && std::isfinite(value)) {
     PositionBounds bounds = position_bounds(region, ex.positions);
     for (int i = 0; i < given.size(); ++i) bounds[static_cast<std::size_t>(i)].kind = PositionBound::Kind::Fixed;
     LocalResult polished = run_in_workers(1, 1, best.size(), [&](int) {
-      return optimize_with_ipopt<C>(best, {}, &bounds);
+      return optimize_with_ipopt<C, Model>(best, {}, &bounds);
     })[0];
     for (std::size_t i = 0; i < bounds.size(); ++i) {
       Vec3& x = polished.program.positions[i];
@@ -36,7 +36,7 @@ AugmentedProgram augment_with(const Program& given, int add, const Region& regio
       if (bounds[i].kind == PositionBound::Kind::Zone)
         x = clamp_to_zone(region.zones[static_cast<std::size_t>(region.deepest_zone(ex.positions[i]))], x);
     }
-    const double v = criterion_value<C>(polished.program);
+    const double v = criterion_value<C, Model>(polished.program);
     if (v < value) {
       best = polished.program;
       value = v;
@@ -51,8 +51,13 @@ AugmentedProgram augment_with(const Program& given, int add, const Region& regio
 
 }  // namespace
 
-AugmentedProgram augment_program(const Program& given, int add, CriterionKind criterion, const Region& region) {
-  return visit_criterion(criterion, [&](auto C) { return augment_with<decltype(C)>(given, add, region); });
+AugmentedProgram augment_program(const Program& given, int add, CriterionKind criterion, const Region& region,
+                                 ModelKind model) {
+  return visit_model(model, [&](auto M) {
+    return visit_criterion(criterion, [&](auto C) {
+      return augment_with<decltype(C), decltype(M)>(given, add, region, model);
+    });
+  });
 }
 
 }  // namespace scalcal

@@ -250,10 +250,10 @@ double limit_value(CriterionKind c, const Region& region) {
   return region.is_sphere() ? criterion_limit(c).value : region_limit(c, region).value;
 }
 
-double efficiency(CriterionKind c, double limit, double value) {
+double efficiency(CriterionKind c, double limit, double value, int parameters) {
   const double e = limit / value;
-  return visit_criterion(c, [e](auto C) {
-    return kDeterminantOnly<decltype(C)> ? std::pow(e, 1.0 / Model::kParameters) : e;
+  return visit_criterion(c, [e, parameters](auto C) {
+    return kDeterminantOnly<decltype(C)> ? std::pow(e, 1.0 / parameters) : e;
   });
 }
 

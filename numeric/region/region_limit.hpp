@@ -35,6 +35,6 @@ RegionLimit region_limit(CriterionKind c, const Region& region, const RegionLimi
 double limit_value(CriterionKind c, const Region& region);
 // limit / value, D as (limit / value)^(1/P) so that every efficiency reads as the fraction of the
 // ideal measurement effort.
-double efficiency(CriterionKind c, double limit, double value);
+double efficiency(CriterionKind c, double limit, double value, int parameters = Paper9Model::kParameters);
 
 }  // namespace scalcal

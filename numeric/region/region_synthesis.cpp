@@ -7,7 +7,7 @@
 #include <stdexcept>
 
 #include "numeric/program/program_equivalence.hpp"
-#include "numeric/region/exchange.hpp"
+#include "numeric/synthesis/exchange.hpp"
 #include "numeric/synthesis/ipopt_local.hpp"
 #include "numeric/synthesis/seeds.hpp"
 #include "numeric/synthesis/synthesize.hpp"

@@ -192,7 +192,7 @@ class MaxEigenvalueProblem : public SmoothProblem {
       const Vec3 e(x[3 * i], x[3 * i + 1], x[3 * i + 2]);
       const JacobianT<Model, double> J = Model::jacobian(e);
       const RowP w = Lambda * Model::row(e);
-      const Mat3 block = (2.0 / N) * (J.transpose() * Lambda * J + Model::curvature(w));
+      const Mat3 block = (2.0 / N) * (J.transpose() * Lambda * J + Model::curvature(w, e));
       for (int r = 0; r < 3; ++r)
         for (int c = 0; c <= r; ++c) at(3 * i + r, 3 * i + c) = block(r, c);
     }

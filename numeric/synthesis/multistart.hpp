@@ -8,6 +8,7 @@
 #include <string>
 
 #include "numeric/criteria/registry.hpp"
+#include "numeric/model/registry.hpp"
 #include "numeric/program/program.hpp"
 #include "numeric/program/summary.hpp"
 #include "numeric/synthesis/local_result.hpp"
@@ -17,6 +18,7 @@ namespace scalcal {
 struct SynthesisOptions {
   int positions = 18;
   CriterionKind criterion = CriterionKind::D;
+  ModelKind model = ModelKind::paper9;
   int starts = 0;            // 0: the criterion's default (enough for the global optimum for N <= 30)
   std::uint64_t seed = 1;
   int threads = 0;           // 0: all cores
@@ -37,7 +39,7 @@ struct SynthesisResult {
   double seconds = 0;
 };
 
-// Throws std::invalid_argument when positions < the model's P (9) or starts < 0.
+// Throws std::invalid_argument when positions < the model's P or starts < 0.
 SynthesisResult synthesize(const SynthesisOptions& options);
 
 }  // namespace scalcal

@@ -8,6 +8,7 @@
 #include <atomic>
 #include <chrono>
 #include <stdexcept>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -15,6 +16,7 @@
 #include "numeric/synthesis/random_search.hpp"
 
 #include "numeric/criteria/evaluation.hpp"
+#include "numeric/criteria/model_evaluation.hpp"
 #include "numeric/synthesis/seeds.hpp"
 
 namespace scalcal {
@@ -51,15 +53,38 @@ void consider(Best& mine, double v, long long k, Buffers& buf, int lane, int n) 
   }
 }
 
+// The normalised criterion C of model M for n positions in x, y, z: H^T H by rank-one updates and
+// K from its eigen-decomposition (+infinity when H^T H is not numerically positive definite).
+template <class M, Criterion C>
+double score_model_positions(const double* x, const double* y, const double* z, int n) {
+  constexpr int P = M::kParameters;
+  InformationT<M, double> info = InformationT<M, double>::Zero();
+  for (int i = 0; i < n; ++i) {
+    const RowT<M, double> h = M::row(Vec3(x[i], y[i], z[i]));
+    info.template selfadjointView<Eigen::Lower>().rankUpdate(h);
+  }
+  const Eigen::SelfAdjointEigenSolver<InformationT<M, double>> es(info.template selfadjointView<Eigen::Lower>());
+  const RowT<M, double> lambda = es.eigenvalues();  // ascending
+  if (!(lambda(0) > 64 * P * std::numeric_limits<double>::epsilon() * lambda(P - 1)))
+    return std::numeric_limits<double>::infinity();
+  const RowT<M, double> inv = lambda.cwiseInverse();
+  const InformationT<M, double> K = es.eigenvectors() * inv.asDiagonal() * es.eigenvectors().transpose();
+  const InverseInformation<double, P> k{K, inv};
+  return C::template value<M>(k, static_cast<double>(n));
+}
+
+using ModelScore = double (*)(const double*, const double*, const double*, int);
+
 // Programs begin..end-1 of one chunk. Compiled twice on x86-64 (x86-64-v3: AVX2 + FMA, and the
 // baseline); the loader picks one for the machine. Both draw the same programs; values may differ
 // in the last bits (FMA), so only programs within rounding of each other could swap places.
 #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
 __attribute__((target_clones("arch=x86-64-v3", "default")))
 #endif
-// `score` is the criterion's score_information<C>; `batched` its kDeterminantOnly path.
+// `score` is the criterion's score_information<C>; `batched` its kDeterminantOnly path; a non-null
+// `model_score` (a model other than the paper's) replaces both.
 void search_chunk(Xoshiro256x4& rng, long long begin, long long end, int n, double (*score)(const double*, int),
-                  bool batched, const PositionSampler& sampler, Buffers& buf, Best& mine) {
+                  bool batched, ModelScore model_score, const PositionSampler& sampler, Buffers& buf, Best& mine) {
   const int np = padded_size(n);
   alignas(32) double m[45][kLanes];
   double m45[45];
@@ -70,10 +95,13 @@ void search_chunk(Xoshiro256x4& rng, long long begin, long long end, int n, doub
         sampler(rng, n, buf.x(l), buf.y(l), buf.z(l));
       else
         sample_sphere(rng, n, buf.x(l), buf.y(l), buf.z(l));
+      if (model_score) continue;
       accumulate_information(buf.x(l), buf.y(l), buf.z(l), np, n, m45);
       for (int e = 0; e < 45; ++e) m[e][l] = m45[e];
     }
-    if (batched) {
+    if (model_score) {
+      for (int l = 0; l < lanes; ++l) consider(mine, model_score(buf.x(l), buf.y(l), buf.z(l), n), k0 + l, buf, l, n);
+    } else if (batched) {
       for (int l = lanes; l < kLanes; ++l)
         for (int e = 0; e < 45; ++e) m[e][l] = m[e][0];  // padding lanes repeat lane 0, then are ignored
       double v[kLanes];
@@ -91,13 +119,21 @@ void search_chunk(Xoshiro256x4& rng, long long begin, long long end, int n, doub
 }  // namespace
 
 RandomSearchResult random_search(int positions, long long count, CriterionKind criterion, std::uint64_t seed,
-                                 int threads, const PositionSampler& sampler) {
-  if (positions < 9) throw std::invalid_argument("random_search: at least 9 positions are needed");
+                                 int threads, const PositionSampler& sampler, ModelKind model) {
+  const int parameters = model_parameters(model);
+  if (positions < parameters)
+    throw std::invalid_argument("random_search: at least " + std::to_string(parameters) + " positions are needed");
   if (count < 1) throw std::invalid_argument("random_search: count must be positive");
   const auto t0 = std::chrono::steady_clock::now();
   const long long chunks = (count + kChunk - 1) / kChunk;
   const auto score = visit_criterion(criterion, [](auto C) { return &score_information<decltype(C)>; });
   const bool batched = visit_criterion(criterion, [](auto C) { return kDeterminantOnly<decltype(C)>; });
+  const ModelScore model_score =
+      model == ModelKind::paper9 ? nullptr : visit_model(model, [criterion](auto M) {
+        return visit_criterion(criterion, [](auto C) -> ModelScore {
+          return &score_model_positions<decltype(M), decltype(C)>;
+        });
+      });
   const int nthreads = static_cast<int>(std::min<long long>(thread_count(threads), chunks));
   std::vector<Best> best(static_cast<std::size_t>(nthreads));
   std::atomic<long long> next{0};
@@ -107,7 +143,8 @@ RandomSearchResult random_search(int positions, long long count, CriterionKind c
     mine.eta.assign(static_cast<std::size_t>(3 * positions), 0.0);
     for (long long c; (c = next.fetch_add(1)) < chunks;) {
       Xoshiro256x4 rng(start_seed(seed ^ kRandomStream, static_cast<std::uint64_t>(c)));
-      search_chunk(rng, c * kChunk, std::min(count, (c + 1) * kChunk), positions, score, batched, sampler, buf, mine);
+      search_chunk(rng, c * kChunk, std::min(count, (c + 1) * kChunk), positions, score, batched, model_score, sampler,
+                   buf, mine);
     }
   };
   std::vector<std::thread> pool;
@@ -124,7 +161,10 @@ RandomSearchResult random_search(int positions, long long count, CriterionKind c
   out.count = count;
   for (int i = 0; i < positions; ++i)
     out.program.positions.emplace_back(winner->eta[3 * i], winner->eta[3 * i + 1], winner->eta[3 * i + 2]);
-  out.best = winner->index >= 0 ? criterion_value(out.program, criterion) : winner->value;
+  out.best = winner->index < 0 ? winner->value
+             : model == ModelKind::paper9
+                 ? criterion_value(out.program, criterion)
+                 : evaluate(model, out.program).value(criterion);
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;
 }

@@ -5,6 +5,7 @@
 #include <functional>
 
 #include "numeric/criteria/registry.hpp"
+#include "numeric/model/registry.hpp"
 #include "numeric/program/program.hpp"
 
 namespace scalcal {
@@ -23,8 +24,11 @@ class Xoshiro256x4;
 // restricted bench are made (numeric/region/region_sampler.hpp). Empty: uniform on the sphere.
 using PositionSampler = std::function<void(Xoshiro256x4& rng, int n, double* x, double* y, double* z)>;
 
-// Throws std::invalid_argument when positions < 9 or count < 1.
+// Throws std::invalid_argument when positions < P (the model's parameters) or count < 1. The
+// paper's model runs the fixed 9x9 kernel; any other model draws the same programs (same seed, same
+// positions) and scores each from its own P x P information matrix.
 RandomSearchResult random_search(int positions, long long count, CriterionKind criterion, std::uint64_t seed,
-                                 int threads = 0, const PositionSampler& sampler = {});
+                                 int threads = 0, const PositionSampler& sampler = {},
+                                 ModelKind model = ModelKind::paper9);
 
 }  // namespace scalcal

@@ -188,7 +188,7 @@ class SphereNewton {
     const MatX& PB = d.same_sides ? PA_ : PB_;
     // Entries of the lower triangles: Q(2i+a, 2j+b) = P(2i+a, 2j+b) (a, b in the lower part),
     // R(2i+a, j) = T_i,a^T W h_j = P(m + j, 2i + a), S(i, j) = P(m + i, m + j), i >= j.
-    const auto Q = [m](const MatX& P, int r, int c) { return r >= c ? P(r, c) : P(c, r); };
+    const auto Q = [](const MatX& P, int r, int c) { return r >= c ? P(r, c) : P(c, r); };
     const auto R = [m](const MatX& P, int r, int j) { return P(m + j, r); };
     const auto S = [m](const MatX& P, int i, int j) { return i >= j ? P(m + i, m + j) : P(m + j, m + i); };
     H_.resize(m, m);
@@ -212,7 +212,7 @@ class SphereNewton {
       const RowT<Model, Scalar> w = d.G * X_.col(m + i);
       const Vec3T<Scalar> egrad = two * (Ji.transpose() * w);
       g_.template segment<2>(2 * i) = Bi.transpose() * egrad;
-      const Mat3T<Scalar> curvature = Model::curvature(w);
+      const Mat3T<Scalar> curvature = Model::curvature(w, eta[static_cast<std::size_t>(i)]);
       const Eigen::Matrix<Scalar, P, 2> Ti = X_.template middleCols<2>(2 * i);
       const Eigen::Matrix<Scalar, 2, 2> extra = two * (Bi.transpose() * curvature * Bi) + two * (Ti.transpose() * d.G * Ti) -
                                                 eta[static_cast<std::size_t>(i)].dot(egrad) * Eigen::Matrix<Scalar, 2, 2>::Identity();

@@ -29,7 +29,10 @@ Family dodecahedral_family() {
   Family f;
   f.name = "dodecahedral";
   f.summary = "12-face jig: the face normals of a regular dodecahedron (12 positions)";
-  f.instance = [](const ParamMap&) { return FamilyInstance{12, moment_matrix(dodecahedral_points())}; };
+  f.instance = [](const ParamMap&) {
+    const auto points = dodecahedral_points();
+    return FamilyInstance{12, moment_matrix(points), point_moments(points)};
+  };
   f.numeric = [](const ParamMap&) -> std::optional<Program> { return Program::dodecahedral(); };
   return f;
 }

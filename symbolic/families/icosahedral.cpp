@@ -33,7 +33,10 @@ Family icosahedral_family() {
   Family f;
   f.name = "icosahedral";
   f.summary = "20-face jig: the face normals of a regular icosahedron (20 positions)";
-  f.instance = [](const ParamMap&) { return FamilyInstance{20, moment_matrix(icosahedral_points())}; };
+  f.instance = [](const ParamMap&) {
+    const auto points = icosahedral_points();
+    return FamilyInstance{20, moment_matrix(points), point_moments(points)};
+  };
   f.numeric = [](const ParamMap&) -> std::optional<Program> { return Program::icosahedral(); };
   return f;
 }

@@ -50,7 +50,8 @@ Family octahedral_family() {
   f.instance = [](const ParamMap& p) {
     for (const char* k : {"axes", "edges", "diagonals"}) multiplicity(p, k);  // validates numbers
     const ex a = p.at("axes"), e = p.at("edges"), d = p.at("diagonals");
-    return FamilyInstance{GiNaC::expand(6 * a + 12 * e + 8 * d), moment_matrix(octahedral_points(a, e, d))};
+    const auto points = octahedral_points(a, e, d);
+    return FamilyInstance{GiNaC::expand(6 * a + 12 * e + 8 * d), moment_matrix(points), point_moments(points)};
   };
   f.numeric = [](const ParamMap& p) -> std::optional<Program> {
     const int a = multiplicity(p, "axes"), e = multiplicity(p, "edges"), d = multiplicity(p, "diagonals");

@@ -1,9 +1,10 @@
 // rotation: k positions equally spaced on a ring about each axis in turn (paper, Fig. 2), ring
 // about z first: (cos t, sin t, 0), then (0, cos t, sin t), (sin t, 0, cos t), t = phase +
 // 2 pi j / k (phase in degrees). The sums over a ring are done exactly for any k: with
-// w = e^{it}, a monomial cos^a t sin^b t (a + b <= 4) is a Laurent polynomial in w, and
+// w = e^{it}, a monomial cos^a t sin^b t (any degree) is a Laurent polynomial in w, and
 // sum_j w_j^n = k e^{i n phase} when k divides n and 0 otherwise. So for k >= 5 only n = 0
-// survives and every k >= 5 has the same normalised moments; k = 3 and 4 depend on the phase.
+// survives in the degree-4 moments and every k >= 5 has the same normalised information matrix;
+// k = 3 and 4 depend on the phase (and up to k = 6 for the degree-6 moments of --model cubic12).
 #include "numeric/io/input_error.hpp"
 #include "symbolic/exact.hpp"
 #include "symbolic/family.hpp"
@@ -28,9 +29,20 @@ ex ring_sum(int a, int b, int k, const ex& phi) {
   return GiNaC::expand(sum);
 }
 
+// sum over the program of x^a y^b z^c, from ring sums (no coordinates are formed).
+ex rotation_moment(int k, const ex& phi, const int (&e)[3]) {
+  ex total = 0;
+  for (int axis = 0; axis < 3; ++axis) {
+    const int a = (axis + 2) % 3, ic = (a + 1) % 3, is = (a + 2) % 3;  // cos and sin slots
+    if (e[a] != 0) continue;  // the ring has coordinate a equal to 0
+    total += ring_sum(e[ic], e[is], k, phi);
+  }
+  return canonical(total);
+}
+
 }  // namespace
 
-// The information matrix of rotation(k, phase) from ring sums (no coordinates are formed).
+// The information matrix of rotation(k, phase).
 FamilyInstance rotation_instance(int k, const ex& phase_deg) {
   const ex phi = phase_deg * GiNaC::Pi / 180;
   // Exponents of (x, y, z) in h_r.
@@ -41,15 +53,13 @@ FamilyInstance rotation_instance(int k, const ex& phase_deg) {
     for (int c = r; c < 9; ++c) {
       int e[3];
       for (int i = 0; i < 3; ++i) e[i] = expo[r][i] + expo[c][i];
-      ex total = 0;
-      for (int axis = 0; axis < 3; ++axis) {
-        const int a = (axis + 2) % 3, ic = (a + 1) % 3, is = (a + 2) % 3;  // cos and sin slots
-        if (e[a] != 0) continue;  // the ring has coordinate a equal to 0
-        total += ring_sum(e[ic], e[is], k, phi);
-      }
-      M(r, c) = M(c, r) = canonical(total);
+      M(r, c) = M(c, r) = rotation_moment(k, phi, e);
     }
-  return {3 * k, M};
+  MomentFunction moment = [k, phi](int a, int b, int c) {
+    const int e[3] = {a, b, c};
+    return rotation_moment(k, phi, e);
+  };
+  return {3 * k, M, moment};
 }
 
 Family rotation_family() {

@@ -53,7 +53,7 @@ TEST(MeterModel, NormModulusIsLinearInXToFirstOrder) {
     const double gyz = m.misalignment(1, 2) + m.misalignment(2, 1);
     const double gzx = m.misalignment(2, 0) + m.misalignment(0, 2);
     double worst = 0, typical = 0;
-    for (const Vec3 e : {Vec3(1, 2, 3), Vec3(-1, 0.5, 2), Vec3(0.2, -1, -0.4), Vec3(3, -2, 1)}) {
+    for (const Vec3& e : {Vec3(1, 2, 3), Vec3(-1, 0.5, 2), Vec3(0.2, -1, -0.4), Vec3(3, -2, 1)}) {
       const Vec3 eta = e.normalized();
       const double x = eta(0), y = eta(1), z = eta(2);
       const double lin = x * m.bias(0) + y * m.bias(1) + z * m.bias(2) + m.scale_deviation(0) * x * x +

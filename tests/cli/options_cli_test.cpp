@@ -80,7 +80,7 @@ TEST(OptionsCli, MalformedValuesNameTheOptionAndExitTwo) {
       {"optimize --positions 9abc", "--positions", "integer"},
       {"optimize --positions ''", "--positions", "integer"},
       {"optimize --positions 12.5", "--positions", "integer"},
-      {"optimize --positions 1001", "--positions", "9..1000"},
+      {"optimize --positions 1001", "--positions", "3..1000"},
       {"optimize --positions 12 --seed -1", "--seed", "integer"},
       {"optimize --positions 12 --digits 0x10", "--digits", "integer"},
       {"optimize --positions 12 --criterion Q", "--criterion", "D, A, E or S"},

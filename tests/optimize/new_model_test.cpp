@@ -1,6 +1,6 @@
-// A new model is one file (tests/common/bias3_model.hpp): evaluation, Riemannian Newton, Ipopt (all
-// three forms) and the MPFR polish run on it unchanged. Expected values are the hand-derived limits
-// of bias3 (27, 9, 3, 3 for D, A, E, S; see the model file), not numbers taken from scalcal.
+// A model is one file (numeric/model/bias3.hpp, born as a test-only file): evaluation, Riemannian
+// Newton, Ipopt (all three forms) and the MPFR polish run on it unchanged. Expected values are the
+// hand-derived limits of bias3 (27, 9, 3, 3 for D, A, E, S: trace M = N), not numbers taken from scalcal.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -11,12 +11,10 @@
 #include "numeric/synthesis/ipopt_local.hpp"
 #include "numeric/synthesis/newton_local.hpp"
 #include "numeric/synthesis/synthesize.hpp"
-#include "tests/common/bias3_model.hpp"
+#include "numeric/model/bias3.hpp"
 
 namespace scalcal {
 namespace {
-
-using testing::Bias3Model;
 
 TEST(NewModel, EvaluationOfTheAxesMatchesTheHandLimits) {
   const auto ev = (evaluate<Bias3Model>)(Program::octahedral(1, 0, 0));  // M = 2 I, N = 6

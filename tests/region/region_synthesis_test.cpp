@@ -10,7 +10,7 @@
 
 #include "numeric/criteria/evaluation.hpp"
 #include "numeric/program/catalogue.hpp"
-#include "numeric/region/exchange.hpp"
+#include "numeric/synthesis/exchange.hpp"
 #include "numeric/region/region_limit.hpp"
 #include "numeric/region/region_synthesis.hpp"
 

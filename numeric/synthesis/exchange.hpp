@@ -2,12 +2,14 @@
 // the candidate that improves the criterion most, given all the others, until a full pass changes
 // nothing. The criterion of each trial comes from K by a rank-two (Woodbury) update, so a trial
 // costs O(P^2) and an eigen-decomposition only for a criterion that reads the spectrum. The
-// combinatorial stage of designing for a restricted bench (optimize --region, augment).
+// combinatorial stage of designing for a restricted bench (optimize --region, augment), for any
+// registered model.
 #pragma once
 #include <vector>
 
 #include "numeric/criteria/registry.hpp"
 #include "numeric/model/model.hpp"
+#include "numeric/model/registry.hpp"
 
 namespace scalcal {
 
@@ -21,11 +23,11 @@ struct ExchangeResult {
 // positions: the program; its first `fixed` positions never move. A rank-deficient program is
 // ranked by a tiny ridge, so swaps that raise the rank win. max_passes bounds the work.
 ExchangeResult exchange(CriterionKind criterion, const std::vector<Vec3>& candidates, std::vector<Vec3> positions,
-                        int fixed = 0, int max_passes = 100);
+                        int fixed = 0, int max_passes = 100, ModelKind model = ModelKind::paper9);
 
 // Sequential design: add `count` candidates one at a time, each the best given those before it
 // (after the `given` positions), then exchange the added ones.
 ExchangeResult greedy_exchange(CriterionKind criterion, const std::vector<Vec3>& candidates,
-                               const std::vector<Vec3>& given, int count);
+                               const std::vector<Vec3>& given, int count, ModelKind model = ModelKind::paper9);
 
 }  // namespace scalcal

@@ -1,0 +1,26 @@
+// What a model states about its exact limits: for each criterion the infimum of the normalised
+// criterion over all measures on the sphere (closed form and value), the optimal measure, and which
+// N attain it, each proven in the proof document the model names.
+#pragma once
+#include <limits>
+#include <string_view>
+
+namespace scalcal {
+
+struct ModelLimit {
+  std::string_view criterion;  // "D", "A", "E", "S"
+  double value;                // the infimum, normalised (D by N^P)
+  std::string_view exact;      // the infimum in closed form
+  // Moments of the optimal measure symmetrised over the 48 signed permutations, in closed form
+  // ("" where the limit does not determine them or the model has no such moment).
+  std::string_view x4;         // E[x^4]
+  std::string_view x2y2;       // E[x^2 y^2]
+  std::string_view x6;         // E[x^6]
+  double b;                    // E[x^2 y^2] as a number (NaN: not determined)
+  std::string_view measure;    // the optimal measure in words
+  std::string_view attained;   // which N attain it, and how sure that is
+};
+
+inline constexpr double kNotDetermined = std::numeric_limits<double>::quiet_NaN();
+
+}  // namespace scalcal

@@ -1,0 +1,112 @@
+// The registered calibration models: one line each in RegisteredModels. A ModelKind is a runtime
+// handle (an index into that list) for the CLI and for results; visit_model() turns it back into
+// the model's type, the one place where the CLI's --model meets the templated core.
+#pragma once
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <type_traits>
+#include <utility>
+
+#include "numeric/model/axis6.hpp"
+#include "numeric/model/bias3.hpp"
+#include "numeric/model/cubic12.hpp"
+#include "numeric/model/paper9.hpp"
+
+namespace scalcal {
+
+template <CalibrationModel... Ms>
+struct ModelList {
+  static constexpr int size = sizeof...(Ms);
+};
+
+using RegisteredModels = ModelList<Paper9Model, Axis6Model, Bias3Model, Cubic12Model>;
+
+class ModelKind {
+ public:
+  constexpr explicit ModelKind(int index) : index_(index) {}
+  constexpr int index() const { return index_; }
+  constexpr bool operator==(const ModelKind&) const = default;
+  static const ModelKind paper9;
+
+ private:
+  int index_;
+};
+inline constexpr ModelKind ModelKind::paper9 = ModelKind(0);
+
+namespace detail {
+template <class F, class... Ms>
+decltype(auto) visit_model(ModelKind m, F&& f, ModelList<Ms...>) {
+  using R = decltype(f(Paper9Model{}));
+  if (m.index() < 0 || m.index() >= static_cast<int>(sizeof...(Ms))) throw std::out_of_range("visit_model: no such model");
+  if constexpr (std::is_void_v<R>) {
+    int i = 0;
+    ((i++ == m.index() ? (void)f(Ms{}) : (void)0), ...);
+  } else {
+    std::optional<R> out;
+    int i = 0;
+    ((i++ == m.index() ? (void)out.emplace(f(Ms{})) : (void)0), ...);
+    return R(std::move(*out));
+  }
+}
+}  // namespace detail
+
+inline constexpr int kModelCount = RegisteredModels::size;
+
+namespace detail {
+template <class M, class... Ms>
+constexpr int index_in(ModelList<Ms...>) {
+  int i = 0, found = -1;
+  ((std::is_same_v<M, Ms> ? (found = i, ++i) : ++i), ...);
+  return found;
+}
+}  // namespace detail
+
+// The ModelKind index of a model type; -1 for a model that is not registered (one a test defines).
+template <class M>
+inline constexpr int kModelIndex = detail::index_in<M>(RegisteredModels{});
+
+// f(M{}) for the model type M behind m; every registered model must give the same type.
+template <class F>
+auto visit_model(ModelKind m, F&& f) {
+  return detail::visit_model(m, std::forward<F>(f), RegisteredModels{});
+}
+
+inline std::string_view model_name(ModelKind m) {
+  return visit_model(m, [](auto M) { return std::string_view(decltype(M)::name); });
+}
+
+inline int model_parameters(ModelKind m) {
+  return visit_model(m, [](auto M) { return decltype(M)::kParameters; });
+}
+
+inline std::optional<ModelKind> parse_model(std::string_view s) {
+  for (int i = 0; i < kModelCount; ++i)
+    if (model_name(ModelKind(i)) == s) return ModelKind(i);
+  return std::nullopt;
+}
+
+// "paper9|axis6|bias3|cubic12", for usage lines.
+inline std::string model_names(std::string_view separator = "|") {
+  std::string out;
+  for (int i = 0; i < kModelCount; ++i) out += (i ? std::string(separator) : "") + std::string(model_name(ModelKind(i)));
+  return out;
+}
+
+// The model's own statement of its limit for a criterion named `criterion` (models other than the
+// paper's give a table; the paper's limits come from the criteria and symbolic/limits.hpp).
+template <class Model>
+std::optional<ModelLimit> stated_limit(std::string_view criterion) {
+  if constexpr (requires { Model::limits; }) {
+    for (const ModelLimit& l : Model::limits)
+      if (l.criterion == criterion) return l;
+  }
+  return std::nullopt;
+}
+
+inline std::optional<ModelLimit> stated_limit(ModelKind m, std::string_view criterion) {
+  return visit_model(m, [criterion](auto M) { return stated_limit<decltype(M)>(criterion); });
+}
+
+}  // namespace scalcal

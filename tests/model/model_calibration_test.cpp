@@ -1,0 +1,153 @@
+// calibrate --model and simulate --model: the model's meter against its own inverse, the generic
+// estimator against the paper's (two implementations of eqs. 3-6), recovery of a simulated meter's
+// parameters from noise-free data (truth from the meter's construction, error second order in the
+// meter's size), the Monte-Carlo covariance against sigma^2 K, and the refusals.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <unistd.h>
+
+#include <nlohmann/json.hpp>
+
+#include "numeric/calibration/model_calibration.hpp"
+#include "numeric/calibration/monte_carlo.hpp"
+#include "tests/common/run_cli.hpp"
+
+namespace scalcal {
+namespace {
+
+ModelKind model(const char* name) { return *parse_model(name); }
+
+std::vector<PositionSamples> noise_free(const ModelMeter& meter, const Program& program) {
+  std::vector<PositionSamples> data;
+  for (const Vec3& eta : program.positions) {
+    PositionSamples p;
+    p.nominal = eta;
+    p.samples = {meter.measure(eta), meter.measure(eta)};  // two samples: the noise is estimable (zero)
+    data.push_back(p);
+  }
+  return data;
+}
+
+TEST(ModelCalibration, TheMeterCompensatesWhatItMeasures) {
+  const ModelMeter m = reference_model_meter(model("cubic12"), 0.01);
+  ASSERT_NE(m.cubic.norm(), 0.0);
+  for (const Vec3& I : {Vec3(1, 0, 0), Vec3(0.3, -0.8, 0.52), Vec3(-2, 1, 4)})
+    EXPECT_LT((m.compensate(m.measure(I)) - I).norm(), 1e-13 * I.norm());
+}
+
+TEST(ModelCalibration, NoiseFreeDataGiveBackTheMetersParameters) {
+  const Program program = Program::octahedral(1, 1, 1);  // 26 positions: full rank for every model
+  const double size = 1e-3;
+  for (const char* m : {"paper9", "axis6", "bias3", "cubic12"}) {
+    const ModelKind kind = model(m);
+    const ModelMeter meter = reference_model_meter(kind, size);
+    const auto all = meter.parameters(1.0);
+    const std::vector<int> index = meter_indices(kind);
+    CalibrationOptions co;
+    const ModelCalibration r = calibrate_model(kind, noise_free(meter, program), co);
+    ASSERT_TRUE(r.converged) << m;
+    ASSERT_EQ(r.X.size(), model_parameters(kind));
+    for (int k = 0; k < r.X.size(); ++k)  // the linearisation's own error is O(size^2)
+      EXPECT_NEAR(r.X(k), all(index[static_cast<std::size_t>(k)]), 5 * size * size) << m << " " << k;
+    EXPECT_LT(r.residual_rms, 1e-5) << m;
+  }
+}
+
+TEST(ModelCalibration, TheGenericEstimatorIsThePapersOnPaper9) {
+  const Program program = Program::octahedral(1, 1, 0);
+  const Meter meter = reference_meter(2e-3);
+  GaussianSource rng(5);
+  const auto data = simulate_measurements(meter, program, 1e-4, 0.0, 3, rng);
+  for (Modulus mod : {Modulus::norm, Modulus::projection}) {
+    CalibrationOptions co;
+    co.modulus = mod;
+    const CalibrationResult paper = calibrate(data, co);
+    const ModelCalibration generic = calibrate_model(ModelKind::paper9, data, co);
+    for (int k = 0; k < 9; ++k) {
+      EXPECT_NEAR(generic.X(k), paper.X(k), 1e-12) << k;
+      EXPECT_NEAR(generic.X_std(k), paper.X_std(k), 1e-9 * paper.X_std(k)) << k;
+    }
+    EXPECT_NEAR(generic.noise, paper.noise, 1e-12);
+  }
+}
+
+TEST(ModelCalibration, MonteCarloCovarianceIsSigmaSquaredK) {
+  for (const char* m : {"axis6", "bias3", "cubic12"}) {
+    MonteCarloOptions o;
+    o.program = Program::octahedral(1, 1, 1);
+    o.trials = 1500;
+    o.noise = 1e-4;
+    o.seed = 3;
+    const MonteCarloResult r = run_monte_carlo(o, {}, model(m));
+    ASSERT_EQ(r.converged, o.trials) << m;
+    ASSERT_EQ(static_cast<int>(r.names.size()), model_parameters(model(m)));
+    for (int k = 0; k < r.truth.size(); ++k) {
+      const double ratio = std::sqrt(r.empirical_cov(k, k) / r.theoretical_cov(k, k));
+      EXPECT_NEAR(ratio, 1.0, 5 * r.std_sampling_error()) << m << " " << r.names[static_cast<std::size_t>(k)];
+    }
+    EXPECT_EQ(std::isnan(r.theta_theoretical(3)), std::string(m) != "cubic12") << m;
+  }
+}
+
+using testing::run_cli;
+using Json = nlohmann::json;
+
+std::string write_axes_bench() {
+  // Twelve positions along the axes of a slightly biased meter, in units of |I| = 1.
+  const std::string path =
+      (std::filesystem::temp_directory_path() / ("scalcal_model_axes_" + std::to_string(::getpid()) + ".csv")).string();
+  std::ofstream f(path);
+  f << "position,ix,iy,iz,x,y,z\n";
+  int id = 0;
+  for (int rep = 0; rep < 2; ++rep)
+    for (int axis = 0; axis < 3; ++axis)
+      for (int s : {1, -1}) {
+        Vec3 e = Vec3::Zero();
+        e(axis) = s;
+        const Vec3 y = e + Vec3(1e-3, -2e-3, 5e-4);
+        ++id;
+        for (double n : {-1e-5, 1e-5})
+          f << id << "," << y(0) + n << "," << y(1) - n << "," << y(2) + n << "," << e(0) << "," << e(1) << "," << e(2)
+            << "\n";
+      }
+  return path;
+}
+
+TEST(ModelCalibrationCli, AxisPositionsIdentifyAxis6ButNotCubic12) {
+  const std::string file = write_axes_bench();
+  const auto ok = run_cli("calibrate --measurements " + file + " --magnitude 1 --model axis6 --json");
+  ASSERT_EQ(ok.status, 0) << ok.err;
+  const Json j = Json::parse(ok.out);
+  EXPECT_EQ(j["model"], "axis6");
+  ASSERT_EQ(j["parameters"].size(), 6u);
+  EXPECT_NEAR(j["parameters"][1]["value"].get<double>(), -2e-3, 1e-5);  // bias_y over |I|
+  EXPECT_NE(j["not_identifiable"].get<std::string>().find("orthogonal"), std::string::npos);
+  const auto cubic = run_cli("calibrate --measurements " + file + " --magnitude 1 --model cubic12");
+  EXPECT_EQ(cubic.status, 2);
+  EXPECT_NE(cubic.err.find("cubic_x"), std::string::npos) << cubic.err;
+  EXPECT_NE(cubic.err.find(file), std::string::npos) << cubic.err;
+  const auto automatic = run_cli("calibrate --measurements " + file + " --magnitude auto --model axis6");
+  EXPECT_EQ(automatic.status, 2);
+  EXPECT_NE(automatic.err.find("paper9"), std::string::npos) << automatic.err;
+  std::remove(file.c_str());
+}
+
+TEST(ModelCalibrationCli, SimulateTakesTheModel) {
+  const auto r = run_cli("simulate --program octahedral-1-1-1 --trials 300 --noise 1e-4 --model cubic12 --modulus norm --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const Json j = Json::parse(r.out);
+  EXPECT_EQ(j["model"], "cubic12");
+  const Json& res = j["results"][0];
+  EXPECT_EQ(res["parameters"].size(), 12u);
+  EXPECT_EQ(res["parameters"][11]["name"], "cubic_z");
+  EXPECT_TRUE(res["theta_theoretical"].contains("cubic"));
+  const auto rank = run_cli("simulate --program octahedral-2-0-0 --trials 10 --noise 1e-4 --model cubic12");
+  EXPECT_EQ(rank.status, 2);
+  EXPECT_NE(rank.err.find("rank 6 of 12"), std::string::npos) << rank.err;
+}
+
+}  // namespace
+}  // namespace scalcal
