@@ -9,32 +9,18 @@
 #include <ginac/ginac.h>
 
 #include "proofs/checks/check.hpp"
+#include "proofs/checks/sphere_reduction.hpp"
 #include "symbolic/exact.hpp"
 
 using GiNaC::ex;
 using GiNaC::matrix;
 using GiNaC::symbol;
 using scalcal::proofs::check;
+using scalcal::proofs::on_sphere;
+using scalcal::proofs::quad;
+using scalcal::proofs::scaled_identity;
 using scalcal::symbolic::canonical;
 using scalcal::symbolic::is_zero_exact;
-
-namespace {
-ex on_sphere(const ex& e, const symbol& x, const symbol& y, const symbol& z) {
-  ex p = GiNaC::expand(e);
-  for (int pass = 0; pass < 20; ++pass) {
-    const ex q = GiNaC::expand(p.subs(GiNaC::pow(z, 2) == 1 - x * x - y * y, GiNaC::subs_options::algebraic));
-    if (q.is_equal(p)) break;
-    p = q;
-  }
-  return p;
-}
-ex quad(const matrix& h, const matrix& Q) { return h.transpose().mul(Q).mul(h)(0, 0); }
-matrix scaled_identity(int n, const ex& s) {
-  matrix I(n, n);
-  for (int i = 0; i < n; ++i) I(i, i) = s;
-  return I;
-}
-}  // namespace
 
 int main() {
   const symbol x("x"), y("y"), z("z");

@@ -16,12 +16,15 @@
 #include <ginac/ginac.h>
 
 #include "proofs/checks/check.hpp"
+#include "proofs/checks/sphere_reduction.hpp"
 #include "symbolic/exact.hpp"
 
 using GiNaC::ex;
 using GiNaC::matrix;
 using GiNaC::symbol;
 using scalcal::proofs::check;
+using scalcal::proofs::on_sphere;
+using scalcal::proofs::quad;
 using scalcal::symbolic::canonical;
 using scalcal::symbolic::is_zero_exact;
 
@@ -34,16 +37,6 @@ matrix design_row(const Pt& e) {
   return matrix(P, 1, GiNaC::lst{x, y, z, x * x, y * y, z * z, x * y, y * z, z * x, x * x * x, y * y * y, z * z * z});
 }
 
-// Reduction modulo x^2 + y^2 + z^2 = 1 to the unique form p0(x, y) + z p1(x, y).
-ex on_sphere(const ex& e, const symbol& x, const symbol& y, const symbol& z) {
-  ex p = GiNaC::expand(e);
-  for (int pass = 0; pass < 20; ++pass) {
-    const ex q = GiNaC::expand(p.subs(GiNaC::pow(z, 2) == 1 - x * x - y * y, GiNaC::subs_options::algebraic));
-    if (q.is_equal(p)) break;
-    p = q;
-  }
-  return p;
-}
 
 bool is_zero_matrix(const matrix& m) {
   for (unsigned r = 0; r < m.rows(); ++r)
@@ -128,7 +121,6 @@ int exact_rank(matrix A) {
   return static_cast<int>(rank);
 }
 
-ex quad(const matrix& h, const matrix& Q) { return h.transpose().mul(Q).mul(h)(0, 0); }
 
 bool divides(long d, long n) { return n % d == 0; }
 
