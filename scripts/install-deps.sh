@@ -3,7 +3,7 @@
 set -euo pipefail
 packages=(cmake g++ make pkg-config libeigen3-dev libboost-dev libboost-iostreams-dev
   libboost-system-dev libboost-filesystem-dev libginac-dev libcln-dev coinor-libipopt-dev
-  libgnuplot-iostream-dev gnuplot-nox libgtest-dev libbenchmark-dev libmpfr-dev libgmp-dev
+  libgnuplot-iostream-dev gnuplot-nox libgtest-dev libbenchmark-dev libmpfr-dev libmpfi-dev libgmp-dev
   libcli11-dev nlohmann-json3-dev libfmt-dev
   clang libclang-rt-dev
   python3-numpy python3-scipy)

@@ -1,0 +1,41 @@
+// Certificates for one optimised program and one criterion of the paper's model: that an exact
+// program attaining the limit lies within a stated radius (Krawczyk on the moment equations), or
+// that the program is within a stated radius of a strict local optimum whose value is enclosed
+// (Krawczyk on the gradient, interval Cholesky of the Hessian; D and A). Otherwise: numerical.
+#pragma once
+#include <string>
+
+#include "numeric/criteria/registry.hpp"
+#include "numeric/program/program.hpp"
+
+namespace scalcal {
+
+enum class CertifiedStatus { attained_proven, attained_numerical, missed_local_optimum, missed_numerical };
+
+// "limit attained, proven", "limit attained, numerical", "missed, certified local optimum", "missed, numerical"
+std::string_view status_text(CertifiedStatus s);
+
+struct CertifyOptions {
+  int digits = 60;                   // working precision of MPFR and MPFI
+  double attained_tolerance = 1e-8;  // relative gap under which a program is taken to aim at the limit
+};
+
+struct CertifyResult {
+  CertifiedStatus status = CertifiedStatus::missed_numerical;
+  double value = 0;          // the criterion of the given program (double)
+  double limit = 0;
+  std::string radius;        // inf-norm half-width of the box in chart coordinates (the proven cases)
+  std::string enclosure_lo;  // the value of the certified local optimum lies in [lo, hi]
+  std::string enclosure_hi;
+  int enclosure_digits = 0;  // leading decimal digits that lo and hi share
+  int unknowns = 0;          // coordinates solved for; the rest are held at their computed values
+  int equations = 0;
+  std::string method;        // which certificate ran
+  std::string reason;        // why a claim stays numerical, or what the proof rests on
+  double seconds = 0;
+};
+
+// Throws std::invalid_argument for a program with fewer than 9 positions or a singular one.
+CertifyResult certify(const Program& program, CriterionKind criterion, const CertifyOptions& options = {});
+
+}  // namespace scalcal

@@ -1,0 +1,104 @@
+// The interval certificates against independent facts: the MPFR polish's 50-digit optimum must lie
+// in the certified enclosure; the dodecahedron's vertices are an exact 5-design (proof.d_designs);
+// programs that are not strict optima must not be certified as such.
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "numeric/certify/certify.hpp"
+#include "numeric/certify/interval.hpp"
+#include "numeric/polish/polish.hpp"
+#include "numeric/program/catalogue.hpp"
+#include "numeric/synthesis/synthesize.hpp"
+#include "tests/common/run_cli.hpp"
+
+namespace scalcal {
+namespace {
+
+Program optimum(int n, CriterionKind c) {
+  SynthesisOptions o;
+  o.positions = n;
+  o.criterion = c;
+  o.seed = 1;
+  return synthesize(o).program;
+}
+
+void expect_enclosure_holds_polish(int n, const char* name) {
+  const CriterionKind c = *parse_criterion(name);
+  const Program p = optimum(n, c);
+  const CertifyResult r = certify(p, c);
+  ASSERT_EQ(r.status, CertifiedStatus::missed_local_optimum) << r.reason;
+  EXPECT_GE(r.enclosure_digits, 30);
+  const PolishResult polished = polish(p, c, PolishOptions{50, 40});
+  ASSERT_TRUE(polished.converged());
+  const certify_detail::IntervalPrecision precision(80);
+  const certify_detail::Real value(polished.value_digits), lo(r.enclosure_lo), hi(r.enclosure_hi);
+  // The polish prints 50 digits; the enclosure is far narrower, so compare to the polish's last digit.
+  const certify_detail::Real slack = abs(value) * certify_detail::Real("1e-48");
+  EXPECT_LE(lo - slack, value) << r.enclosure_lo << " vs " << polished.value_digits;
+  EXPECT_GE(hi + slack, value) << r.enclosure_hi << " vs " << polished.value_digits;
+}
+
+TEST(Certify, DAtNineIsACertifiedLocalOptimumHoldingThePolishedValue) { expect_enclosure_holds_polish(9, "D"); }
+TEST(Certify, AAtTenIsACertifiedLocalOptimumHoldingThePolishedValue) { expect_enclosure_holds_polish(10, "A"); }
+
+TEST(Certify, TheDodecahedronVerticesAttainDProven) {
+  const CertifyResult r = certify(resolve_program("icosahedral-20"), *parse_criterion("D"));
+  EXPECT_EQ(r.status, CertifiedStatus::attained_proven) << r.reason;
+  EXPECT_EQ(r.equations, 24);
+  EXPECT_EQ(r.unknowns, 24);
+}
+
+TEST(Certify, OptimaThatReachTheLimitAreProvenForEveryCriterion) {
+  for (const char* name : {"D", "A", "E", "S"}) {
+    const CertifyResult r = certify(optimum(18, *parse_criterion(name)), *parse_criterion(name));
+    EXPECT_EQ(r.status, CertifiedStatus::attained_proven) << name << ": " << r.reason;
+    EXPECT_LT(std::stod(r.radius), 1e-6) << name;
+  }
+}
+
+TEST(Certify, TheIcosahedronIsOverdeterminedAndStaysNumerical) {
+  const CertifyResult r = certify(resolve_program("dodecahedral-12"), *parse_criterion("D"));
+  EXPECT_EQ(r.status, CertifiedStatus::attained_numerical);
+  EXPECT_NE(r.reason.find("overdetermined"), std::string::npos) << r.reason;
+}
+
+// A design moved off the limit lies near a continuum of optima (N = 20 has many 4-designs), so
+// no strict local optimum may be claimed; a random program is no optimum at all.
+TEST(Certify, ProgramsThatAreNotStrictOptimaAreNotCertified) {
+  Program moved = resolve_program("icosahedral-20");
+  moved.positions[3] = (moved.positions[3] + Eigen::Vector3d(1e-3, -2e-3, 0)).normalized();
+  EXPECT_EQ(certify(moved, *parse_criterion("D")).status, CertifiedStatus::missed_numerical);
+  EXPECT_EQ(certify(resolve_program("random-18-s7"), *parse_criterion("A")).status, CertifiedStatus::missed_numerical);
+}
+
+TEST(Certify, EAndSMissesStayNumerical) {
+  const CertifyResult r = certify(optimum(10, *parse_criterion("E")), *parse_criterion("E"));
+  EXPECT_EQ(r.status, CertifiedStatus::missed_numerical);
+  EXPECT_GT(r.value / r.limit, 1 + 1e-6);
+}
+
+TEST(CertifyCli, JsonHasTheIssueKeys) {
+  const auto r = testing::run_cli("certify icosahedral-20 --criterion D --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j.at("status"), "limit attained, proven");
+  EXPECT_TRUE(j.at("radius").is_string());
+  EXPECT_TRUE(j.at("enclosure").is_null());
+  EXPECT_GE(j.at("seconds").get<double>(), 0.0);
+  const auto text = testing::run_cli("certify nine-2axes --criterion D");
+  ASSERT_EQ(text.status, 0) << text.err;
+  EXPECT_NE(text.out.find("status     "), std::string::npos);
+}
+
+TEST(CertifyCli, BadInputExitsTwo) {
+  const auto singular = testing::run_cli("certify rotation-4 --criterion D");
+  EXPECT_EQ(singular.status, 2);
+  EXPECT_NE(singular.err.find("singular"), std::string::npos) << singular.err;
+  EXPECT_EQ(testing::run_cli("certify classic18 --criterion Q").status, 2);
+  EXPECT_EQ(testing::run_cli("certify classic18").status, 2);
+  const std::string few = testing::write_file("few.csv", "x,y,z\n1,0,0\n0,1,0\n0,0,1\n");
+  EXPECT_EQ(testing::run_cli("certify " + few + " --criterion D").status, 2);
+}
+
+}  // namespace
+}  // namespace scalcal
