@@ -4,7 +4,7 @@ set -euo pipefail
 packages=(cmake g++ make pkg-config libeigen3-dev libboost-dev libboost-iostreams-dev
   libboost-system-dev libboost-filesystem-dev libginac-dev libcln-dev coinor-libipopt-dev
   libgnuplot-iostream-dev gnuplot-nox libgtest-dev libbenchmark-dev libmpfr-dev libmpfi-dev libgmp-dev
-  libcli11-dev nlohmann-json3-dev libfmt-dev
+  libcli11-dev nlohmann-json3-dev libfmt-dev libopenmpi-dev openmpi-bin
   clang libclang-rt-dev
   python3-numpy python3-scipy)
 missing=()

@@ -1,13 +1,15 @@
 #!/usr/bin/env bash
 # Regenerates experiments/docs/attainment.md: the sweep's best program for every N and criterion
-# (seed 1, default starts), each run through `scalcal certify`. Usage: attainment_runs.sh [A..B]
+# (seed 1, default starts), each run through `scalcal certify`. Usage:
+#   attainment_runs.sh [A..B] [CRITERIA]      (default 9..40 D,A,E,S)
 # from the repository root after scripts/build.sh; writes the table to stdout.
 set -euo pipefail
 range="${1:-9..40}"
-scalcal=build/experiments/scalcal
+criteria="${2:-D,A,E,S}"
+scalcal="${SCALCAL:-build/experiments/scalcal}"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-"$scalcal" sweep --positions "$range" --criteria D,A,E,S --seed 1 --out "$work/sweep.csv" >/dev/null
+"$scalcal" sweep --positions "$range" --criteria "$criteria" --seed 1 --out "$work/sweep.csv" >/dev/null
 python3 - "$work" "$scalcal" <<'PY'
 import csv, json, subprocess, sys
 work, scalcal = sys.argv[1], sys.argv[2]

@@ -4,7 +4,11 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <random>
+
 #include "numeric/certify/certify.hpp"
+#include "numeric/criteria/evaluation.hpp"
+#include "numeric/io/program_csv.hpp"
 #include "numeric/certify/interval.hpp"
 #include "numeric/polish/polish.hpp"
 #include "numeric/program/catalogue.hpp"
@@ -98,6 +102,32 @@ TEST(CertifyCli, BadInputExitsTwo) {
   EXPECT_EQ(testing::run_cli("certify classic18").status, 2);
   const std::string few = testing::write_file("few.csv", "x,y,z\n1,0,0\n0,1,0\n0,0,1\n");
   EXPECT_EQ(testing::run_cli("certify " + few + " --criterion D").status, 2);
+}
+
+// polish reports the second order: the D optimum at N = 9 is a certified minimum; the critical point
+// that the polish reaches from rotation-3 is a saddle, which plain perturbations show independently.
+TEST(PolishSecondOrder, TellsAMinimumFromASaddle) {
+  const std::string optimum9 = (testing::scratch_dir() / "optimum9.csv").string();
+  ASSERT_EQ(testing::run_cli("optimize --positions 9 --criterion D --seed 1 --out " + optimum9).status, 0);
+  const auto minimum = testing::run_cli("polish " + optimum9 + " --criterion D --digits 30 --json");
+  ASSERT_EQ(minimum.status, 0) << minimum.err;
+  EXPECT_EQ(nlohmann::json::parse(minimum.out).at("second_order"), "missed, certified local optimum");
+
+  const std::string out = (testing::scratch_dir() / "saddle.csv").string();
+  const auto saddle = testing::run_cli("polish rotation-3 --criterion D --digits 30 --json --out " + out);
+  ASSERT_EQ(saddle.status, 0) << saddle.err;
+  EXPECT_NE(nlohmann::json::parse(saddle.out).at("second_order"), "missed, certified local optimum");
+  const Program p = read_program_csv(out);
+  const double d0 = criterion_value(p, *parse_criterion("D"));
+  std::mt19937_64 rng(7);
+  std::normal_distribution<double> gauss;
+  double best = d0;
+  for (int trial = 0; trial < 400; ++trial) {
+    Program q = p;
+    for (auto& e : q.positions) e = (e + 1e-3 * Eigen::Vector3d(gauss(rng), gauss(rng), gauss(rng))).normalized();
+    best = std::min(best, criterion_value(q, *parse_criterion("D")));
+  }
+  EXPECT_LT(best, d0 * (1 - 1e-9)) << "no descent direction found: not a saddle";
 }
 
 }  // namespace

@@ -1,0 +1,68 @@
+#include "experiments/cli/mpi_ranks.hpp"
+
+#include <cstdlib>
+
+#ifdef SCALCAL_HAVE_MPI
+#include <mpi.h>
+#endif
+
+// Every call goes through the profiling names (PMPI_*): Debian's sequential MUMPS, which Ipopt loads
+// before libmpi, exports a dummy C MPI_Init, MPI_Comm_rank and MPI_Finalize that would shadow the real
+// ones (MPI_Init would reach MUMPS's stub and the next real call would abort the job).
+namespace scalcal::cli {
+namespace {
+
+// mpirun (Open MPI, MPICH/Hydra, Slurm's PMI/PMIx) sets one of these; a plain run never calls MPI.
+bool launched_by_mpirun() {
+  for (const char* v : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_RANK"})
+    if (std::getenv(v)) return true;
+  return false;
+}
+
+}  // namespace
+
+Ranks& Ranks::world() {
+  static Ranks ranks;
+  return ranks;
+}
+
+Ranks::Ranks() {
+#ifdef SCALCAL_HAVE_MPI
+  if (!launched_by_mpirun()) return;
+  PMPI_Init(nullptr, nullptr);
+  initialised_ = true;
+  PMPI_Comm_rank(MPI_COMM_WORLD, &rank_);
+  PMPI_Comm_size(MPI_COMM_WORLD, &size_);
+#else
+  (void)launched_by_mpirun;
+#endif
+}
+
+Ranks::~Ranks() {
+#ifdef SCALCAL_HAVE_MPI
+  if (initialised_) PMPI_Finalize();
+#endif
+}
+
+std::vector<std::string> Ranks::gather(const std::string& text) const {
+  if (size_ == 1) return {text};
+#ifdef SCALCAL_HAVE_MPI
+  int length = static_cast<int>(text.size());
+  std::vector<int> lengths(rank_ == 0 ? size_ : 0), offsets(rank_ == 0 ? size_ : 0);
+  PMPI_Gather(&length, 1, MPI_INT, lengths.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
+  std::string all;
+  if (rank_ == 0) {
+    int total = 0;
+    for (int r = 0; r < size_; ++r) offsets[r] = total, total += lengths[r];
+    all.resize(total);
+  }
+  PMPI_Gatherv(text.data(), length, MPI_CHAR, all.data(), lengths.data(), offsets.data(), MPI_CHAR, 0, MPI_COMM_WORLD);
+  std::vector<std::string> out;
+  for (int r = 0; rank_ == 0 && r < size_; ++r) out.push_back(all.substr(offsets[r], lengths[r]));
+  return out;
+#else
+  return {text};
+#endif
+}
+
+}  // namespace scalcal::cli
