@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <algorithm>
 #include <iomanip>
 #include <sstream>
 #include <stdexcept>
@@ -10,6 +11,7 @@
 
 #include "numeric/certify/critical_point.hpp"
 #include "numeric/certify/krawczyk.hpp"
+#include "numeric/certify/minimax_kkt.hpp"
 #include "numeric/certify/moment_system.hpp"
 #include "numeric/criteria/evaluation.hpp"
 
@@ -64,6 +66,112 @@ std::string outward(const Real& x, int digits, bool up) {
   const Real e = floor(log10(abs(x)));
   const Real unit = pow(Real(10), e - Real(digits - 1));
   return (up ? Real(x + unit) : Real(x - unit)).str(digits, std::ios::scientific);
+}
+
+// Cholesky over an interval matrix: true when every matrix in it is positive definite.
+bool positive_definite(IMatX H) {
+  const Eigen::Index m = H.rows();
+  for (Eigen::Index k = 0; k < m; ++k) {
+    for (Eigen::Index j = 0; j < k; ++j) H(k, k) -= H(k, j) * H(k, j);
+    if (!(lo(H(k, k)) > 0)) return false;
+    H(k, k) = sqrt(H(k, k));
+    for (Eigen::Index i = k + 1; i < m; ++i) {
+      for (Eigen::Index j = 0; j < k; ++j) H(i, k) -= H(i, j) * H(k, j);
+      H(i, k) /= H(k, k);
+    }
+  }
+  return true;
+}
+
+void set_enclosure(const Interval& value, const CertifyOptions& o, CertifyResult& r) {
+  const Real lo_v = lo(value), hi_v = hi(value);
+  using std::floor;
+  using std::log10;
+  r.enclosure_digits = static_cast<int>(floor(log10(abs(lo_v) / (hi_v - lo_v))));
+  const int printed = std::min(r.enclosure_digits + 2, o.digits - 5);
+  r.enclosure_lo = outward(lo_v, printed, false);
+  r.enclosure_hi = outward(hi_v, printed, true);
+}
+
+// S at a miss: the KKT system of min s subject to K_rr <= s (minimax_kkt.hpp), enclosed by
+// Krawczyk; then strict complementarity (every mu_r > 0), the other entries strictly below s, and
+// H + rho G G^T positive definite over the box: by Finsler's lemma the second-order sufficient
+// condition (H positive definite on the directions that keep the active entries level).
+void s_local_optimum(const Program& program, const CertifyOptions& o, CertifyResult& r) {
+  r.method = "Krawczyk on the KKT system of the active diagonal entries, interval Cholesky of H + rho G G^T";
+  const int n = program.size();
+  const SphereChart chart = SphereChart::of(program);
+  MinimaxKktSystem system{&chart, FreeCoordinates::all_but(2 * n, {}), {}};
+  const int m = system.coordinates.size();
+  const Eigen::VectorXd x0 = Eigen::VectorXd::Zero(m);
+  const auto K0 = system.inverse_information<double>(x0);
+  const double top = K0.diagonal().maxCoeff();
+  for (int q = 0; q < 9; ++q)
+    if (K0(q, q) >= top * (1 - 1e-7)) system.active.push_back(q);
+  const int na = static_cast<int>(system.active.size());
+  // Weights: the least-squares balance of the active gradients, summing to 1.
+  Eigen::VectorXd start(system.size());
+  start << x0, top, Eigen::VectorXd::Constant(na, 1.0 / na);
+  Eigen::VectorXd F;
+  Eigen::MatrixXd J;
+  system.eval<double>(start, F, &J);
+  const Eigen::MatrixXd Gd = J.block(0, m + 1, m, na);
+  Eigen::MatrixXd B = Eigen::MatrixXd::Zero(na + 1, na + 1);
+  B.topLeftCorner(na, na) = Gd.transpose() * Gd;
+  B.block(0, na, na, 1).setOnes();
+  B.block(na, 0, 1, na).setOnes();
+  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(na + 1);
+  rhs(na) = 1;
+  const Eigen::VectorXd mu = B.fullPivLu().solve(rhs).head(na);
+  if (mu.minCoeff() <= 0) {
+    r.reason = "the gradients of the " + std::to_string(na) +
+               " active diagonal entries do not balance with positive weights: not a strict KKT point of S";
+    return;
+  }
+  start.tail(na) = mu;
+  r.unknowns = r.equations = system.size();
+  VecX start_real(system.size());
+  for (int k = 0; k < system.size(); ++k) start_real(k) = Real(start(k));
+  const NewtonOutcome polished = newton(system, start_real, pow(Real(10), -Real(o.digits - 8)));
+  const Real moved = (polished.x.head(m) - start_real.head(m)).cwiseAbs().maxCoeff();
+  if (polished.residual > pow(Real(10), -Real(o.digits / 2)) || moved > 1e-4) {
+    r.reason = "Newton on the KKT system did not converge near the program (residual " + sci(polished.residual) +
+               ", moved " + sci(moved) + ")";
+    return;
+  }
+  const auto box = krawczyk(system, polished.x);
+  if (!box) {
+    r.reason = "no Krawczyk box passed about the KKT point (" + std::to_string(na) + " active entries)";
+    return;
+  }
+  for (int q = 0; q < na; ++q)
+    if (!(lo(box->box(m + 1 + q)) > 0)) {
+      r.reason = "a KKT point is enclosed, but a weight is not proven positive";
+      return;
+    }
+  const Square9<Interval> K = system.inverse_information<Interval>(box->box);
+  for (int q = 0; q < 9; ++q)
+    if (std::find(system.active.begin(), system.active.end(), q) == system.active.end() &&
+        !(hi(K(q, q)) < lo(box->box(m)))) {
+      r.reason = "a KKT point is enclosed, but an inactive diagonal entry is not proven below the active ones";
+      return;
+    }
+  IVecX FX;
+  IMatX JX;
+  system.eval(box->box, FX, &JX);
+  const IMatX H = JX.topLeftCorner(m, m);
+  const IMatX G = JX.block(0, m + 1, m, na);
+  const IMatX GGt = times(G, IMatX(G.transpose()));
+  bool proven = false;
+  for (double rho = 1; rho <= 1e8 && !proven; rho *= 10) proven = positive_definite(IMatX(H + Interval(rho) * GGt));
+  if (!proven) {
+    r.reason = "a KKT point is enclosed, but the Hessian is not proven positive definite on the level directions";
+    return;
+  }
+  set_enclosure(Interval(n) * box->box(m), o, r);
+  r.status = CertifiedStatus::missed_local_optimum;
+  r.radius = sci(moved + box->radius);
+  r.reason = "a strict local minimum (" + std::to_string(na) + " active diagonal entries, all weights positive)";
 }
 
 void attainment(const Program& program, CriterionKind c, const CertifyOptions& o, CertifyResult& r) {
@@ -128,10 +236,11 @@ void attainment(const Program& program, CriterionKind c, const CertifyOptions& o
 void local_optimum(const Program& program, CriterionKind c, const CertifyOptions& o, CertifyResult& r) {
   r.status = CertifiedStatus::missed_numerical;
   const std::string name(criterion_name(c));
+  if (name == "S") return s_local_optimum(program, o, r);
   if (name != "D" && name != "A") {
     r.method = "none";
-    r.reason = name + " is not differentiable at its optima (a multiple eigenvalue or several active diagonal "
-                      "entries); its local optimality is not certified here";
+    r.reason = name + " is a multiple eigenvalue at its optima (not differentiable); its local optimality is not "
+                      "certified here";
     return;
   }
   r.method = "Krawczyk on the gradient, interval Cholesky of the Hessian";
@@ -159,33 +268,18 @@ void local_optimum(const Program& program, CriterionKind c, const CertifyOptions
   IVecX FX;
   IMatX H;
   system.eval(box->box, FX, &H);
-  // Cholesky over the whole box: every Hessian in it is positive definite.
   const int m = system.size();
-  for (int k = 0; k < m; ++k) {
-    for (int j = 0; j < k; ++j) H(k, k) -= H(k, j) * H(k, j);
-    if (!(lo(H(k, k)) > 0)) {
-      r.reason = "a critical point is enclosed, but the Hessian is not proven positive definite (pivot " +
-                 std::to_string(k) + "): a saddle or a degenerate minimum";
-      return;
-    }
-    H(k, k) = sqrt(H(k, k));
-    for (int i = k + 1; i < m; ++i) {
-      for (int j = 0; j < k; ++j) H(i, k) -= H(i, j) * H(k, j);
-      H(i, k) /= H(k, k);
-    }
+  if (!positive_definite(H)) {
+    r.reason = "a critical point is enclosed, but the Hessian is not proven positive definite: a saddle or a "
+               "degenerate minimum";
+    return;
   }
   // Mean-value form: f(X) within f(x) + F(X) . (X - x).
   const IVecX xi = points(polished.x);
   Interval f = system.objective<Interval>(xi);
   for (int a = 0; a < m; ++a) f += FX(a) * (box->box(a) - xi(a));
   const Interval value = d ? Interval(exp(f + Interval(9) * log(Interval(n)))) : Interval(Interval(n) * f);
-  const Real lo_v = lo(value), hi_v = hi(value);
-  using std::floor;
-  using std::log10;
-  r.enclosure_digits = static_cast<int>(floor(log10(abs(lo_v) / (hi_v - lo_v))));
-  const int printed = std::min(r.enclosure_digits + 2, o.digits - 5);
-  r.enclosure_lo = outward(lo_v, printed, false);
-  r.enclosure_hi = outward(hi_v, printed, true);
+  set_enclosure(value, o, r);
   r.status = CertifiedStatus::missed_local_optimum;
   r.radius = sci(polished.displacement + box->radius);
   r.reason = d ? "a strict local minimum up to rotation (u, v of one position and one coordinate of another held)"

@@ -37,6 +37,51 @@ Square9<T> spd_inverse(const Square9<T>& M, T& log_det) {
   return a.template rightCols<9>();
 }
 
+// M = sum h h^T at full chart coordinates z, with the rows' jets when asked for.
+template <class T>
+Square9<T> assemble_information(const SphereChart& chart, const Eigen::Matrix<T, -1, 1>& z,
+                                std::vector<std::array<Jet2<T>, 9>>* rows = nullptr) {
+  Square9<T> M = Square9<T>::Zero();
+  for (int i = 0; i < static_cast<int>(chart.e.size()); ++i) {
+    const auto h = paper9_row(chart.position<T>(i, z(2 * i), z(2 * i + 1)));
+    Column9<T> hv;
+    for (int r = 0; r < 9; ++r) hv(r) = h[r].f;
+    M += symmetric_outer(hv, hv) / T(2);
+    if (rows) rows->push_back(h);
+  }
+  return M;
+}
+
+// h and g = dh/dx_a of the position that free coordinate a moves.
+template <class T>
+void row_derivatives(const std::vector<std::array<Jet2<T>, 9>>& rows, const FreeCoordinates& coordinates,
+                     std::vector<Column9<T>>& g, std::vector<Column9<T>>& h) {
+  const int m = coordinates.size();
+  g.resize(m);
+  h.resize(m);
+  for (int a = 0; a < m; ++a) {
+    const int full = coordinates.free[a], i = full / 2;
+    const bool along_u = full % 2 == 0;
+    for (int r = 0; r < 9; ++r) {
+      h[a](r) = rows[i][r].f;
+      g[a](r) = along_u ? rows[i][r].u : rows[i][r].v;
+    }
+  }
+}
+
+// tr(G X_ac), X_ac = d2M/dx_a dx_c: nonzero only when a and c move the same position.
+template <class T>
+T same_position_term(const std::vector<std::array<Jet2<T>, 9>>& rows, const FreeCoordinates& coordinates, int a,
+                     int c, const Square9<T>& G, const std::vector<Column9<T>>& g, const std::vector<Column9<T>>& h) {
+  const int fa = coordinates.free[a], fc = coordinates.free[c];
+  if (fa / 2 != fc / 2) return T(0);
+  const int i = fa / 2;
+  const int kind = (fa % 2) + (fc % 2);  // 0: uu, 1: uv, 2: vv
+  Column9<T> gac;
+  for (int r = 0; r < 9; ++r) gac(r) = kind == 0 ? rows[i][r].uu : kind == 1 ? rows[i][r].uv : rows[i][r].vv;
+  return T(2) * inner(gac, times(G, h[a])) + T(2) * inner(g[a], times(G, g[c]));
+}
+
 enum class CriticalForm { log_det, trace };
 
 struct CriticalPointSystem {
@@ -49,46 +94,24 @@ struct CriticalPointSystem {
   // f at the coordinates x (no derivatives): -log det M or tr K.
   template <class T>
   T objective(const Eigen::Matrix<T, -1, 1>& x) const {
-    const auto z = coordinates.full(x);
-    Square9<T> M = Square9<T>::Zero();
-    for (int i = 0; i < static_cast<int>(chart->e.size()); ++i) {
-      const auto h = paper9_row(chart->position<T>(i, z(2 * i), z(2 * i + 1)));
-      Column9<T> hv;
-      for (int r = 0; r < 9; ++r) hv(r) = h[r].f;
-      M += symmetric_outer(hv, hv) / T(2);
-    }
     T log_det;
-    const Square9<T> K = spd_inverse(M, log_det);
+    const Square9<T> K = spd_inverse(assemble_information(*chart, coordinates.full(x)), log_det);
     return form == CriticalForm::log_det ? T(-log_det) : T(K.trace());
   }
 
   template <class T>
   void eval(const Eigen::Matrix<T, -1, 1>& x, Eigen::Matrix<T, -1, 1>& F, Eigen::Matrix<T, -1, -1>* J) const {
-    const auto z = coordinates.full(x);
-    const int n = static_cast<int>(chart->e.size());
     std::vector<std::array<Jet2<T>, 9>> rows;
-    Square9<T> M = Square9<T>::Zero();
-    for (int i = 0; i < n; ++i) {
-      rows.push_back(paper9_row(chart->position<T>(i, z(2 * i), z(2 * i + 1))));
-      Column9<T> hv;
-      for (int r = 0; r < 9; ++r) hv(r) = rows[i][r].f;
-      M += symmetric_outer(hv, hv) / T(2);
-    }
     T log_det;
-    const Square9<T> K = spd_inverse(M, log_det);
+    const Square9<T> K = spd_inverse(assemble_information(*chart, coordinates.full(x), &rows), log_det);
     const Square9<T> K2 = times(K, K);
     const Square9<T> G = form == CriticalForm::log_det ? Square9<T>(-K) : Square9<T>(-K2);
     const int m = coordinates.size();
     F.resize(m);
-    std::vector<Column9<T>> g(m), h(m);
+    std::vector<Column9<T>> g, h;
+    row_derivatives(rows, coordinates, g, h);
     std::vector<Square9<T>> P(m), Q(m);  // K X_a, and K^2 X_a for A
     for (int a = 0; a < m; ++a) {
-      const int full = coordinates.free[a], i = full / 2;
-      const bool along_u = full % 2 == 0;
-      for (int r = 0; r < 9; ++r) {
-        h[a](r) = rows[i][r].f;
-        g[a](r) = along_u ? rows[i][r].u : rows[i][r].v;
-      }
       F(a) = T(2) * inner(g[a], times(G, h[a]));
       if (!J) continue;
       const Square9<T> X = symmetric_outer(g[a], h[a]);
@@ -99,15 +122,9 @@ struct CriticalPointSystem {
     J->resize(m, m);
     for (int a = 0; a < m; ++a)
       for (int c = a; c < m; ++c) {
-        T value = form == CriticalForm::log_det ? trace_of_product(P[c], P[a]) : T(T(2) * trace_of_product(Q[a], P[c]));
-        const int fa = coordinates.free[a], fc = coordinates.free[c];
-        if (fa / 2 == fc / 2) {
-          const int i = fa / 2;
-          const int kind = (fa % 2) + (fc % 2);  // 0: uu, 1: uv, 2: vv
-          Column9<T> gac;
-          for (int r = 0; r < 9; ++r) gac(r) = kind == 0 ? rows[i][r].uu : kind == 1 ? rows[i][r].uv : rows[i][r].vv;
-          value += T(2) * inner(gac, times(G, h[a])) + T(2) * inner(g[a], times(G, g[c]));
-        }
+        const T value = (form == CriticalForm::log_det ? trace_of_product(P[c], P[a])
+                                                       : T(T(2) * trace_of_product(Q[a], P[c]))) +
+                        same_position_term(rows, coordinates, a, c, G, g, h);
         (*J)(a, c) = value;
         (*J)(c, a) = value;
       }
