@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs what is missing, builds, and runs the whole test suite (GoogleTest and proof checks);
 # then the same suite under AddressSanitizer + UndefinedBehaviorSanitizer (scripts/sanitize.sh) and
-# libFuzzer on every reader for 60 s each (scripts/fuzz.sh). SCALCAL_SANITIZERS=0 skips those two.
+# libFuzzer on every reader for 30 s each (scripts/fuzz.sh). SCALCAL_SANITIZERS=0 skips those two.
 # Arguments go to ctest.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -9,5 +9,5 @@ bash scripts/build.sh
 ctest --test-dir build --output-on-failure -j"$(nproc)" "$@"
 if [ "${SCALCAL_SANITIZERS:-1}" != 0 ]; then
   bash scripts/sanitize.sh "$@"
-  bash scripts/fuzz.sh 60
+  bash scripts/fuzz.sh 30
 fi
