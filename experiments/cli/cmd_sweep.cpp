@@ -81,10 +81,8 @@ struct Task {
 
 // One task's result as JSON (doubles print with 17 digits, so rank 0 reads back the same bits).
 Json encode(std::size_t task, const SynthesisResult& r) {
-  Json program = Json::array();
-  for (const auto& p : r.program.positions) program.push_back({p(0), p(1), p(2)});
   return Json{{"task", task},   {"value", r.value},       {"starts", r.starts},   {"hits", r.hits},
-              {"distinct", r.distinct}, {"seconds", r.seconds}, {"program", program}};
+              {"distinct", r.distinct}, {"seconds", r.seconds}, {"program", program_json(r.program)}};
 }
 
 SynthesisResult decode(const Json& j) {

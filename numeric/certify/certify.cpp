@@ -48,14 +48,29 @@ Interval optimal_b(CriterionKind c) {
 
 // For D, rotations leave the criterion alone: u, v of position 0 and u of the position farthest
 // from its axis are held (SphereChart::of aims that u along e0 x e_second).
-int gauge_partner(const Program& p) {
-  int best = 1;
+struct Gauge {
+  SphereChart chart;
+  std::vector<int> held;  // full chart indices held at 0
+};
+
+Gauge gauge_for(const Program& p, bool rotations) {
+  if (!rotations) return {SphereChart::of(p), {}};
+  int second = 1;
   double far = -1;
   for (int j = 1; j < p.size(); ++j) {
     const double s = p.positions[0].normalized().cross(p.positions[j].normalized()).norm();
-    if (s > far) far = s, best = j;
+    if (s > far) far = s, second = j;
   }
-  return best;
+  return {SphereChart::of(p, 0, second), {0, 1, 2 * second}};
+}
+
+// Newton from the computed program: the stopping residual, and why a run does not count as converged
+// near the program (empty when it does).
+Real newton_tolerance(const CertifyOptions& o) { return pow(Real(10), -Real(o.digits - 8)); }
+
+std::string newton_failure(const NewtonOutcome& n, const Real& moved, double max_move, const CertifyOptions& o) {
+  if (n.residual <= pow(Real(10), -Real(o.digits / 2)) && moved <= max_move) return "";
+  return "did not converge near the program (residual " + sci(n.residual) + ", moved " + sci(moved) + ")";
 }
 
 // Prints an enclosure bound rounded outward: widening by one unit of the last printed digit
@@ -100,8 +115,8 @@ void set_enclosure(const Interval& value, const CertifyOptions& o, CertifyResult
 void s_local_optimum(const Program& program, const CertifyOptions& o, CertifyResult& r) {
   r.method = "Krawczyk on the KKT system of the active diagonal entries, interval Cholesky of H + rho G G^T";
   const int n = program.size();
-  const SphereChart chart = SphereChart::of(program);
-  MinimaxKktSystem system{&chart, FreeCoordinates::all_but(2 * n, {}), {}};
+  const Gauge gauge = gauge_for(program, false);
+  MinimaxKktSystem system{&gauge.chart, FreeCoordinates::all_but(2 * n, gauge.held), {}};
   const int m = system.coordinates.size();
   const Eigen::VectorXd x0 = Eigen::VectorXd::Zero(m);
   const auto K0 = system.inverse_information<double>(x0);
@@ -132,11 +147,10 @@ void s_local_optimum(const Program& program, const CertifyOptions& o, CertifyRes
   r.unknowns = r.equations = system.size();
   VecX start_real(system.size());
   for (int k = 0; k < system.size(); ++k) start_real(k) = Real(start(k));
-  const NewtonOutcome polished = newton(system, start_real, pow(Real(10), -Real(o.digits - 8)));
+  const NewtonOutcome polished = newton(system, start_real, newton_tolerance(o));
   const Real moved = (polished.x.head(m) - start_real.head(m)).cwiseAbs().maxCoeff();
-  if (polished.residual > pow(Real(10), -Real(o.digits / 2)) || moved > 1e-4) {
-    r.reason = "Newton on the KKT system did not converge near the program (residual " + sci(polished.residual) +
-               ", moved " + sci(moved) + ")";
+  if (const std::string failure = newton_failure(polished, moved, 1e-4, o); !failure.empty()) {
+    r.reason = "Newton on the KKT system " + failure;
     return;
   }
   const auto box = krawczyk(system, polished.x);
@@ -179,11 +193,9 @@ void attainment(const Program& program, CriterionKind c, const CertifyOptions& o
   r.method = "Krawczyk on the 24 moment equations of degree <= 4";
   const bool d = criterion_name(c) == "D";
   const int n = program.size();
-  const int second = d ? gauge_partner(program) : -1;
-  const SphereChart chart = SphereChart::of(program, d ? 0 : -1, second);
-  std::vector<int> gauge;
-  if (d) gauge = {0, 1, 2 * second};
-  MomentSystem all{&chart, FreeCoordinates::all_but(2 * n, gauge), optimal_b(c)};
+  const Gauge gauge = gauge_for(program, d);
+  const SphereChart& chart = gauge.chart;
+  MomentSystem all{&chart, FreeCoordinates::all_but(2 * n, gauge.held), optimal_b(c)};
   Eigen::VectorXd F;
   Eigen::MatrixXd J;
   all.eval<double>(Eigen::VectorXd::Zero(all.size()), F, &J);
@@ -215,11 +227,9 @@ void attainment(const Program& program, CriterionKind c, const CertifyOptions& o
   const MomentSystem square{&chart, FreeCoordinates::all_but(2 * n, held), all.b};
   r.unknowns = square.size();
   r.equations = MomentSystem::kEquations;
-  const Real tolerance = pow(Real(10), -Real(o.digits - 8));
-  const NewtonOutcome polished = newton(square, VecX::Zero(square.size()), tolerance);
-  if (polished.residual > pow(Real(10), -Real(o.digits / 2)) || polished.displacement > 1e-6) {
-    r.reason = "Newton on the moment equations did not converge near the program (residual " +
-               sci(polished.residual) + ", moved " + sci(polished.displacement) + ")";
+  const NewtonOutcome polished = newton(square, VecX::Zero(square.size()), newton_tolerance(o));
+  if (const std::string failure = newton_failure(polished, polished.displacement, 1e-6, o); !failure.empty()) {
+    r.reason = "Newton on the moment equations " + failure;
     return;
   }
   const auto box = krawczyk(square, polished.x);
@@ -246,18 +256,13 @@ void local_optimum(const Program& program, CriterionKind c, const CertifyOptions
   r.method = "Krawczyk on the gradient, interval Cholesky of the Hessian";
   const bool d = name == "D";
   const int n = program.size();
-  const int second = d ? gauge_partner(program) : -1;
-  const SphereChart chart = SphereChart::of(program, d ? 0 : -1, second);
-  std::vector<int> gauge;
-  if (d) gauge = {0, 1, 2 * second};
-  const CriticalPointSystem system{&chart, FreeCoordinates::all_but(2 * n, gauge),
+  const Gauge gauge = gauge_for(program, d);
+  const CriticalPointSystem system{&gauge.chart, FreeCoordinates::all_but(2 * n, gauge.held),
                                    d ? CriticalForm::log_det : CriticalForm::trace};
   r.unknowns = r.equations = system.size();
-  const Real tolerance = pow(Real(10), -Real(o.digits - 8));
-  const NewtonOutcome polished = newton(system, VecX::Zero(system.size()), tolerance);
-  if (polished.residual > pow(Real(10), -Real(o.digits / 2)) || polished.displacement > 1e-4) {
-    r.reason = "Newton on the gradient did not converge near the program (residual " + sci(polished.residual) +
-               ", moved " + sci(polished.displacement) + "): not an optimum to certify";
+  const NewtonOutcome polished = newton(system, VecX::Zero(system.size()), newton_tolerance(o));
+  if (const std::string failure = newton_failure(polished, polished.displacement, 1e-4, o); !failure.empty()) {
+    r.reason = "Newton on the gradient " + failure + ": not an optimum to certify";
     return;
   }
   const auto box = krawczyk(system, polished.x);

@@ -1,5 +1,5 @@
-// Which chart coordinates a certificate solves for and which it holds at their computed values
-// (the rotation gauge, the surplus of a design): the full vector is (u0, v0, u1, v1, ...).
+// Which chart coordinates a certificate solves for and which it holds at 0, i.e. at the computed
+// program (the rotation gauge, the surplus of a design): the full vector is (u0, v0, u1, v1, ...).
 #pragma once
 #include <vector>
 
@@ -9,8 +9,7 @@ namespace scalcal::certify_detail {
 
 struct FreeCoordinates {
   std::vector<int> free;    // indices into the full vector, in solving order
-  std::vector<int> column;  // full index -> position in `free`, or -1 when held fixed
-  Eigen::VectorXd held;     // values of the fixed coordinates (exact doubles; 0 at the computed program)
+  std::vector<int> column;  // full index -> position in `free`, or -1 when held at 0
 
   static FreeCoordinates all_but(int full_size, const std::vector<int>& fixed) {
     FreeCoordinates c;
@@ -21,7 +20,6 @@ struct FreeCoordinates {
         c.column[k] = static_cast<int>(c.free.size());
         c.free.push_back(k);
       }
-    c.held = Eigen::VectorXd::Zero(full_size);
     return c;
   }
 
@@ -30,7 +28,7 @@ struct FreeCoordinates {
   template <class T>
   Eigen::Matrix<T, Eigen::Dynamic, 1> full(const Eigen::Matrix<T, Eigen::Dynamic, 1>& x) const {
     Eigen::Matrix<T, Eigen::Dynamic, 1> z(column.size());
-    for (std::size_t k = 0; k < column.size(); ++k) z(k) = column[k] < 0 ? T(held(k)) : x(column[k]);
+    for (std::size_t k = 0; k < column.size(); ++k) z(k) = column[k] < 0 ? T(0) : x(column[k]);
     return z;
   }
 };
