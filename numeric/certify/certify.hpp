@@ -1,7 +1,7 @@
 // Certificates for one optimised program and one criterion of the paper's model: that an exact
 // program attaining the limit lies within a stated radius (Krawczyk on the moment equations), or
 // that the program is within a stated radius of a strict local optimum whose value is enclosed
-// (Krawczyk on the gradient, interval Cholesky of the Hessian; D and A). Otherwise: numerical.
+// (Krawczyk on the gradient or KKT system, interval Cholesky of the reduced Hessian). Otherwise: numerical.
 #pragma once
 #include <string>
 

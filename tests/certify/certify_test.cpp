@@ -76,10 +76,28 @@ TEST(Certify, ProgramsThatAreNotStrictOptimaAreNotCertified) {
   EXPECT_EQ(certify(resolve_program("random-18-s7"), *parse_criterion("A")).status, CertifiedStatus::missed_numerical);
 }
 
-TEST(Certify, EMissesStayNumerical) {
-  const CertifyResult r = certify(optimum(10, *parse_criterion("E")), *parse_criterion("E"));
-  EXPECT_EQ(r.status, CertifiedStatus::missed_numerical);
-  EXPECT_GT(r.value / r.limit, 1 + 1e-6);
+TEST(Certify, EAtNineIsACertifiedLocalOptimumHoldingThePolishedValue) { expect_enclosure_holds_polish(9, "E"); }
+
+// The E certificate claims a strict local minimum of a nonsmooth function (the smallest eigenvalue of
+// M is 5-fold there): no small random move of the positions may lower E. A D optimum is no E
+// optimum, so the E certificate must refuse it.
+TEST(Certify, TheEOptimumAtTenSurvivesRandomMovesAndADOptimumIsRefused) {
+  const CriterionKind e = *parse_criterion("E");
+  const Program p = optimum(10, e);
+  const CertifyResult r = certify(p, e);
+  ASSERT_EQ(r.status, CertifiedStatus::missed_local_optimum) << r.reason;
+  EXPECT_NE(r.reason.find("multiplicity 5"), std::string::npos) << r.reason;
+  const double e0 = criterion_value(p, e);
+  std::mt19937_64 rng(11);
+  std::normal_distribution<double> gauss;
+  double lowest = 1e300;
+  for (int trial = 0; trial < 400; ++trial) {
+    Program q = p;
+    for (auto& x : q.positions) x = (x + 1e-4 * Eigen::Vector3d(gauss(rng), gauss(rng), gauss(rng))).normalized();
+    lowest = std::min(lowest, criterion_value(q, e));
+  }
+  EXPECT_GT(lowest, e0 * (1 + 1e-12)) << "a random move lowered E: not a local minimum";
+  EXPECT_EQ(certify(optimum(9, *parse_criterion("D")), e).status, CertifiedStatus::missed_numerical);
 }
 
 TEST(CertifyCli, JsonHasTheIssueKeys) {
