@@ -1,0 +1,119 @@
+#include "numeric/certify/pentagonal_match.hpp"
+
+#include <array>
+#include <cmath>
+#include <numbers>
+
+#include <Eigen/Geometry>
+
+namespace scalcal::certify_detail {
+
+namespace {
+
+constexpr double kTolerance = 1e-4;
+
+// A family member in the frame (e1, e2, axis): point 0 and 1 the poles, then ring j = 0, 1 at
+// height +-1/sqrt 5 with angles t_j + 72 k degrees. The fit keeps, for each, its position index.
+struct Fit {
+  Eigen::Matrix3d frame;        // columns e1, e2, axis
+  std::array<double, 2> turn{};  // t_0, t_1
+  std::array<int, 12> position{};
+};
+
+std::optional<Fit> fit(const std::vector<Eigen::Vector3d>& p) {
+  const double h = 1 / std::sqrt(5.0);
+  int north = -1, south = -1;
+  for (int i = 0; i < 12 && north < 0; ++i)
+    for (int j = i + 1; j < 12 && north < 0; ++j)
+      if ((p[i] + p[j]).norm() < kTolerance) north = i, south = j;
+  if (north < 0) return std::nullopt;
+  Fit f;
+  f.position.fill(-1);
+  const Eigen::Vector3d axis = (p[north] - p[south]).normalized();
+  const Eigen::Vector3d e1 = axis.unitOrthogonal(), e2 = axis.cross(e1);
+  f.frame << e1, e2, axis;
+  f.position[0] = north;
+  f.position[1] = south;
+  std::array<std::vector<std::pair<double, int>>, 2> ring;  // (angle, position)
+  for (int i = 0; i < 12; ++i) {
+    if (i == north || i == south) continue;
+    const double z = p[i].dot(axis);
+    if (std::abs(std::abs(z) - h) > kTolerance) return std::nullopt;
+    ring[z > 0 ? 0 : 1].push_back({std::atan2(p[i].dot(e2), p[i].dot(e1)), i});
+  }
+  const double step = 2 * std::numbers::pi / 5;
+  for (int j = 0; j < 2; ++j) {
+    if (ring[j].size() != 5) return std::nullopt;
+    // The turn: the circular mean of each angle's offset from the nearest multiple of 72 degrees.
+    double c = 0, s = 0;
+    for (const auto& [angle, i] : ring[j]) c += std::cos(5 * angle), s += std::sin(5 * angle);
+    f.turn[j] = std::atan2(s, c) / 5;
+    for (const auto& [angle, i] : ring[j]) {
+      const int k = static_cast<int>(std::lround((angle - f.turn[j]) / step) % 5 + 5) % 5;
+      int& slot = f.position[2 + 5 * j + k];
+      if (slot >= 0) return std::nullopt;  // two positions on one vertex
+      slot = i;
+    }
+  }
+  return f;
+}
+
+}  // namespace
+
+std::optional<Real> radius_to_pentagonal_design(const Program& program, const SphereChart& chart) {
+  if (program.size() != 12) return std::nullopt;
+  std::vector<Eigen::Vector3d> p;
+  for (const auto& e : program.positions) p.push_back(e.normalized());
+  const auto f = fit(p);
+  if (!f) return std::nullopt;
+
+  // Exact rotation from the quaternion q (its double coefficients taken as exact): R(q)/|q|^2 is
+  // orthogonal with determinant 1 for any q != 0. The turns enter through tau = tan(t/2), with
+  // cos t = (1 - tau^2)/(1 + tau^2), sin t = 2 tau/(1 + tau^2), exactly on the circle.
+  const Eigen::Quaterniond qd(f->frame);
+  const Interval w(qd.w()), x(qd.x()), y(qd.y()), z(qd.z());
+  const Interval n = w * w + x * x + y * y + z * z, two(2);
+  const Interval R[3][3] = {{w * w + x * x - y * y - z * z, two * (x * y - w * z), two * (x * z + w * y)},
+                            {two * (x * y + w * z), w * w - x * x + y * y - z * z, two * (y * z - w * x)},
+                            {two * (x * z - w * y), two * (y * z + w * x), w * w - x * x - y * y + z * z}};
+  const Interval s5 = sqrt(Interval(5)), h = Interval(1) / s5, r = two / s5;
+  // cos and sin of 72 k degrees: cos 72 = (sqrt 5 - 1)/4, sin 72 = sqrt(10 + 2 sqrt 5)/4, by the double angle.
+  const Interval c72 = (s5 - Interval(1)) / Interval(4), s72 = sqrt(Interval(10) + two * s5) / Interval(4);
+  std::array<Interval, 5> ck, sk;
+  ck[0] = Interval(1), sk[0] = Interval(0);
+  for (int k = 1; k < 5; ++k) ck[k] = ck[k - 1] * c72 - sk[k - 1] * s72, sk[k] = sk[k - 1] * c72 + ck[k - 1] * s72;
+
+  std::array<std::array<Interval, 3>, 12> local;  // the member in the frame
+  local[0] = {Interval(0), Interval(0), Interval(1)};
+  local[1] = {Interval(0), Interval(0), Interval(-1)};
+  for (int j = 0; j < 2; ++j) {
+    const Interval tau(std::tan(f->turn[j] / 2));
+    const Interval ct = (Interval(1) - tau * tau) / (Interval(1) + tau * tau), st = two * tau / (Interval(1) + tau * tau);
+    for (int k = 0; k < 5; ++k)
+      local[2 + 5 * j + k] = {r * (ct * ck[k] - st * sk[k]), r * (st * ck[k] + ct * sk[k]), j == 0 ? h : Interval(-h)};
+  }
+  Real radius(0);
+  for (int slot = 0; slot < 12; ++slot) {
+    const int i = f->position[slot];
+    std::array<Interval, 3> target;
+    for (int a = 0; a < 3; ++a)
+      target[a] = (R[a][0] * local[slot][0] + R[a][1] * local[slot][1] + R[a][2] * local[slot][2]) / n;
+    // eta(u, v) = target iff e + u t1 + v t2 = s target (s > 0): by Cramer's rule, the determinant
+    // cancelling, u = (t2 x e).target / (t1 x t2).target and v = (e x t1).target / (t1 x t2).target.
+    auto triple = [&target](const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+      Interval acc(0);
+      for (int k = 0; k < 3; ++k) {
+        const int k1 = (k + 1) % 3, k2 = (k + 2) % 3;
+        acc += (Interval(a(k1)) * Interval(b(k2)) - Interval(a(k2)) * Interval(b(k1))) * target[k];
+      }
+      return acc;
+    };
+    const Interval along_e = triple(chart.t1[i], chart.t2[i]);
+    if (!(lo(along_e) > 0)) return std::nullopt;
+    const Interval u = triple(chart.t2[i], chart.e[i]) / along_e, v = triple(chart.e[i], chart.t1[i]) / along_e;
+    radius = std::max({radius, mag(u), mag(v)});
+  }
+  return radius;
+}
+
+}  // namespace scalcal::certify_detail
