@@ -31,7 +31,7 @@ int run(const Options& o) {
     std::cerr << "scalcal polish: " << o.program << ": warning: the polish did not converge (residual " << p.residual
               << "); value_digits keeps " << p.digits << " digits\n";
   if (!o.out.empty()) write_program_file(o.out, p.program);
-  // First-order conditions cannot tell a minimum from a saddle: the interval certificate can (D, A),
+  // First-order conditions cannot tell a minimum from a saddle: the interval certificate can (D, A, E, S),
   // or proves the limit attained; otherwise the polished point stays a first-order point.
   std::string second_order = p.converged() ? "not checked (fewer than 9 positions)" : "not checked (not converged)";
   std::string second_reason;

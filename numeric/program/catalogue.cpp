@@ -23,8 +23,13 @@ std::string data_dir() {
       const std::filesystem::path candidate = exe.parent_path() / up / "share/scalcal/data";
       if (std::filesystem::exists(candidate / "table1_A.csv", ec)) return candidate.lexically_normal().string();
     }
+#if defined(SCALCAL_INSTALLED_DATA) && defined(SCALCAL_BUILD_DATA)
+  for (const char* compiled : {SCALCAL_INSTALLED_DATA, SCALCAL_BUILD_DATA})
+    if (std::filesystem::exists(std::filesystem::path(compiled) / "table1_A.csv", ec)) return compiled;
+#endif
   throw InputError("", 0, "cannot find the data folder with Tables 1-3 (looked in ../share/scalcal/data beside the "
-                          "executable); set SCALCAL_DATA to the folder holding table1_A.csv");
+                          "executable and where scalcal was installed); set SCALCAL_DATA to the folder holding "
+                          "table1_A.csv");
 }
 
 namespace {
