@@ -9,6 +9,7 @@
 #include "numeric/certify/certify.hpp"
 #include "numeric/criteria/evaluation.hpp"
 #include "numeric/io/program_csv.hpp"
+#include "numeric/certify/eigenvalue_kkt.hpp"
 #include "numeric/certify/interval.hpp"
 #include "numeric/polish/polish.hpp"
 #include "numeric/program/catalogue.hpp"
@@ -137,6 +138,37 @@ TEST(Certify, TheEOptimumAtTenSurvivesRandomMovesAndADOptimumIsRefused) {
   }
   EXPECT_GT(lowest, e0 * (1 + 1e-12)) << "a random move lowered E: not a local minimum";
   EXPECT_EQ(certify(optimum(9, *parse_criterion("D")), e).status, CertifiedStatus::missed_numerical);
+}
+
+// Krawczyk is only as sound as the Jacobian it is given: the E system's closed-form Jacobian (second
+// derivatives of a Schur complement) against central differences of its residual, at a point off the
+// solution (moved positions, lambda and Omega arbitrary), where every term is nonzero.
+TEST(Certify, TheESystemJacobianMatchesCentralDifferences) {
+  using namespace certify_detail;
+  const Program p = optimum(10, *parse_criterion("E"));
+  const SphereChart chart = SphereChart::of(p);
+  EigenvalueKktSystem system{&chart, FreeCoordinates::all_but(2 * p.size(), {}), 5, {}};
+  const Eigen::Matrix<double, 9, 9> M0 = assemble_information<double>(chart, Eigen::VectorXd::Zero(2 * p.size()));
+  system.basis = Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 9, 9>>(M0).eigenvectors();
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> uniform(-0.02, 0.02);
+  Eigen::VectorXd z(system.size());
+  for (int k = 0; k < system.size(); ++k) z(k) = uniform(rng);
+  z(system.free_size()) = 0.9 * Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 9, 9>>(M0).eigenvalues()(0);
+  Eigen::VectorXd F;
+  Eigen::MatrixXd J;
+  system.eval<double>(z, F, &J);
+  double worst = 0;
+  for (int k = 0; k < system.size(); ++k) {
+    const double step = 1e-6;
+    Eigen::VectorXd up = z, down = z, Fu, Fd;
+    up(k) += step;
+    down(k) -= step;
+    system.eval<double>(up, Fu, nullptr);
+    system.eval<double>(down, Fd, nullptr);
+    worst = std::max(worst, ((Fu - Fd) / (2 * step) - J.col(k)).cwiseAbs().maxCoeff());
+  }
+  EXPECT_LT(worst, 1e-6 * std::max(1.0, J.cwiseAbs().maxCoeff())) << "largest entry " << J.cwiseAbs().maxCoeff();
 }
 
 TEST(CertifyCli, JsonHasTheIssueKeys) {
