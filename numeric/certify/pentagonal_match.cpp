@@ -20,13 +20,9 @@ struct Fit {
   std::array<int, 12> position{};
 };
 
-std::optional<Fit> fit(const std::vector<Eigen::Vector3d>& p) {
+// The member with poles at positions north and south (antipodal within the tolerance), if any.
+std::optional<Fit> fit(const std::vector<Eigen::Vector3d>& p, int north, int south) {
   const double h = 1 / std::sqrt(5.0);
-  int north = -1, south = -1;
-  for (int i = 0; i < 12 && north < 0; ++i)
-    for (int j = i + 1; j < 12 && north < 0; ++j)
-      if ((p[i] + p[j]).norm() < kTolerance) north = i, south = j;
-  if (north < 0) return std::nullopt;
   Fit f;
   f.position.fill(-1);
   const Eigen::Vector3d axis = (p[north] - p[south]).normalized();
@@ -64,7 +60,11 @@ std::optional<Real> radius_to_pentagonal_design(const Program& program, const Sp
   if (program.size() != 12) return std::nullopt;
   std::vector<Eigen::Vector3d> p;
   for (const auto& e : program.positions) p.push_back(e.normalized());
-  const auto f = fit(p);
+  // Any antipodal pair may be the poles (in the icosahedron every one is); the first that fits is used.
+  std::optional<Fit> f;
+  for (int i = 0; i < 12 && !f; ++i)
+    for (int j = i + 1; j < 12 && !f; ++j)
+      if ((p[i] + p[j]).norm() < kTolerance) f = fit(p, i, j);
   if (!f) return std::nullopt;
 
   // Exact rotation from the quaternion q (its double coefficients taken as exact): R(q)/|q|^2 is
