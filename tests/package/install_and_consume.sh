@@ -16,5 +16,7 @@ export PKG_CONFIG_PATH="$work/prefix/lib/pkgconfig"
 # shellcheck disable=SC2046
 g++ -DNUMERIC_ONLY "$here/consumer/main.cpp" -o "$work/consumer_pc" $(pkg-config --cflags --libs scalcal-numeric)
 "$work/consumer_pc"
-env -u SCALCAL_DATA "$work/prefix/bin/scalcal" evaluate table1-A --json | grep -q '"D"'
+# Into a file first: `| grep -q` would close the pipe early and, under pipefail, fail on the CLI's SIGPIPE.
+env -u SCALCAL_DATA "$work/prefix/bin/scalcal" evaluate table1-A --json >"$work/evaluate.json"
+grep -q '"D"' "$work/evaluate.json"
 echo "installed package: CMake and pkg-config consumers and the installed CLI work"
