@@ -111,6 +111,33 @@ void set_enclosure(const Interval& value, const CertifyOptions& o, CertifyResult
   r.enclosure_hi = outward(hi_v, printed, true);
 }
 
+// Multipliers w for the gradient columns C that balance best (min |C w|) under d.w = total: the
+// bordered normal equations. The Newton start of the S and E KKT systems.
+Eigen::VectorXd balanced_multipliers(const Eigen::MatrixXd& C, const Eigen::VectorXd& d, double total) {
+  const Eigen::Index k = C.cols();
+  Eigen::MatrixXd B = Eigen::MatrixXd::Zero(k + 1, k + 1);
+  B.topLeftCorner(k, k) = C.transpose() * C;
+  B.block(0, k, k, 1) = d;
+  B.block(k, 0, 1, k) = d.transpose();
+  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(k + 1);
+  rhs(k) = total;
+  return B.fullPivLu().solve(rhs).head(k);
+}
+
+// Finsler's lemma over a box: H + rho G^T G positive definite for one rho in 1, 10, ..., 1e8 proves
+// H positive definite on the kernel of G (the second-order sufficient condition of a KKT point).
+bool positive_on_kernel(const IMatX& H, const IMatX& GtG) {
+  for (double rho = 1; rho <= 1e8; rho *= 10)
+    if (positive_definite(IMatX(H + Interval(rho) * GtG))) return true;
+  return false;
+}
+
+VecX to_real(const Eigen::VectorXd& x) {
+  VecX out(x.size());
+  for (Eigen::Index k = 0; k < x.size(); ++k) out(k) = Real(x(k));
+  return out;
+}
+
 // S at a miss: the KKT system of min s subject to K_rr <= s (minimax_kkt.hpp), enclosed by
 // Krawczyk; then strict complementarity (every mu_r > 0), the other entries strictly below s, and
 // H + rho G G^T positive definite over the box: by Finsler's lemma the second-order sufficient
@@ -133,14 +160,7 @@ void s_local_optimum(const Program& program, const CertifyOptions& o, CertifyRes
   Eigen::VectorXd F;
   Eigen::MatrixXd J;
   system.eval<double>(start, F, &J);
-  const Eigen::MatrixXd Gd = J.block(0, m + 1, m, na);
-  Eigen::MatrixXd B = Eigen::MatrixXd::Zero(na + 1, na + 1);
-  B.topLeftCorner(na, na) = Gd.transpose() * Gd;
-  B.block(0, na, na, 1).setOnes();
-  B.block(na, 0, 1, na).setOnes();
-  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(na + 1);
-  rhs(na) = 1;
-  const Eigen::VectorXd mu = B.fullPivLu().solve(rhs).head(na);
+  const Eigen::VectorXd mu = balanced_multipliers(J.block(0, m + 1, m, na), Eigen::VectorXd::Ones(na), 1);
   if (mu.minCoeff() <= 0) {
     r.reason = "the gradients of the " + std::to_string(na) +
                " active diagonal entries do not balance with positive weights: not a strict KKT point of S";
@@ -148,8 +168,7 @@ void s_local_optimum(const Program& program, const CertifyOptions& o, CertifyRes
   }
   start.tail(na) = mu;
   r.unknowns = r.equations = system.size();
-  VecX start_real(system.size());
-  for (int k = 0; k < system.size(); ++k) start_real(k) = Real(start(k));
+  const VecX start_real = to_real(start);
   const NewtonOutcome polished = newton(system, start_real, newton_tolerance(o));
   const Real moved = (polished.x.head(m) - start_real.head(m)).cwiseAbs().maxCoeff();
   if (const std::string failure = newton_failure(polished, moved, 1e-4, o); !failure.empty()) {
@@ -179,9 +198,7 @@ void s_local_optimum(const Program& program, const CertifyOptions& o, CertifyRes
   const IMatX H = JX.topLeftCorner(m, m);
   const IMatX G = JX.block(0, m + 1, m, na);
   const IMatX GGt = times(G, IMatX(G.transpose()));
-  bool proven = false;
-  for (double rho = 1; rho <= 1e8 && !proven; rho *= 10) proven = positive_definite(IMatX(H + Interval(rho) * GGt));
-  if (!proven) {
+  if (!positive_on_kernel(H, GGt)) {
     r.reason = "a KKT point is enclosed, but the Hessian is not proven positive definite on the level directions";
     return;
   }
@@ -221,19 +238,10 @@ void e_local_optimum(const Program& program, const CertifyOptions& o, CertifyRes
   Eigen::MatrixXd J;
   system.eval<double>(start, F, &J);
   // Omega: the least-squares balance of the cluster's gradients, normalised by the lambda equation.
-  const Eigen::MatrixXd C = J.block(0, nx + 1, nx, k);
-  const Eigen::VectorXd d = J.block(nx, nx + 1, 1, k).transpose();
-  Eigen::MatrixXd B = Eigen::MatrixXd::Zero(k + 1, k + 1);
-  B.topLeftCorner(k, k) = C.transpose() * C;
-  B.block(0, k, k, 1) = d;
-  B.block(k, 0, 1, k) = d.transpose();
-  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(k + 1);
-  rhs(k) = -1;
-  start.tail(k) = B.fullPivLu().solve(rhs).head(k);
+  start.tail(k) = balanced_multipliers(J.block(0, nx + 1, nx, k), J.block(nx, nx + 1, 1, k).transpose(), -1);
   r.unknowns = r.equations = system.size();
   const std::string cluster = "an eigenvalue of multiplicity " + std::to_string(m);
-  VecX start_real(system.size());
-  for (int q = 0; q < system.size(); ++q) start_real(q) = Real(start(q));
+  const VecX start_real = to_real(start);
   const NewtonOutcome polished = newton(system, start_real, newton_tolerance(o));
   const Real moved = (polished.x.head(nx) - start_real.head(nx)).cwiseAbs().maxCoeff();
   if (const std::string failure = newton_failure(polished, moved, 1e-4, o); !failure.empty()) {
@@ -260,9 +268,7 @@ void e_local_optimum(const Program& program, const CertifyOptions& o, CertifyRes
   const IMatX H = -JX.topLeftCorner(nx + 1, nx + 1);
   const IMatX Jc = JX.block(nx + 1, 0, k, nx + 1);
   const IMatX JtJ = times(IMatX(Jc.transpose()), Jc);
-  bool proven = false;
-  for (double rho = 1; rho <= 1e8 && !proven; rho *= 10) proven = positive_definite(IMatX(H + Interval(rho) * JtJ));
-  if (!proven) {
+  if (!positive_on_kernel(H, JtJ)) {
     r.reason = "a KKT point is enclosed (" + cluster +
                "), but the Hessian is not proven positive definite on the directions that keep the cluster";
     return;

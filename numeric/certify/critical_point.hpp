@@ -18,23 +18,30 @@ using Square9 = Eigen::Matrix<T, 9, 9>;
 template <class T>
 using Column9 = Eigen::Matrix<T, 9, 1>;
 
-// Inverse and log-determinant of a symmetric positive definite matrix without pivoting (no
-// comparisons, so it runs in interval arithmetic; M is far from singular at a certified point).
-template <class T>
-Square9<T> spd_inverse(const Square9<T>& M, T& log_det) {
-  Eigen::Matrix<T, 9, 18> a;
-  a.template leftCols<9>() = M;
-  a.template rightCols<9>() = Square9<T>::Identity();
+// Inverse (and, when asked, log-determinant) of a symmetric positive definite matrix of any size,
+// by Gauss-Jordan without pivoting: no comparisons, so it runs in interval arithmetic (the matrix
+// is far from singular at a certified point).
+template <class T, int N>
+Eigen::Matrix<T, N, N> spd_inverse(const Eigen::Matrix<T, N, N>& M, T* log_det = nullptr) {
+  const Eigen::Index n = M.rows();
+  Eigen::Matrix<T, N, N == Eigen::Dynamic ? Eigen::Dynamic : 2 * N> a(n, 2 * n);
+  a.leftCols(n) = M;
+  a.rightCols(n) = Eigen::Matrix<T, N, N>::Identity(n, n);
   using std::log;
-  log_det = T(0);
-  for (int k = 0; k < 9; ++k) {
+  if (log_det) *log_det = T(0);
+  for (Eigen::Index k = 0; k < n; ++k) {
     const T p = a(k, k);
-    log_det += log(p);
+    if (log_det) *log_det += log(p);
     a.row(k) /= p;
-    for (int r = 0; r < 9; ++r)
+    for (Eigen::Index r = 0; r < n; ++r)
       if (r != k) a.row(r) -= a(r, k) * a.row(k);
   }
-  return a.template rightCols<9>();
+  return a.rightCols(n);
+}
+
+template <class T>
+Square9<T> spd_inverse(const Square9<T>& M, T& log_det) {
+  return spd_inverse(M, &log_det);
 }
 
 // M = sum h h^T at full chart coordinates z, with the rows' jets when asked for.

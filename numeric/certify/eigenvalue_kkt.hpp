@@ -17,22 +17,6 @@ namespace scalcal::certify_detail {
 template <class T>
 using Dense = Eigen::Matrix<T, -1, -1>;
 
-// Inverse of a symmetric positive definite matrix by Gauss-Jordan without pivoting (no comparisons).
-template <class T>
-Dense<T> spd_inverse_dense(const Dense<T>& A) {
-  const Eigen::Index n = A.rows();
-  Dense<T> a(n, 2 * n);
-  a.leftCols(n) = A;
-  a.rightCols(n) = Dense<T>::Identity(n, n);
-  for (Eigen::Index k = 0; k < n; ++k) {
-    const T p = a(k, k);
-    a.row(k) /= p;
-    for (Eigen::Index r = 0; r < n; ++r)
-      if (r != k) a.row(r) -= a(r, k) * a.row(k);
-  }
-  return a.rightCols(n);
-}
-
 // sum_ij A_ij B_ij.
 template <class T>
 T entrywise_inner(const Dense<T>& A, const Dense<T>& B) {
@@ -72,7 +56,7 @@ struct EigenvalueKktSystem {
     for (int i = 0; i < 9; ++i) shifted(i, i) -= lambda;
     const Dense<T> MV = times(shifted, V);
     const Dense<T> A22 = times(Dense<T>(V.transpose()), MV);
-    const Dense<T> A22inv = spd_inverse_dense(A22);
+    const Dense<T> A22inv = spd_inverse(A22);
     const Dense<T> S = times(A22inv, Dense<T>(times(Dense<T>(MV.transpose()), U)));
     const Dense<T> W = U - times(V, S);
     const Dense<T> R = times(Dense<T>(W.transpose()), Dense<T>(times(shifted, W)));
