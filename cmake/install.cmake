@@ -26,12 +26,15 @@ write_basic_package_version_file(${PROJECT_BINARY_DIR}/scalcalConfigVersion.cmak
 install(FILES ${PROJECT_BINARY_DIR}/scalcalConfig.cmake ${PROJECT_BINARY_DIR}/scalcalConfigVersion.cmake
         DESTINATION ${SCALCAL_CMAKE_DIR})
 
-# pkg-config for the numeric part: static archives, so every library they need is listed, dependents first.
+# pkg-config for the numeric part: static archives, so every library they need is listed, dependents
+# first (scalcal_numeric links its parts dependencies first).
 set(SCALCAL_PC_LIBS "")
-foreach(part certify polish region synthesis calibration program io criteria model)
-  get_target_property(type scalcal_${part} TYPE)
+get_target_property(SCALCAL_NUMERIC_PARTS scalcal_numeric INTERFACE_LINK_LIBRARIES)
+list(REVERSE SCALCAL_NUMERIC_PARTS)
+foreach(part ${SCALCAL_NUMERIC_PARTS})
+  get_target_property(type ${part} TYPE)
   if(type STREQUAL "STATIC_LIBRARY")
-    string(APPEND SCALCAL_PC_LIBS " -lscalcal_${part}")
+    string(APPEND SCALCAL_PC_LIBS " -l${part}")
   endif()
 endforeach()
 configure_file(${CMAKE_CURRENT_LIST_DIR}/scalcal-numeric.pc.in ${PROJECT_BINARY_DIR}/scalcal-numeric.pc @ONLY)

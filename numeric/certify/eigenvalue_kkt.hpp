@@ -17,15 +17,6 @@ namespace scalcal::certify_detail {
 template <class T>
 using Dense = Eigen::Matrix<T, -1, -1>;
 
-// sum_ij A_ij B_ij.
-template <class T>
-T entrywise_inner(const Dense<T>& A, const Dense<T>& B) {
-  T acc(0);
-  for (Eigen::Index i = 0; i < A.rows(); ++i)
-    for (Eigen::Index j = 0; j < A.cols(); ++j) acc += A(i, j) * B(i, j);
-  return acc;
-}
-
 struct EigenvalueKktSystem {
   const SphereChart* chart;
   FreeCoordinates coordinates;  // the chart coordinates; lambda and Omega follow them
@@ -39,7 +30,7 @@ struct EigenvalueKktSystem {
   // The pieces every certificate check needs, at one point (or over one box).
   template <class T>
   struct Parts {
-    Dense<T> omega, A22, Rd;  // Omega (m x m), the complementary block, the Schur complement R
+    Dense<T> omega, A22;  // Omega (m x m) and the complementary block
   };
 
   template <class T>
@@ -67,7 +58,7 @@ struct EigenvalueKktSystem {
         omega(i, j) = unknowns(q);
         if (j != i) omega(j, i) = unknowns(q);  // x = x on an mpfi_float resets its precision, i.e. to NaN
       }
-    if (parts) *parts = Parts<T>{omega, A22, R};
+    if (parts) *parts = Parts<T>{omega, A22};
     // <Omega, B> as a function of the unknowns' upper triangle: B_ii, and B_ij + B_ji off the diagonal.
     auto weight = [](const Dense<T>& B, int i, int j) { return i == j ? B(i, i) : T(B(i, j) + B(j, i)); };
     auto pairing = [&](const Dense<T>& B) { return trace_of_product(omega, B); };

@@ -35,6 +35,15 @@ typename A::Scalar trace_of_product(const Eigen::MatrixBase<A>& a, const Eigen::
   return acc;
 }
 
+// sum_ij A_ij B_ij = tr(A^T B) for A, B of equal shape.
+template <class A, class B>
+typename A::Scalar entrywise_inner(const Eigen::MatrixBase<A>& a, const Eigen::MatrixBase<B>& b) {
+  typename A::Scalar acc(0);
+  for (Eigen::Index i = 0; i < a.rows(); ++i)
+    for (Eigen::Index j = 0; j < a.cols(); ++j) acc += a(i, j) * b(i, j);
+  return acc;
+}
+
 // a b^T + b a^T.
 template <class A, class B>
 auto symmetric_outer(const Eigen::MatrixBase<A>& a, const Eigen::MatrixBase<B>& b) {
