@@ -10,7 +10,7 @@ seconds="${1:-60}"
 bash scripts/install-deps.sh
 flags="-O1 -g1 -fno-omit-frame-pointer -fsanitize=address,undefined -fno-sanitize-recover=all -fsanitize=fuzzer-no-link"
 cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=None -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_CXX_FLAGS="$flags" \
-  -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" -DSCALCAL_FUZZ=ON -DSCALCAL_MPI=OFF >/dev/null
+  -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" -DSCALCAL_FUZZ=ON -DSCALCAL_MPI=OFF -DSCALCAL_PYTHON=OFF >/dev/null
 targets=(fuzz_program_csv fuzz_measurements_csv fuzz_catalogue_name fuzz_region_spec)
 cmake --build build-fuzz -j"$(nproc)" $(printf -- '--target %s ' "${targets[@]}")
 

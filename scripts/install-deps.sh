@@ -6,7 +6,7 @@ packages=(cmake g++ make pkg-config libeigen3-dev libboost-dev libboost-iostream
   libgnuplot-iostream-dev gnuplot-nox libgtest-dev libbenchmark-dev libmpfr-dev libmpfi-dev libgmp-dev
   libcli11-dev nlohmann-json3-dev libfmt-dev libopenmpi-dev openmpi-bin
   clang libclang-rt-dev
-  python3-numpy python3-scipy)
+  python3-numpy python3-scipy python3-dev python3-pytest pybind11-dev python3-pybind11)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

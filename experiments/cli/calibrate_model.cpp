@@ -27,17 +27,19 @@ std::string not_identifiable_text(ModelKind model) {
       "the rotation part of the misalignment (three angles) leaves every modulus unchanged and is not estimated";
   const std::string_view name = model_name(model);
   if (name == "bias3")
-    return rotation + "; scale factors are taken as exactly 1 and the axes as orthogonal: their errors go into the "
-                      "residual";
+    return rotation +
+           "; scale factors are taken as exactly 1 and the axes as orthogonal: their errors go into the "
+           "residual";
   if (name == "axis6") return rotation + "; the axes are taken as orthogonal: non-orthogonality goes into the residual";
   if (name == "cubic12")
-    return rotation + "; at one magnitude the cubic term is identified as c_i |I| only (it cannot be told from a "
-                      "scale factor that depends on the magnitude), and never from positions along the axes alone, "
-                      "where x^3 = x makes it the bias";
+    return rotation +
+           "; at one magnitude the cubic term is identified as c_i |I| only (it cannot be told from a "
+           "scale factor that depends on the magnitude), and never from positions along the axes alone, "
+           "where x^3 = x makes it the bias";
   return rotation;
 }
 
-int calibrate_with_model(const ModelCalibrationRequest& q, const std::vector<PositionSamples>& data) {
+Report model_calibration_report(const ModelCalibrationRequest& q, const std::vector<PositionSamples>& data) {
   const std::string name(model_name(q.model));
   const int P = model_parameters(q.model);
   try {
@@ -90,9 +92,14 @@ int calibrate_with_model(const ModelCalibrationRequest& q, const std::vector<Pos
     t << " " << criterion_name(c) << " " << std::setprecision(4) << e;
     eff_text += t.str();
   }
-  Json program{{"positions", ev.positions}, {"rank", ev.rank}, {"condition", ev.condition},
-               {"D", ev.D},                 {"A", ev.A},       {"E", ev.E},
-               {"S", ev.S},                 {"efficiency", eff}};
+  Json program{{"positions", ev.positions},
+               {"rank", ev.rank},
+               {"condition", ev.condition},
+               {"D", ev.D},
+               {"A", ev.A},
+               {"E", ev.E},
+               {"S", ev.S},
+               {"efficiency", eff}};
   for (int g = 0; g < 4; ++g)
     if (ev.has_group(static_cast<ParameterGroup>(g)))
       program["theta_" + std::string(kGroupNames[static_cast<std::size_t>(g)])] = ev.theta[static_cast<std::size_t>(g)];
@@ -123,29 +130,26 @@ int calibrate_with_model(const ModelCalibrationRequest& q, const std::vector<Pos
     j["matrix"] = rows;
   }
   if (!q.out.empty()) write_output_file(q.out, [&](std::ostream& f) { write_json(f, j); });
-  if (q.json) {
-    print_json(j);
-    return r.converged ? 0 : 1;
-  }
-  std::cout << "scalar calibration of " << q.file << ", model " << name << " (" << P << " parameters, modulus "
-            << (q.modulus == Modulus::norm ? "norm" : "projection") << ", |I| = " << q.magnitude << ")\n"
-            << r.positions << " positions, " << r.samples << " samples, " << r.iterations << " iterations"
-            << (r.converged ? "" : " (not converged)") << "\n"
-            << std::setprecision(6);
+  std::ostringstream text;
+  text << "scalar calibration of " << q.file << ", model " << name << " (" << P << " parameters, modulus "
+       << (q.modulus == Modulus::norm ? "norm" : "projection") << ", |I| = " << q.magnitude << ")\n"
+       << r.positions << " positions, " << r.samples << " samples, " << r.iterations << " iterations"
+       << (r.converged ? "" : " (not converged)") << "\n"
+       << std::setprecision(6);
   for (int k = 0; k < P; ++k) {
-    std::cout << "  " << std::left << std::setw(11) << ev.parameter_names[static_cast<std::size_t>(k)] << std::right
-              << std::setw(14) << r.X(k);
-    if (have_std) std::cout << "  +- " << r.X_std(k);
-    std::cout << "\n";
+    text << "  " << std::left << std::setw(11) << ev.parameter_names[static_cast<std::size_t>(k)] << std::right
+         << std::setw(14) << r.X(k);
+    if (have_std) text << "  +- " << r.X_std(k);
+    text << "\n";
   }
-  std::cout << "(bias over |I|, scale deviation, gamma in rad, c |I|; offset in file units " << offset(0) << " "
-            << offset(1) << " " << offset(2) << ")\n"
-            << "not identified: " << not_identifiable_text(q.model) << "\n"
-            << "residual rms " << r.residual_rms << ", noise " << (have_std ? std::to_string(r.noise) : "n/a") << "\n"
-            << "program measured under " << name << ": D " << ev.D << ", A " << ev.A << ", E " << ev.E << ", S "
-            << ev.S << ", condition " << ev.condition << "; efficiency (limit / value, D as its " << P
-            << "th root):" << eff_text << "\n";
-  return r.converged ? 0 : 1;
+  text << "(bias over |I|, scale deviation, gamma in rad, c |I|; offset in file units " << offset(0) << " " << offset(1)
+       << " " << offset(2) << ")\n"
+       << "not identified: " << not_identifiable_text(q.model) << "\n"
+       << "residual rms " << r.residual_rms << ", noise " << (have_std ? std::to_string(r.noise) : "n/a") << "\n"
+       << "program measured under " << name << ": D " << ev.D << ", A " << ev.A << ", E " << ev.E << ", S " << ev.S
+       << ", condition " << ev.condition << "; efficiency (limit / value, D as its " << P << "th root):" << eff_text
+       << "\n";
+  return Report{j, text.str(), r.converged ? 0 : 1};
 }
 
 }  // namespace scalcal::cli

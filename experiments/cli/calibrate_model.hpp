@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "experiments/cli/report.hpp"
 #include "numeric/calibration/scalar_calibration.hpp"
 #include "numeric/model/registry.hpp"
 
@@ -16,12 +17,12 @@ struct ModelCalibrationRequest {
   ModelKind model = ModelKind::paper9;
   Modulus modulus = Modulus::norm;
   double magnitude = 1;
-  bool weight_by_samples = true, json = false;
+  bool weight_by_samples = true;
 };
 
-// Exit status: 0, or 1 when the iteration did not converge. Throws InputError for a program that
-// cannot identify the model's parameters or data far from unit gain.
-int calibrate_with_model(const ModelCalibrationRequest& request, const std::vector<PositionSamples>& data);
+// Status 0, or 1 when the iteration did not converge. Throws InputError for a program that cannot
+// identify the model's parameters or data far from unit gain.
+Report model_calibration_report(const ModelCalibrationRequest& request, const std::vector<PositionSamples>& data);
 
 // What scalar calibration at one magnitude leaves out for the model, in one sentence.
 std::string not_identifiable_text(ModelKind model);

@@ -1,0 +1,217 @@
+// The Python module `scalcal`: evaluate, optimize, limits and calibrate call the same functions as
+// the CLI's subcommands (experiments/cli/*_report.hpp) and return the CLI's JSON object as a dict,
+// with arrays of numbers as NumPy arrays. Bad input raises scalcal.InputError or scalcal.UsageError
+// (both ValueError) with the CLI's message; the GIL is released while scalcal computes.
+#include <charconv>
+#include <cmath>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include "experiments/cli/calibration_report.hpp"
+#include "experiments/cli/command.hpp"
+#include "experiments/cli/evaluate_report.hpp"
+#include "experiments/cli/limits_report.hpp"
+#include "experiments/cli/optimize_report.hpp"
+#include "numeric/io/input_error.hpp"
+#include "numeric/io/measurements_csv.hpp"
+#include "numeric/program/catalogue.hpp"
+#include "python/from_numpy.hpp"
+#include "python/to_python.hpp"
+
+namespace py = pybind11;
+
+namespace scalcal::python {
+namespace {
+
+// A choice argument, refused with the accepted values (the CLI's check on its --options).
+std::string choice(const std::string& argument, const std::string& value, const std::vector<std::string>& choices) {
+  for (const auto& c : choices)
+    if (value == c) return value;
+  std::string list;
+  for (const auto& c : choices) list += (list.empty() ? "" : ", ") + c;
+  throw cli::UsageError(argument + ": '" + value + "' is not one of " + list);
+}
+
+long long in_range(const std::string& argument, long long value, long long lo, long long hi) {
+  if (value < lo || value > hi)
+    throw cli::UsageError(argument + ": " + std::to_string(value) + " is not in " + std::to_string(lo) + ".." +
+                          std::to_string(hi));
+  return value;
+}
+
+ModelKind model_of(const std::string& name) {
+  std::vector<std::string> names;
+  for (int i = 0; i < kModelCount; ++i) names.emplace_back(model_name(ModelKind(i)));
+  return *parse_model(choice("model", name, names));
+}
+
+CriterionKind criterion_of(const std::string& name) {
+  return *parse_criterion(choice("criterion", name, {"D", "A", "E", "S"}));
+}
+
+// region: None, one spec, or a sequence of specs (their union), as repeated --region options.
+std::vector<std::string> regions_of(const py::object& region) {
+  if (region.is_none()) return {};
+  if (py::isinstance<py::str>(region)) return {region.cast<std::string>()};
+  return region.cast<std::vector<std::string>>();
+}
+
+// |I| as the CLI reads it: "auto", or a number in its shortest round-trip text.
+std::string magnitude_of(const py::object& magnitude) {
+  if (py::isinstance<py::str>(magnitude)) return magnitude.cast<std::string>();
+  char buffer[32];
+  const auto end = std::to_chars(buffer, buffer + sizeof buffer, magnitude.cast<double>()).ptr;
+  return std::string(buffer, end);
+}
+
+template <class F>
+py::object computed(F&& report) {
+  cli::Report r;
+  {
+    py::gil_scoped_release free;
+    r = report();
+  }
+  return to_python(r.json);
+}
+
+py::object evaluate(const py::object& positions, const std::string& model, const py::object& region,
+                    const std::string& name) {
+  cli::EvaluateRequest q;
+  q.name = py::isinstance<py::str>(positions) ? positions.cast<std::string>() : name;
+  q.program = program_of(positions, name);
+  q.model = model_of(model);
+  q.regions = regions_of(region);
+  return computed([&] { return cli::evaluate_report(q); });
+}
+
+py::object optimize(long long n, const std::string& criterion, const std::string& model, const py::object& region,
+                    long long starts, long long seed, long long threads, long long digits, const std::string& local) {
+  cli::OptimizeRequest q;
+  q.synthesis.positions = static_cast<int>(in_range("n", n, 3, 1000));
+  q.synthesis.criterion = criterion_of(criterion);
+  q.synthesis.model = model_of(model);
+  q.synthesis.starts = static_cast<int>(in_range("starts", starts, 0, 1000000));
+  q.synthesis.seed = static_cast<std::uint64_t>(in_range("seed", seed, 0, 1LL << 62));
+  q.synthesis.threads = static_cast<int>(in_range("threads", threads, 0, 256));
+  q.synthesis.local = choice("local", local, {"auto", "ipopt"}) == "ipopt" ? LocalSolver::Ipopt : LocalSolver::Automatic;
+  q.digits = static_cast<int>(in_range("digits", digits, 0, 1000));
+  q.regions = regions_of(region);
+  return computed([&] { return cli::optimize_report(q); });
+}
+
+py::object limits(const std::string& model, const py::object& region) {
+  const ModelKind m = model_of(model);
+  const std::vector<std::string> regions = regions_of(region);
+  return computed([&] { return cli::limits_report(m, regions); });
+}
+
+struct IntervalArguments {
+  double still, window, threshold_factor, min_interval;
+};
+
+py::object calibrate(const py::object& samples, const py::object& magnitude, const py::object& position,
+                     const py::object& nominal, const py::object& time, const std::string& modulus,
+                     const std::string& weights, bool keep_outliers, long long suggest, const std::string& criterion,
+                     const py::object& region, const std::string& model, const IntervalArguments& iv) {
+  cli::CalibrationRequest q;
+  q.file = "samples";
+  q.magnitude = magnitude_of(magnitude);
+  q.modulus = choice("modulus", modulus, {"norm", "projection"}) == "norm" ? Modulus::norm : Modulus::projection;
+  q.weights = choice("weights", weights, {"auto", "samples", "positions"});
+  q.keep_outliers = keep_outliers;
+  q.suggest = static_cast<int>(in_range("suggest", suggest, 0, 100));
+  q.criterion = criterion_of(criterion);
+  q.regions = regions_of(region);
+  q.model = model_of(model);
+  for (const auto& [argument, value] : {std::pair{"still", iv.still}, std::pair{"window", iv.window},
+                                        std::pair{"threshold_factor", iv.threshold_factor},
+                                        std::pair{"min_interval", iv.min_interval}})
+    if (!(value > 0) || !std::isfinite(value))
+      throw cli::UsageError(std::string(argument) + ": must be a positive number, got " + std::to_string(value));
+  q.intervals = {iv.still, iv.window, iv.threshold_factor, iv.min_interval};
+  cli::check_calibration_request(q);
+
+  std::vector<Column> columns = columns_of("samples", samples, {"ix", "iy", "iz"});
+  const py::ssize_t rows = columns.front().second.shape(0);
+  cli::CalibrationInput input;
+  if (!time.is_none()) {
+    if (!position.is_none() || !nominal.is_none())
+      throw cli::UsageError("time makes samples a raw log, whose positions are its static intervals: give no "
+                            "position or nominal with it");
+    columns.insert(columns.begin(), column_of("time", time, "t", rows));
+    input = cli::calibration_input(raw_log_from_table(table_of(q.file, columns, true)), q);
+  } else {
+    if (!position.is_none()) columns.push_back(column_of("position", position, "position", rows));
+    if (!nominal.is_none())
+      for (auto& c : columns_of("nominal", nominal, {"x", "y", "z"})) columns.push_back(std::move(c));
+    input.data = measurements_from_table(table_of(q.file, columns, false), q.modulus == Modulus::projection);
+  }
+  return computed([&] { return cli::calibrate_report(q, std::move(input)); });
+}
+
+}  // namespace
+}  // namespace scalcal::python
+
+PYBIND11_MODULE(scalcal, m) {
+  using namespace scalcal;
+  using namespace scalcal::python;
+  m.doc() = "scalcal: calibration programs for the scalar calibration of vector meters";
+  m.attr("__version__") = SCALCAL_VERSION;
+  static py::exception<InputError> input_error(m, "InputError", PyExc_ValueError);
+  static py::exception<cli::UsageError> usage_error(m, "UsageError", PyExc_ValueError);
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const InputError& e) {
+      input_error(e.what());
+    } catch (const cli::UsageError& e) {
+      usage_error(e.what());
+    }
+  });
+
+  m.def(
+      "program", [](const std::string& name) { return to_python(cli::program_json(resolve_program(name))); },
+      py::arg("name"), "The (N, 3) positions of a catalogue program (see `scalcal catalogue`) or a CSV file.");
+
+  m.def("evaluate", &evaluate, py::arg("positions"), py::kw_only(), py::arg("model") = "paper9",
+        py::arg("region") = py::none(), py::arg("name") = "positions",
+        "The criteria D, A, E, S, the RMS errors theta, the program and K of a program: an (N, 3) array of "
+        "directions, a catalogue name or a CSV file (`scalcal evaluate --json`). With region (a spec or a list "
+        "of specs), also each criterion's efficiency against the region's limit.");
+
+  m.def("optimize", &optimize, py::arg("n"), py::arg("criterion") = "D", py::kw_only(), py::arg("model") = "paper9",
+        py::arg("region") = py::none(), py::arg("starts") = 0, py::arg("seed") = 1, py::arg("threads") = 0,
+        py::arg("digits") = 0, py::arg("local") = "auto",
+        "The optimal program of n positions for a criterion (`scalcal optimize --json`); starts 0 is the "
+        "criterion's default, threads 0 all cores, digits > 0 polishes the optimum in MPFR.");
+
+  m.def("limits", &limits, py::kw_only(), py::arg("model") = "paper9", py::arg("region") = py::none(),
+        "The N -> infinity limits of the normalised criteria (`scalcal limits --json`): exact on the sphere, "
+        "certified bounds on a region.");
+
+  m.def(
+      "calibrate",
+      [](const py::object& samples, const py::object& magnitude, const py::object& position,
+         const py::object& nominal, const py::object& time, const std::string& modulus, const std::string& weights,
+         bool keep_outliers, long long suggest, const std::string& criterion, const py::object& region,
+         const std::string& model, double still, double window, double threshold_factor, double min_interval) {
+        return calibrate(samples, magnitude, position, nominal, time, modulus, weights, keep_outliers, suggest,
+                         criterion, region, model, {still, window, threshold_factor, min_interval});
+      },
+      py::arg("samples"), py::arg("magnitude"), py::kw_only(), py::arg("position") = py::none(),
+      py::arg("nominal") = py::none(), py::arg("time") = py::none(), py::arg("modulus") = "norm",
+      py::arg("weights") = "auto", py::arg("keep_outliers") = false, py::arg("suggest") = 3,
+      py::arg("criterion") = "D", py::arg("region") = py::none(), py::arg("model") = "paper9",
+      py::arg("still") = StaticIntervalOptions{}.still_seconds, py::arg("window") = StaticIntervalOptions{}.window_seconds,
+      py::arg("threshold_factor") = StaticIntervalOptions{}.threshold_factor,
+      py::arg("min_interval") = StaticIntervalOptions{}.min_seconds,
+      "Scalar calibration (`scalcal calibrate --json`). samples: (M, 3) raw outputs; position: (M,) integer "
+      "labels grouping them (none: one position per row); nominal: (M, 3) nominal directions (the projection "
+      "modulus needs them); time: (M,) seconds, which makes samples a raw log whose static intervals are the "
+      "positions. magnitude: |I| in the samples' units, or 'auto'.");
+}

@@ -1,0 +1,185 @@
+# The Python module against the CLI: every binding is called on the same inputs as `scalcal ... --json`
+# and must return the same object (NumPy arrays compared as lists, bit for bit: both run the same C++).
+# The run time (`seconds`) is the only key left out. Errors must carry the CLI's message.
+# Run by ctest (python.bindings) with PYTHONPATH at the built module and SCALCAL_CLI at the executable.
+import json
+import math
+import os
+import subprocess
+
+import numpy as np
+import pytest
+
+import scalcal
+
+CLI = os.environ["SCALCAL_CLI"]
+DATA = os.path.join(os.environ["SCALCAL_SOURCE_DIR"], "data")
+
+
+def cli(*args, expect=0):
+    r = subprocess.run([CLI, *args], capture_output=True, text=True)
+    assert r.returncode == expect, r.stderr
+    return r
+
+
+def cli_json(*args, expect=0):
+    return json.loads(cli(*args, "--json", expect=expect).stdout)
+
+
+def plain(value):
+    """The module's result as the JSON reader gives the CLI's: arrays as lists, NaN as None."""
+    if isinstance(value, np.ndarray):
+        return plain(value.tolist())
+    if isinstance(value, dict):
+        return {k: plain(v) for k, v in value.items()}
+    if isinstance(value, list):
+        return [plain(v) for v in value]
+    if isinstance(value, float) and not math.isfinite(value):
+        return None
+    return value
+
+
+def same(py_result, cli_result, ignore=("seconds",)):
+    got = {k: v for k, v in plain(py_result).items() if k not in ignore}
+    want = {k: v for k, v in cli_result.items() if k not in ignore}
+    assert list(got) == list(want)  # the same keys in the same order
+    for k in want:
+        assert got[k] == want[k], k
+
+
+def write_program(path, positions):
+    with open(path, "w") as f:
+        f.write("x,y,z\n")
+        for p in positions:
+            f.write(",".join(repr(float(c)) for c in p) + "\n")
+
+
+def random_program(n, seed):
+    v = np.random.default_rng(seed).normal(size=(n, 3))
+    return v / np.linalg.norm(v, axis=1, keepdims=True)
+
+
+def test_evaluate_catalogue_name():
+    r = scalcal.evaluate("octahedral-1-1-0")
+    same(r, cli_json("evaluate", "octahedral-1-1-0"))
+    assert isinstance(r["K"], np.ndarray) and r["K"].shape == (9, 9)
+    assert r["program"].shape == (18, 3)
+
+
+def test_evaluate_array_equals_file(tmp_path):
+    positions = random_program(14, seed=5)
+    path = tmp_path / "p.csv"
+    write_program(path, positions)
+    same(scalcal.evaluate(positions), cli_json("evaluate", str(path)))
+    same(scalcal.evaluate(positions, model="cubic12"), cli_json("evaluate", str(path), "--model", "cubic12"))
+
+
+def test_evaluate_on_a_region(tmp_path):
+    # Within 60 degrees of +z: the efficiency against the cap's limits is the CLI's.
+    positions = random_program(16, seed=2)
+    positions[:, 2] = np.abs(positions[:, 2]) + 1.0
+    positions /= np.linalg.norm(positions, axis=1, keepdims=True)
+    path = tmp_path / "cap.csv"
+    write_program(path, positions)
+    r = scalcal.evaluate(positions, region="cap:60")
+    same(r, cli_json("evaluate", str(path), "--region", "cap:60"))
+    assert set(r["efficiency"]) == {"D", "A", "E", "S"}
+
+
+def test_optimize():
+    args = dict(starts=6, seed=3, threads=1)
+    r = scalcal.optimize(12, "A", **args)
+    same(r, cli_json("optimize", "--positions", "12", "--criterion", "A", "--starts", "6", "--seed", "3",
+                     "--threads", "1"))
+    assert r["program"].shape == (12, 3)
+    same(scalcal.optimize(8, "D", model="axis6", **args),
+         cli_json("optimize", "--positions", "8", "--criterion", "D", "--model", "axis6", "--starts", "6",
+                  "--seed", "3", "--threads", "1"))
+
+
+def test_optimize_on_a_region():
+    r = scalcal.optimize(12, "D", region=["cap:45", "cap:45:0,0,-1"], starts=2, seed=1, threads=1)
+    same(r, cli_json("optimize", "--positions", "12", "--criterion", "D", "--region", "cap:45",
+                     "--region", "cap:45:0,0,-1", "--starts", "2", "--seed", "1", "--threads", "1"))
+
+
+def test_limits():
+    same(scalcal.limits(), cli_json("limits"))
+    same(scalcal.limits(model="bias3"), cli_json("limits", "--model", "bias3"))
+    assert scalcal.limits()["D"]["exact"] == "61509375/4"
+
+
+def simulated_bench(seed):
+    """A meter with a bias, scale errors and non-orthogonality on the 18-position octahedral program,
+    five noisy samples per position (position labels 1..18), in units where |I| = 9.81."""
+    rng = np.random.default_rng(seed)
+    eta = scalcal.program("octahedral-1-1-0")
+    gain = np.array([[1.01, 0.002, -0.001], [0.0, 0.995, 0.003], [0.0, 0.0, 1.004]])
+    samples, labels = [], []
+    for k, e in enumerate(eta):
+        for _ in range(5):
+            samples.append(gain @ (9.81 * e) + [0.05, -0.02, 0.03] + rng.normal(scale=0.002, size=3))
+            labels.append(k + 1)
+    return np.array(samples), np.array(labels), np.repeat(eta, 5, axis=0)
+
+
+def test_calibrate_grouped_samples(tmp_path):
+    samples, labels, nominal = simulated_bench(seed=7)
+    path = tmp_path / "bench.csv"
+    with open(path, "w") as f:
+        f.write("ix,iy,iz,position,x,y,z\n")
+        for s, p, n in zip(samples, labels, nominal):
+            f.write(",".join(repr(float(v)) for v in (*s, p, *n)) + "\n")
+    r = scalcal.calibrate(samples, 9.81, position=labels)
+    same(r, cli_json("calibrate", "--measurements", str(path), "--magnitude", "9.81"))
+    assert r["excluded_samples"] == [] and r["converged"]
+    same(scalcal.calibrate(samples, "auto", position=labels),
+         cli_json("calibrate", "--measurements", str(path), "--magnitude", "auto"))
+    same(scalcal.calibrate(samples, 9.81, position=labels, nominal=nominal, modulus="projection", suggest=1),
+         cli_json("calibrate", "--measurements", str(path), "--magnitude", "9.81", "--modulus", "projection",
+                  "--suggest", "1"))
+    same(scalcal.calibrate(samples, 9.81, position=labels, model="axis6"),
+         cli_json("calibrate", "--measurements", str(path), "--magnitude", "9.81", "--model", "axis6"))
+
+
+def test_calibrate_raw_log():
+    # The real log of the README, read by NumPy: a text log has no header, so its lines are the rows.
+    path = os.path.join(DATA, "xsens_acc.txt")
+    log = np.loadtxt(path)
+    r = scalcal.calibrate(log[:, 1:], 9.81744, time=log[:, 0])
+    same(r, cli_json("calibrate", "--measurements", path, "--magnitude", "9.81744"))
+    assert len(r["intervals"]) >= 9
+
+
+def test_errors_carry_the_cli_message(tmp_path):
+    planar = random_program(12, seed=1)
+    planar[:, 2] = 0
+    planar /= np.linalg.norm(planar, axis=1, keepdims=True)
+    path = tmp_path / "planar.csv"
+    write_program(path, planar)
+    with pytest.raises(scalcal.InputError) as e:
+        scalcal.evaluate(planar)
+    message = cli("evaluate", str(path), expect=2).stderr.strip()
+    assert message == f"scalcal evaluate: {path}: " + str(e.value).split(": ", 1)[1]
+
+    bad = random_program(10, seed=1)
+    bad[1, 1] = np.nan
+    with pytest.raises(scalcal.InputError, match=r"^positions:2: value in column y is not finite"):
+        scalcal.evaluate(bad)
+    with pytest.raises(ValueError, match=r"shape \(M, 3\), got \(10, 2\)"):
+        scalcal.evaluate(bad[:, :2])
+    with pytest.raises(scalcal.UsageError, match="criterion: 'Q' is not one of D, A, E, S"):
+        scalcal.optimize(12, "Q")
+    with pytest.raises(scalcal.UsageError) as e:
+        scalcal.optimize(5, "D")
+    assert "--positions 5 is below the 9 parameters" in str(e.value)
+    assert "--positions 5 is below the 9 parameters" in cli("optimize", "--positions", "5", expect=2).stderr
+    with pytest.raises(scalcal.InputError) as e:
+        scalcal.limits(region="cap:500")
+    assert str(e.value) in cli("limits", "--region", "cap:500", expect=2).stderr
+
+
+def test_same_seed_same_program():
+    a = scalcal.optimize(10, "E", starts=3, seed=11, threads=2)
+    b = scalcal.optimize(10, "E", starts=3, seed=11, threads=1)
+    assert np.array_equal(a["program"], b["program"]) and a["value"] == b["value"]
