@@ -1,10 +1,13 @@
 #include "plots/figure.hpp"
 
 #include <Eigen/Core>  // before gnuplot-iostream, which then enables its Eigen support
+#include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <iterator>
 #include <sstream>
 #include <stdexcept>
+#include <vector>
 
 #include "gnuplot-iostream.h"
 
@@ -15,6 +18,9 @@ std::string gp_quote(const std::string& s) {
   for (char c : s) q += (c == '\'') ? std::string("''") : std::string(1, c);
   return q + "'";
 }
+
+std::string sub(const std::string& s) { return "_{/*1.1 " + s + "}"; }
+std::string sup(const std::string& s) { return "^{/*1.1 " + s + "}"; }
 
 namespace {
 
@@ -37,30 +43,82 @@ bool non_empty(const std::filesystem::path& p) {
 
 }  // namespace
 
-RenderedFigure render(const std::filesystem::path& dir, const FigureSpec& spec) {
-  namespace fs = std::filesystem;
-  RenderedFigure out{dir / (spec.name + ".gp"), dir / (spec.name + ".png"), dir / (spec.name + ".svg")};
+namespace {
+
+// "%g" with up to 6 significant digits, as gnuplot reads numbers.
+std::string num(double x) {
+  char s[32];
+  std::snprintf(s, sizeof s, "%.6g", x);
+  return s;
+}
+
+long pixels(double cm, double per_inch) { return std::lround(cm / 2.54 * per_inch); }
+
+std::string width_name(double cm) {
+  if (cm <= kColumnWidthCm) return "one journal column";
+  if (cm >= kPageWidthCm) return "two journal columns";
+  return "between one and two journal columns";
+}
+
+// One output format: the terminal line and the file extension. The three terminals draw the same
+// figure at the print size: pdfcairo measures in points (its lines are 0.5 pt per lw), pngcairo and
+// svg in pixels, so their sizes, fonts and line widths are the PDF's scaled to their resolution.
+// Cairo (pango) renders a font of nominal size F at F * 96/72 points: pdfcairo takes fontscale 0.75
+// (its default of 0.5 would halve the text), pngcairo a nominal size of pt * ppi / 96.
+struct Format {
+  const char* extension;
+  std::string terminal;
+};
+
+std::vector<Format> formats(const FigureSpec& spec) {
+  const double png = kPngPixelsPerInch, svg = kSvgPixelsPerInch;
+  return {
+      {"pdf", "pdfcairo enhanced size " + num(spec.width_cm) + "cm," + num(spec.height_cm) + "cm font 'Sans," +
+                  num(spec.font_pt) + "' fontscale 0.75 background rgb 'white'"},
+      {"png", "pngcairo enhanced size " + std::to_string(pixels(spec.width_cm, png)) + "," +
+                  std::to_string(pixels(spec.height_cm, png)) + " font 'Sans," + num(spec.font_pt * png / 96) +
+                  "' linewidth " + num(0.5 * png / 72) + " pointscale " + num(png / 72)},
+      {"svg", "svg enhanced size " + std::to_string(pixels(spec.width_cm, svg)) + "," +
+                  std::to_string(pixels(spec.height_cm, svg)) + " font 'Sans," + num(spec.font_pt * svg / 72) +
+                  "' linewidth " + num(0.5 * svg / 72) + " background rgb 'white'"},
+  };
+}
+
+}  // namespace
+
+std::string figure_script(const FigureSpec& spec) {
   std::ostringstream script;
   script << "# " << spec.name << ": " << spec.comment << "\n"
+         << "# intended print width: " << num(10 * spec.width_cm) << " mm (" << width_name(spec.width_cm)
+         << "), height " << num(10 * spec.height_cm) << " mm; text " << num(spec.font_pt)
+         << " pt there, indices and exponents " << num(spec.font_pt * kIndexScale) << " pt\n"
+         << "# " << spec.name << ".pdf is that size; " << spec.name << ".png the same drawing at "
+         << num(kPngPixelsPerInch) << " pixels per inch, " << spec.name << ".svg at " << num(kSvgPixelsPerInch)
+         << " (CSS pixels)\n"
          << "# Written by `scalcal reproduce`; re-make the figure with: cd <this folder> && gnuplot " << spec.name
          << ".gp\n";
-  const struct {
-    const char* terminal;
-    const char* extension;
-  } formats[] = {{"pngcairo enhanced", "png"}, {"svg enhanced", "svg"}};
-  for (const auto& f : formats) {
-    script << "\n# ---- " << f.extension << " ----\nreset\nset terminal " << f.terminal << " size " << spec.width
-           << "," << spec.height << " font 'Sans," << spec.font_size << "'";
-    if (std::string(f.extension) == "svg") script << " background rgb 'white'";
-    script << "\nset output " << gp_quote(spec.name + "." + f.extension) << "\nset datafile separator ','\n"
+  for (const auto& f : formats(spec))
+    script << "\n# ---- " << f.extension << " ----\nreset\nset terminal " << f.terminal << "\nset output "
+           << gp_quote(spec.name + "." + f.extension) << "\nset datafile separator ','\n"
            << spec.body << "\nunset output\n";
-  }
+  return script.str();
+}
+
+RenderedFigure render(const std::filesystem::path& dir, const FigureSpec& spec) {
+  namespace fs = std::filesystem;
+  if (!(spec.width_cm > 0 && spec.height_cm > 0))
+    throw std::invalid_argument(spec.name + ": the print size must be positive");
+  if (!(spec.font_pt * kIndexScale >= kMinTextPt))
+    throw std::invalid_argument(spec.name + ": " + num(spec.font_pt) + " pt text has indices below " +
+                                num(kMinTextPt) + " pt");
+  RenderedFigure out{dir / (spec.name + ".gp"), dir / (spec.name + ".pdf"), dir / (spec.name + ".png"),
+                     dir / (spec.name + ".svg")};
   {
     std::ofstream gp(out.script);
-    gp << script.str();
+    gp << figure_script(spec);
     if (!gp) throw std::runtime_error("cannot write " + out.script.string());
   }
-  for (const auto& p : {out.png, out.svg}) fs::remove(p);
+  for (const auto& p : {out.pdf, out.png, out.svg}) fs::remove(p);
   const fs::path log = dir / (spec.name + ".gnuplot.log");
   {
     // gnuplot runs in the output folder so the script's relative data paths hold; its messages
@@ -70,8 +128,8 @@ RenderedFigure render(const std::filesystem::path& dir, const FigureSpec& spec) 
   }  // the destructor waits for gnuplot to finish
   const std::string messages = read_all(log);
   if (messages.empty()) fs::remove(log);
-  if (!non_empty(out.png) || !non_empty(out.svg))
-    throw std::runtime_error("gnuplot did not make " + spec.name + ".png/.svg:\n" + messages);
+  if (!non_empty(out.pdf) || !non_empty(out.png) || !non_empty(out.svg))
+    throw std::runtime_error("gnuplot did not make " + spec.name + ".pdf/.png/.svg:\n" + messages);
   return out;
 }
 

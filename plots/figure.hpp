@@ -1,40 +1,84 @@
 // A figure as a saved gnuplot script: the body (set/plot commands reading the CSV files beside
 // it) is written once per output format into NAME.gp, so `cd DIR && gnuplot NAME.gp` re-makes
-// NAME.png (pngcairo) and NAME.svg exactly. render() writes the script and runs it through
-// gnuplot-iostream; it throws with gnuplot's own messages when an output is missing.
+// NAME.pdf (pdfcairo), NAME.png (pngcairo) and NAME.svg exactly. A figure is drawn at the size a
+// journal prints it, with its text in points at that size; render() writes the script and runs it
+// through gnuplot-iostream, and throws with gnuplot's own messages when an output is missing.
 #pragma once
 #include <filesystem>
 #include <string>
 
 namespace scalcal::plots {
 
+// Print widths of a two-column journal page, and the smallest text allowed at print size.
+inline constexpr double kColumnWidthCm = 8.5;  // one column
+inline constexpr double kPageWidthCm = 17.5;   // both columns
+inline constexpr double kMinTextPt = 7;
+// gnuplot's enhanced text draws sub- and superscripts at 0.8 of the text around them; sub() and
+// sup() ask for 1.1 of that, so 8 pt text keeps its indices at 7 pt.
+inline constexpr double kIndexScale = 0.8 * 1.1;
+
+// The raster and vector copies are the same drawing as the PDF, at these resolutions.
+inline constexpr double kPngPixelsPerInch = 300;  // sharp when printed at the intended width
+inline constexpr double kSvgPixelsPerInch = 96;   // CSS pixels: the SVG opens at its print size
+
 struct FigureSpec {
-  std::string name;     // file stem: fig4 -> fig4.gp, fig4.png, fig4.svg
+  std::string name;     // file stem: fig4 -> fig4.gp, fig4.pdf, fig4.png, fig4.svg
   std::string comment;  // one line at the top of the script: what the figure shows
-  int width = 1100;     // pixels, for both PNG and SVG
-  int height = 750;
-  int font_size = 15;   // readable at page width once scaled to ~16 cm
+  double width_cm = kColumnWidthCm;  // at print size
+  double height_cm = 6.5;
+  double font_pt = 8;   // at print size; render() refuses indices below kMinTextPt
   std::string body;     // gnuplot commands; data files are named relative to the output folder
 };
 
 struct RenderedFigure {
-  std::filesystem::path script, png, svg;
+  std::filesystem::path script, pdf, png, svg;
 };
 
+// Throws std::invalid_argument for a size or font that cannot print as stated.
 RenderedFigure render(const std::filesystem::path& dir, const FigureSpec& spec);
+
+// The whole NAME.gp of a figure (what render() writes).
+std::string figure_script(const FigureSpec& spec);
 
 // A gnuplot string literal in single quotes ('' escapes a quote).
 std::string gp_quote(const std::string& s);
 
-// Colours and point types shared by every figure, so a program class looks the same everywhere.
+// Enhanced-text index and exponent that stay at kMinTextPt: sub("bias") is "_{/*1.1 bias}".
+std::string sub(const std::string& s);
+std::string sup(const std::string& s);
+
+// Colours, point and dash types shared by every figure, so a program class or a criterion looks the
+// same everywhere.
 namespace style {
-inline constexpr const char* uniform = "#1b9e3e";     // green squares, as in the paper's Fig. 4
-inline constexpr const char* rotation = "#d95f02";    // stars
-inline constexpr const char* optimised = "#1f4e9e";   // triangles
-inline constexpr const char* jig = "#7b3294";         // dodecahedron / icosahedron
-inline constexpr const char* random = "#555555";      // dashed
-inline constexpr const char* limit = "#c51b1b";       // analytic limit
-inline constexpr const char* paper = "#b8860b";       // the paper's own Tables 1-3 programs
+// Paul Tol's "high contrast" scheme plus black: safe for red-green colour blindness, and four clearly
+// different lightnesses (CIE L* 0, 29, 50, 72), so series drawn together stay apart in greyscale too.
+inline constexpr const char* black = "#000000";   // L* 0
+inline constexpr const char* dark = "#004488";    // blue, L* 29
+inline constexpr const char* medium = "#BB5566";  // red, L* 50
+inline constexpr const char* light = "#DDAA33";   // yellow, L* 72
+inline constexpr const char* grey = "#777777";    // reference marks: dashed or dotted lines, open points
+
+// Program classes (Figs. 4-7). The many uniform programs are drawn first and lightest; the jigs,
+// which equal the optimum at their N, are open and drawn last so the triangle shows inside them.
+inline constexpr const char* uniform = light;     // filled squares, pt 5
+inline constexpr const char* rotation = medium;   // asterisks, pt 3
+inline constexpr const char* optimised = dark;    // filled triangles, pt 9
+inline constexpr const char* jig = black;         // open circle (pt 6) and diamond (pt 12)
+inline constexpr const char* random = grey;       // dashed line
+inline constexpr const char* limit = black;       // solid line, drawn under the points
+inline constexpr const char* paper = medium;      // open circles: the paper's Tables 1-3 programs
+
+// One colour and point type per criterion D, A, E, S (kCriteria order), one colour per error group.
+inline constexpr const char* criterion[4] = {black, dark, medium, light};
+inline constexpr int criterion_point[4] = {5, 7, 9, 13};  // square, disc, triangle, diamond
+inline constexpr const char* group[3] = {dark, medium, light};  // theta_bias, theta_scale, theta_nonorth
+
+// The error groups as figures and REPORT.md write them: the CLI's JSON keys theta_bias, theta_scale,
+// theta_nonorth, set as θ with an index.
+inline constexpr const char* theta_bias = "θ_{/*1.1 bias}";
+inline constexpr const char* theta_scale = "θ_{/*1.1 scale}";
+inline constexpr const char* theta_nonorth = "θ_{/*1.1 nonorth}";
+inline constexpr const char* theta_q = "θ_{/*1.1 q}";
 }  // namespace style
 
 }  // namespace scalcal::plots

@@ -1,6 +1,5 @@
 #include "experiments/reproduce/context.hpp"
 
-#include <iostream>
 #include <thread>
 
 namespace scalcal::reproduce {
@@ -9,22 +8,6 @@ Entry make_entry(std::string family, std::string name, std::string source, Progr
   Entry e{std::move(family), std::move(name), std::move(source), std::move(program), {}, 0, 0, 0.0};
   e.ev = evaluate(e.program);
   return e;
-}
-
-void Progress::stage(const std::string& what) {
-  stage_ = what;
-  if (enabled_) std::cerr << "\r\033[K[reproduce] " << stage_ << std::flush;
-}
-
-void Progress::step(long long done, long long total) {
-  if (!enabled_) return;
-  const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-  std::cerr << "\r\033[K[reproduce] " << stage_ << "  " << done << "/" << total << "  (" << static_cast<int>(s)
-            << " s)" << std::flush;
-}
-
-void Progress::done() {
-  if (enabled_) std::cerr << "\r\033[K" << std::flush;
 }
 
 const Entry* Context::optimum(CriterionKind c, int n) const {

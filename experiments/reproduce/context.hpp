@@ -1,8 +1,7 @@
 // The shared state of one `scalcal reproduce` run: the programs of every class are computed once
 // (programs.hpp), then each figure or table (figures.hpp) writes its CSV, its gnuplot script, its
-// PNG + SVG and its section of REPORT.md from them.
+// PDF, PNG and SVG and its section of REPORT.md from them; progress.hpp reports how far the run is.
 #pragma once
-#include <chrono>
 #include <cstdint>
 #include <filesystem>
 #include <map>
@@ -10,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "experiments/reproduce/progress.hpp"
 #include "experiments/reproduce/report.hpp"
 #include "numeric/criteria/registry.hpp"
 #include "numeric/criteria/evaluation.hpp"
@@ -38,22 +38,8 @@ struct Entry {
 
 Entry make_entry(std::string family, std::string name, std::string source, Program program);
 
-// Progress on stderr, only when stderr is a terminal.
-class Progress {
- public:
-  explicit Progress(bool enabled) : enabled_(enabled) {}
-  void stage(const std::string& what);
-  void step(long long done, long long total);
-  void done();
-
- private:
-  bool enabled_;
-  std::string stage_;
-  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
-};
-
 struct Context {
-  Context(Options o, bool show_progress) : options(std::move(o)), progress(show_progress) {}
+  Context(Options o, ProgressMode mode) : options(std::move(o)), progress(mode) {}
   Options options;
   Progress progress;
   Report report;

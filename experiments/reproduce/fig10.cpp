@@ -13,8 +13,11 @@ namespace {
 // The paper's normalisation of each criterion as its axis label (N^P is N^9 under the paper's model).
 std::string axis_label(CriterionKind c) {
   std::string s(criterion_summary(c));
-  if (const auto p = s.find("^P"); p != std::string::npos) s.replace(p, 2, "^9");
-  if (const auto p = s.find("lambda_max"); p != std::string::npos) s.replace(p, 10, "λ_{max}");
+  if (const auto p = s.find("^P"); p != std::string::npos) s.replace(p, 2, plots::sup("9"));
+  if (const auto p = s.find("lambda_max"); p != std::string::npos) s.replace(p, 10, "λ" + plots::sub("max"));
+  if (const auto p = s.find("max_r"); p != std::string::npos) s.replace(p, 5, "max" + plots::sub("r"));
+  s = std::string(criterion_name(c)) + " = " + s;
+  if (c == CriterionKind::D) s += "  (10" + plots::sup("7") + ")";  // the panel's values are in units of 10^7
   return s;
 }
 
@@ -39,26 +42,40 @@ void figure_limits(Context& ctx) {
   paper.row({"S", "18", csv_num(ctx.paper[2].ev.S)});
   csv.close();
   paper.close();
-  std::string body = "set multiplot layout 2,2 title 'optimum of each normalised criterion against N (scalcal), with its "
-                     "limit N → ∞'\nset grid\nset xrange [8:31]\nset xlabel 'N'\nset key top right\n";
-  for (auto c : kCriteria) {
+  // Four panels on the page width, one key above them (a plot of its own, so it may use the full
+  // width). Each limit is a black line drawn under the optimum's points, named in the panel.
+  using namespace plots::style;
+  std::string body = "set multiplot\nset grid\nset xrange [8:31]\nset xtics 2\n"
+                     "set style textbox opaque noborder margins 0.5,0.5\n";
+  const char* frames[] = {"0.09\nset rmargin at screen 0.48\nset tmargin at screen 0.9\nset bmargin at screen 0.56",
+                          "0.59\nset rmargin at screen 0.98\nset tmargin at screen 0.9\nset bmargin at screen 0.56",
+                          "0.09\nset rmargin at screen 0.48\nset tmargin at screen 0.47\nset bmargin at screen 0.13",
+                          "0.59\nset rmargin at screen 0.98\nset tmargin at screen 0.47\nset bmargin at screen 0.13"};
+  for (std::size_t i = 0; i < kCriteria.size(); ++i) {
+    const auto c = kCriteria[i];
     const auto lim = criterion_limit(c);
     const std::string cn(criterion_name(c));
-    body += "set title '" + cn + "-criterion'\nset ylabel '" + cn + " = " + axis_label(c) + "'\n" +
-            (c == CriterionKind::D ? "set format y '%.4t·10^{%T}'\n" : "set format y '%g'\n") +
-            // The E and S tables of the paper sit above the curves, where a top key would cover them.
-            (c == CriterionKind::E || c == CriterionKind::S ? "set key right center\n" : "set key top right\n") +
-            "plot 'fig10.csv' skip 1 using 2:(strcol(1) eq '" + cn + "' ? $3 : NaN) with linespoints pt 9 ps 1.3 lc rgb '" +
-            plots::style::optimised + "' title 'scalcal optimum', \\\n     " + csv_num(lim.value) +
-            " with lines lw 2 lc rgb '" + plots::style::limit + "' title " + plots::gp_quote("limit " + std::string(lim.exact)) +
-            (c == CriterionKind::D ? std::string("\n")
-                                   : ", \\\n     'fig10_paper.csv' skip 1 using 2:(strcol(1) eq '" + cn +
-                                         "' ? $3 : NaN) with points pt 6 ps 2 lw 2 lc rgb '" + plots::style::paper +
-                                         "' title 'paper, Table (N = 18)'\n");
+    // D in units of 10^7, so its ticks read 1.55 rather than 1.5500·10^7.
+    const std::string scale = c == CriterionKind::D ? "/1e7" : "";
+    body += "set lmargin at screen " + std::string(frames[i]) + "\n" + (i >= 2 ? "set xlabel 'N'\n" : "unset xlabel\n") +
+            "set ylabel " + plots::gp_quote(axis_label(c)) + "\nset format y '%g'\nset label 1 '(" + "abcd"[i] + ") " +
+            cn + "' at graph 0.97, graph 0.88 right front\nset label 2 " +
+            plots::gp_quote("limit " + math_text(lim.exact)) + " at graph 0.97, first " + csv_num(lim.value) + scale +
+            " offset 0,0.9 right front boxed\nplot " + csv_num(lim.value) + scale + " with lines lw 1.5 lc rgb '" +
+            limit + "' notitle, \\\n     'fig10.csv' skip 1 using 2:(strcol(1) eq '" + cn + "' ? $3" + scale +
+            " : NaN) with linespoints pt 9 ps 0.7 lw 1 lc rgb '" + optimised + "' notitle, \\\n     'fig10_paper.csv' "
+            "skip 1 using 2:(strcol(1) eq '" + cn + "' ? $3 : NaN) with points pt 6 ps 1.3 lw 2 lc rgb '" + plots::style::paper +
+            "' notitle\n";
   }
-  body += "unset multiplot\n";
-  render_figure(ctx, "fig10", "optimum of D, A, E, S against N with the analytic limits", body, 1300, 1000);
-  r.figure("fig10", "fig10: scalcal's optimum of each criterion against N; red: the N → ∞ limit");
+  body += std::string("unset label\nunset xlabel\nunset ylabel\nunset grid\nunset border\nunset tics\n") +
+          "set lmargin at screen 0.02\nset rmargin at screen 0.98\nset tmargin at screen 0.99\nset bmargin at screen 0.93\n"
+          "set xrange [0:1]\nset yrange [0:1]\nset key center center horizontal maxcols 3 Left reverse samplen 2\n"
+          "plot NaN with lines lw 1.5 lc rgb '" + limit + "' title 'limit N → ∞', \\\n     NaN with linespoints pt 9 "
+          "ps 0.7 lw 1 lc rgb '" + optimised + "' title 'scalcal optimum', \\\n     NaN with points pt 6 ps 1.3 lw 2 "
+          "lc rgb '" + plots::style::paper + "' title 'paper, Tables 1–3'\nunset multiplot\n";
+  render_figure(ctx, "fig10", "optimum of D, A, E, S against N with the analytic limits", body, plots::kPageWidthCm, 9);
+  r.figure("fig10", "fig10: scalcal's optimum of each criterion against N (triangles), its N → ∞ limit (line) and the "
+                    "paper's Tables 1-3 programs at N = 18 (circles)");
   r.paragraph("Data: [fig10.csv](fig10.csv) (with the multistart's starts, hits and seconds per N), "
               "[fig10_paper.csv](fig10_paper.csv).");
 }

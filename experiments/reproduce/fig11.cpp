@@ -26,23 +26,37 @@ void figure_sphere(Context& ctx) {
                csv_num(v(2))});
     }
   csv.close();
+  using namespace plots::style;
+  // Depth cue for `set view 62,35`: depth() > 0 faces the viewer. Front positions are filled discs with
+  // white numbers; back ones open grey discs drawn first, so a front disc covers a back one it overlaps
+  // and the numbers of a front and a back position never print over each other.
   std::string body =
-      "set multiplot layout 1,2 title 'D-optimal programs (scalcal): positions η on the unit sphere, meter axes X Y Z'\n"
-      "set parametric\nset urange [0:2*pi]\nset vrange [-pi/2:pi/2]\nset isosamples 13,9\nset view equal xyz\n"
-      "set view 62,35,1.35\nunset border\nunset tics\nset xrange [-1.3:1.3]\n"
-      "set yrange [-1.3:1.3]\nset zrange [-1.3:1.3]\nunset key\n"
-      "set arrow 1 from 0,0,0 to 1.3,0,0 lw 2 lc rgb 'black' front\nset arrow 2 from 0,0,0 to 0,1.3,0 lw 2 lc rgb 'black' front\n"
-      "set arrow 3 from 0,0,0 to 0,0,1.3 lw 2 lc rgb 'black' front\nset label 1 'X' at 1.42,0,0 front\n"
-      "set label 2 'Y' at 0,1.42,0 front\nset label 3 'Z' at 0,0,1.42 front\n";
-  for (int n : {12, 18})
-    body += "set title 'N = " + std::to_string(n) +
-            "'\nsplot cos(u)*cos(v),sin(u)*cos(v),sin(v) with lines lc rgb '#d0d0d0', \\\n      'fig11.csv' skip 1 using "
-            "($1==" + std::to_string(n) + " ? $3 : NaN):4:5 with points pt 7 ps 1.8 lc rgb '" + plots::style::optimised +
-            "', \\\n      '' skip 1 using ($1==" + std::to_string(n) + " ? $3 : NaN):4:5:(sprintf('%d', $2)) with labels "
-            "offset 1,1 font ',10'\n";
+      "set multiplot\nset parametric\nset urange [0:2*pi]\nset vrange [-pi/2:pi/2]\nset isosamples 13,9\n"
+      "set view equal xyz\nset view 62,35,1.7\nunset border\nunset tics\nset xrange [-1.3:1.3]\n"
+      "set yrange [-1.3:1.3]\nset zrange [-1.3:1.3]\nset margins 0,0,0,0\nset size 0.5,1.15\nunset key\n"
+      "set arrow 1 from 0,0,0 to 1.3,0,0 lw 2 lc rgb 'black'\nset arrow 2 from 0,0,0 to 0,1.3,0 lw 2 lc rgb 'black'\n"
+      "set arrow 3 from 0,0,0 to 0,0,1.3 lw 2 lc rgb 'black'\nset label 1 'X' at 1.45,0,0 front\n"
+      "set label 2 'Y' at 0,1.5,0 front\nset label 3 'Z' at 0,0,1.42 front\n"
+      "rx = 62*pi/180; rz = 35*pi/180\ndepth(x,y,z) = x*sin(rz)*sin(rx) - y*cos(rz)*sin(rx) + z*cos(rx)\n";
+  int panel = 0;
+  for (int n : {12, 18}) {
+    const std::string only = "($1==" + std::to_string(n) + " && depth($3,$4,$5) ";
+    body += "set origin " + std::string(panel ? "0.5" : "0") + ",-0.12\nset label 4 '(" + "ab"[panel] + ") N = " +
+            std::to_string(n) + "' at screen " + (panel ? "0.52" : "0.02") + ", screen 0.95 left front\n" +
+            "splot cos(u)*cos(v),sin(u)*cos(v),sin(v) with lines lc rgb '#d9d9d9', \\\n"
+            "      'fig11.csv' skip 1 using " + only + "< 0 ? $3 : NaN):4:5 with points pt 7 ps 2.3 lc rgb 'white', \\\n"
+            "      '' skip 1 using " + only + "< 0 ? $3 : NaN):4:5 with points pt 6 ps 2.3 lw 1.5 lc rgb '" + grey +
+            "', \\\n      '' skip 1 using " + only + "< 0 ? $3 : NaN):4:5:(sprintf('{/*0.9 %d}', $2)) with labels tc rgb '" +
+            grey + "', \\\n      '' skip 1 using " + only + ">= 0 ? $3 : NaN):4:5 with points pt 7 ps 2.3 lc rgb '" +
+            optimised + "', \\\n      '' skip 1 using " + only +
+            ">= 0 ? $3 : NaN):4:5:(sprintf('{/*0.9 %d}', $2)) with labels tc rgb 'white'\n";
+    ++panel;
+  }
   body += "unset multiplot\n";
-  render_figure(ctx, "fig11", "D-optimal N = 12 and 18 programs on the sphere", body, 1400, 720);
-  r.figure("fig11", "fig11: D-optimal programs, N = 12 (left) and N = 18 (right), on the unit sphere");
+  render_figure(ctx, "fig11", "D-optimal N = 12 and 18 programs on the sphere", body, plots::kPageWidthCm, 6.5);
+  r.figure("fig11", "fig11: D-optimal programs (scalcal), N = 12 (a) and N = 18 (b): the positions on the unit sphere, "
+                    "numbered as in fig11.csv, with the meter's axes X, Y, Z; filled: on the hemisphere facing the "
+                    "viewer, open: behind the sphere");
   r.paragraph("Data: [fig11.csv](fig11.csv). The paper notes that its optimised 12- and 20-position programs reach "
               "the jigs' D without forming the symmetric figures.");
 }

@@ -98,13 +98,15 @@ void figure_regions(Context& ctx) {
     std::vector<std::string> cells;
   };
   std::vector<LimitRow> rows;
-  ctx.progress.stage("region limits and smallest N (fig12)");
+  // One part of the stage per region, of equal weight: each runs the same limits and N scan.
   long long total = 0, done = 0;
   for (const auto& f : families(ctx.options.quick)) total += static_cast<long long>(f.angles.size());
   for (const auto& f : families(ctx.options.quick))
     for (double theta : f.angles) {
-      ctx.progress.step(done++, total);
       const std::string spec = f.spec(theta);
+      ctx.progress.part(static_cast<double>(done) / static_cast<double>(total), 1.0 / static_cast<double>(total),
+                        "region " + spec + " (" + std::to_string(done + 1) + "/" + std::to_string(total) + ")");
+      ++done;
       const Region region = parse_region({spec});
       std::optional<RegionLimit> d_limit;
       for (auto c : kCriteria) {
@@ -133,54 +135,61 @@ void figure_regions(Context& ctx) {
   errors.close();
   sizes.close();
 
+  // Three panels on the page width. Colour and point say the criterion (a), the error group (b) or the
+  // family (c); the dash says the family, so the keys need seven lines, not twelve.
   using namespace plots::style;
-  const char* colours[] = {optimised, uniform, rotation, jig};
   const char* dashes[] = {"1", "2", "3"};  // cap solid, band dashed, faces dotted
+  const char* family_colours[] = {black, dark, medium};
   std::string body =
-      "set multiplot layout 1,3 margins 0.065,0.98,0.14,0.9 spacing 0.065,0\nset grid\nset xrange [0:185]\n"
-      "set xtics 30\nset xlabel 'half-angle θ (degrees)'\nset key top right\n";
-  body += "set title '(a) limit on the region / limit on the sphere'\nset logscale y\nset format y '10^{%T}'\n"
-          "set ylabel 'relative limit'\nplot ";
+      "set multiplot\nset grid\nset xrange [0:185]\nset xtics 30\nset xlabel 'half-angle θ (degrees)'\n"
+      "set key top right Left reverse samplen 2.5 width -1\nset tmargin at screen 0.91\nset bmargin at screen 0.16\n"
+      "set lmargin at screen 0.075\nset rmargin at screen 0.325\nset label 1 '(a)' at graph 0, graph 1.04 left front\n"
+      "set logscale y\nset format y '10" + plots::sup("%T") + "'\nset ylabel 'limit on the region / on the sphere'\nplot ";
   int k = 0;
   const auto fams = families(ctx.options.quick);
-  // Colour and point say the criterion, the dash the family: a key of seven lines, not twelve.
   for (std::size_t fi = 0; fi < fams.size(); ++fi)
-    for (int ci = 0; ci < 4; ++ci) {
-      const std::string cn(criterion_name(kCriteria[static_cast<std::size_t>(ci)]));
+    for (std::size_t ci = 0; ci < kCriteria.size(); ++ci) {
+      const std::string cn(criterion_name(kCriteria[ci]));
       body += std::string(k++ ? ", \\\n     " : "") + "'fig12.csv' skip 1 using 2:((strcol(1) eq '" + fams[fi].name +
               "' && strcol(4) eq '" + cn + "') ? $6 : NaN) with linespoints dt " + dashes[fi] + " pt " +
-              std::to_string(5 + 2 * ci) + " lw 2 lc rgb '" + colours[ci] + "' " +
+              std::to_string(criterion_point[ci]) + " ps 0.6 lw 1.5 lc rgb '" + criterion[ci] + "' " +
               (fi == 0 ? "title " + plots::gp_quote(cn) : std::string("notitle"));
     }
-  for (std::size_t fi = 0; fi < fams.size(); ++fi)
-    body += ", \\\n     NaN with lines dt " + std::string(dashes[fi]) + " lw 2 lc rgb 'black' title " +
-            plots::gp_quote(fams[fi].label);
-  body += "\nset title '(b) RMS errors of the D-optimal measure / the sphere''s'\nset ylabel 'θ_q relative to the sphere'\nplot ";
-  const char* groups[] = {"bias", "scale", "nonorth"};
+  auto family_keys = [&] {
+    std::string keys;
+    for (std::size_t fi = 0; fi < fams.size(); ++fi)
+      keys += ", \\\n     NaN with lines dt " + std::string(dashes[fi]) + " lw 1.5 lc rgb 'black' title " +
+              plots::gp_quote(fams[fi].label);
+    return keys;
+  };
+  body += family_keys();
+  body += "\nset lmargin at screen 0.41\nset rmargin at screen 0.66\nset label 1 '(b)'\nset ylabel '" +
+          std::string(theta_q) + " on the region / on the sphere'\nplot ";
+  const char* thetas[] = {theta_bias, theta_scale, theta_nonorth};
   k = 0;
   for (std::size_t fi = 0; fi < fams.size(); ++fi)
     for (int g = 0; g < 3; ++g)
       body += std::string(k++ ? ", \\\n     " : "") + "'fig12_thetas.csv' skip 1 using 2:(strcol(1) eq '" + fams[fi].name +
               "' ? $" + std::to_string(7 + g) + " : NaN) with linespoints dt " + dashes[fi] + " pt " +
-              std::to_string(5 + 2 * g) + " lw 2 lc rgb '" + colours[g] + "' " +
-              (fi == 0 ? "title " + plots::gp_quote(std::string("θ_{") + groups[g] + "}") : std::string("notitle"));
-  for (std::size_t fi = 0; fi < fams.size(); ++fi)
-    body += ", \\\n     NaN with lines dt " + std::string(dashes[fi]) + " lw 2 lc rgb 'black' title " +
-            plots::gp_quote(fams[fi].label);
+              std::to_string(criterion_point[g + 1]) + " ps 0.6 lw 1.5 lc rgb '" + group[g] + "' " +
+              (fi == 0 ? "title " + plots::gp_quote(thetas[g]) : std::string("notitle"));
+  body += family_keys();
   // The scan's largest N as a line: the panel has a point to draw even when no region was reached.
-  body += "\nset title '(c) smallest N within 1 % of the region''s D limit'\nunset logscale y\nset format y '%g'\n"
-          "set ylabel 'N'\nset yrange [0:" + std::to_string(n_scan.back() + 4) + "]\nplot " +
-          std::to_string(n_scan.back()) + " with lines dt 4 lc rgb '" + random + "' title 'largest N tried'";
+  body += "\nset lmargin at screen 0.745\nset rmargin at screen 0.985\nset label 1 '(c)'\nunset logscale y\n"
+          "set format y '%g'\nset ylabel 'smallest N within 1 % of the D limit'\nset yrange [0:" +
+          std::to_string(n_scan.back() * 3 / 2 + 2) + "]\nplot " + std::to_string(n_scan.back()) +
+          " with lines dt 4 lw 1.5 lc rgb '" + grey + "' title 'largest N tried'";
   for (std::size_t fi = 0; fi < fams.size(); ++fi)
     body += std::string(", \\\n     ") + "'fig12_n.csv' skip 1 using 2:(strcol(1) eq '" + fams[fi].name +
-            "' ? $4 : NaN) with linespoints dt " + dashes[fi] + " pt 7 lw 2 lc rgb '" + colours[fi] + "' title " +
-            plots::gp_quote(fams[fi].label);
+            "' ? $4 : NaN) with linespoints dt " + dashes[fi] + " pt " + std::to_string(criterion_point[fi]) +
+            " ps 0.6 lw 1.5 lc rgb '" + family_colours[fi] + "' title " + plots::gp_quote(fams[fi].label);
   body += "\nunset multiplot\n";
   render_figure(ctx, "fig12", "what a restricted bench costs: region limits, RMS errors and the N to reach them", body,
-                1800, 650);
+                plots::kPageWidthCm, 6.5);
   rep.figure("fig12", "fig12: (a) each criterion's limit on a cap (solid), a band (dashed) and the six faces (dotted) "
-                      "relative to the sphere's; (b) the RMS errors of the region's D-optimal measure relative to the "
-                      "sphere's; (c) the smallest N within 1 % of the region's D limit");
+                      "relative to the sphere's; (b) the RMS errors θ_bias, θ_scale, θ_nonorth of the region's "
+                      "D-optimal measure relative to the sphere's; (c) the smallest N within 1 % of the region's D "
+                      "limit");
   rep.paragraph("Data: [fig12.csv](fig12.csv), [fig12_thetas.csv](fig12_thetas.csv), [fig12_n.csv](fig12_n.csv). A cap "
                 "of half-angle θ holds the directions within θ of +z, a band those within θ of the horizontal plane, "
                 "the six faces those within θ of ±x, ±y or ±z. D on a cap or band is exact (numeric/region/zonal_d.hpp, "

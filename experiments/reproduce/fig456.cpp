@@ -43,37 +43,105 @@ void figures_4_5_6(Context& ctx) {
   }
   const std::string common =
       "set grid\nset xlabel 'number of measurement positions N'\nset xrange [8:49]\nset xtics 4\nset mxtics 4\n";
+  using namespace plots::style;
+  // Fig. 4: the key sits top right, above the falling cloud of points.
   render_figure(ctx, "fig4", "generalized variance det K against N (the paper's Fig. 4)",
-                common +
-                    "set logscale y\nset format y '10^{%L}'\nset ylabel 'det K   (K in units of σ_ω^2)'\n"
-                    "set key top right box opaque\n" +
-                    class_plot(5, ctx, false));
-  render_figure(ctx, "fig5", "N^9 det K against N (the paper's Fig. 5)",
-                common +
-                    "set logscale y\nset ylabel 'N^9 det K'\nset format y '10^{%L}'\nset key top right box opaque\n"
-                    "LIMIT = " + csv_num(limit) + "\n" + class_plot(6, ctx, true));
+                common + "set logscale y\nset format y '10" + plots::sup("%L") +
+                    "'\nset yrange [5e-9:10]\nset ylabel 'det K (dimensionless)'\n"
+                    "set key top right Left reverse box opaque samplen 2.5 width -5\n" +
+                    class_plot({5, true, true, false}, ctx),
+                plots::kColumnWidthCm, 7);
 
-  // Fig. 6: the lower part, linear, with the N whose optimum misses the limit circled.
-  double top = 2.4e7;
-  for (int n : ctx.optimised_sizes(CriterionKind::D)) top = std::max(top, 1.05 * ctx.optimum(CriterionKind::D, n)->ev.D);
-  top = std::min(top, 3.2e7);
-  std::string body = common + "set ylabel 'N^9 det K'\nset format y '%.2t·10^{%T}'\nset yrange [1.45e7:" +
-                     csv_num(top) + "]\nset key outside below center horizontal maxcols 2 box spacing 1.1\nLIMIT = " + csv_num(limit) + "\n";
-  body += "set label 1 'limit 61509375/4' at 45, LIMIT offset 0,-0.9 right tc rgb '" + std::string(plots::style::limit) +
-          "'\n";
-  std::string plot = class_plot(6, ctx, true);
+  // Figs. 5 and 6 share Fig. 4's symbols; their lines are labelled in the plot, where a key of seven
+  // entries would cover the points at one column's width.
+  const std::string limit_label = "set style textbox opaque noborder margins 1,1\nLIMIT = " + csv_num(limit) +
+                                  "\nset label 1 'limit 61509375/4' at 47.5, LIMIT offset 0,-0.8 right front boxed\n";
+  std::vector<double> values;  // every D drawn, for the axis range
+  for (const auto* e : drawn) values.push_back(e->ev.D);
+  std::sort(values.begin(), values.end());
+  const auto first_random = ctx.random_best.empty() ? nullptr : &*ctx.random_best.begin();
+
+  // Fig. 5, log scale: the range holds the bulk of the programs; a single program more than 1.5 times
+  // above all others (the rotation program at N = 9) gets an arrow with its value at the top edge.
+  const bool outlier = values.size() > 1 && values.back() > 1.5 * values[values.size() - 2];
+  const double top5 = 1.2 * (outlier ? values[values.size() - 2] : values.back());
+  std::string body5 = common + "set logscale y\nset ylabel 'N" + plots::sup("9") + " det K'\nset format y '%.1t·10" +
+                      plots::sup("%T") + "'\nset ytics (1.5e7, 2e7, 3e7, 5e7, 7e7, 1e8, 1.5e8, 2e8, 3e8, 5e8)\n"
+                      "set yrange [1.3e7:" + csv_num(top5) + "]\nunset key\n" + limit_label;
+  // "best of 10^5 random\n(N ≤ 36)": the random line's label, in two lines.
+  auto two_lines = [](std::string label) {
+    if (const auto space = label.find(" ("); space != std::string::npos) label.replace(space, 1, "\\n");
+    return label;
+  };
+  if (first_random && first_random->second.ev.D < top5)
+    body5 += "set label 2 \"" + two_lines(random_title(ctx)) + "\" at " +
+             std::to_string(first_random->first + 1.5) + ", " + csv_num(1.6 * first_random->second.ev.D) +
+             " left front tc rgb '" + random + "'\nset arrow 2 from " + std::to_string(first_random->first + 1.8) + ", " +
+             csv_num(1.3 * first_random->second.ev.D) + " to " + std::to_string(first_random->first + 0.3) + ", " +
+             csv_num(1.05 * first_random->second.ev.D) + " size screen 0.012,20 lw 1 lc rgb '" + random + "'\n";
+  if (outlier)
+    for (const auto* e : drawn)
+      if (e->ev.D == values.back())
+        body5 += "set arrow 1 from " + std::to_string(e->ev.positions) + ", graph 0.88 to " +
+                 std::to_string(e->ev.positions) + ", graph 0.99 filled size screen 0.015,20 lw 2 lc rgb '" +
+                 (e->family == "rotation" ? rotation : black) + "'\nset label 3 " + plots::gp_quote(gp_power(e->ev.D)) +
+                 " at " + std::to_string(e->ev.positions) + ", graph 0.93 offset 0.7,0 left front tc rgb '" +
+                 (e->family == "rotation" ? rotation : black) + "'\n";
+  render_figure(ctx, "fig5", "N^9 det K against N (the paper's Fig. 5)", body5 + class_plot({6, false, true, true}, ctx),
+                plots::kColumnWidthCm, 6.5);
+
+  // Fig. 6: the lower part, linear, up to where the rotation programs (2.58e7) and the random line
+  // from N = 12 on fit with room for the label above them; the random line's start above the frame is
+  // stated in its label. The N whose optimum misses the limit are circled and numbered.
+  const double top6 = 3.2e7;
+  std::string random_label = random_title(ctx);
+  double random_top = 0;
+  int random_top_n = 0;
+  for (const auto& [n, e] : ctx.random_best)
+    if (e.ev.D > random_top) random_top = e.ev.D, random_top_n = n;
+  if (random_top > top6) {
+    random_label.pop_back();  // "(N ≤ 36; 5.4·10^7 at N = 9)"
+    random_label += "; " + gp_power(random_top, 2) + " at N = " + std::to_string(random_top_n) + ")";
+  }
+  random_label = two_lines(random_label);
+  std::string body6 = common + "set ylabel 'N" + plots::sup("9") + " det K / 10" + plots::sup("7") +
+                      "'\nset format y '%.1t'\nset yrange [1.45e7:" + csv_num(top6) + "]\nset ytics 2e6\nunset key\n" +
+                      limit_label + "set label 2 \"" + random_label + "\" at 15.5, " + csv_num(0.947 * top6) +
+                      " left front tc rgb '" + random + "'\n";
+  std::vector<int> misses;
+  for (int n : ctx.optimised_sizes(CriterionKind::D))
+    if (ctx.optimum(CriterionKind::D, n)->ev.D > limit * (1 + kLimitTolerance)) misses.push_back(n);
+  for (std::size_t i = 0; i < misses.size(); ++i) {
+    // Above the circle; to its left when the next N also misses at nearly the same height, where the
+    // two numbers would collide.
+    const double d = ctx.optimum(CriterionKind::D, misses[i])->ev.D;
+    const bool crowded = i + 1 < misses.size() && misses[i + 1] == misses[i] + 1 &&
+                         std::abs(ctx.optimum(CriterionKind::D, misses[i + 1])->ev.D - d) < 0.08 * (top6 - 1.45e7);
+    body6 += "set label " + std::to_string(10 + i) + " '" + std::to_string(misses[i]) + "' at " +
+             std::to_string(misses[i]) + ", " + csv_num(d) +
+             (crowded ? " offset -1.7,-0.2 center" : " offset 0,1.1 center") + " front tc rgb '" + medium + "'\n";
+  }
+  std::string plot = class_plot({6, false, true, true}, ctx);
   plot.pop_back();
-  plot += ", \\\n     'fig4_programs.csv' skip 1 using 4:(strcol(13) eq '1' ? $6 : NaN) with points pt 6 ps 3.2 lw 2 "
-          "lc rgb '" + std::string(plots::style::limit) + "' title 'optimum misses the limit', \\\n"
-          "     '' skip 1 using 4:(strcol(13) eq '1' ? $6 : NaN):(sprintf('%d', $4)) with labels offset 0,1.6 notitle\n";
-  render_figure(ctx, "fig6", "lower part of N^9 det K with the analytic limit (the paper's Fig. 6)", body + plot, 1200,
-                900);
+  plot += ", \\\n     'fig4_programs.csv' skip 1 using 4:(strcol(13) eq '1' ? $6 : NaN) with points pt 6 ps 1.5 lw 2 "
+          "lc rgb '" + std::string(medium) + "' notitle\n";
+  render_figure(ctx, "fig6", "lower part of N^9 det K with the analytic limit (the paper's Fig. 6)", body6 + plot,
+                plots::kColumnWidthCm, 6.5);
 
   auto& r = ctx.report;
   r.heading(2, "Figs. 4-6: generalized variance");
-  r.figure("fig4", "Fig. 4: det K against N for each class of programs");
-  r.figure("fig5", "Fig. 5: det K normalised by N^9");
-  r.figure("fig6", "Fig. 6: lower part of N^9 det K, with the analytic limit 61509375/4");
+  const std::string random_n = ctx.random_best.empty() ? std::string("")
+                                                       : " (run for N = " + std::to_string(ctx.random_best.begin()->first) +
+                                                             " to " + std::to_string(ctx.random_best.rbegin()->first) +
+                                                             " only)";
+  r.figure("fig4", "Fig. 4: det K (K for unit-vector rows, dimensionless) against N: uniform projections (squares), "
+                   "rotation about each axis [12] (stars), scalcal's D-optimal programs (triangles), the dodecahedral "
+                   "and icosahedral jigs (open circle, diamond) and the best of " + std::to_string(ctx.random_count) +
+                   " random programs per N (dashed" + random_n + ")");
+  r.figure("fig5", "Fig. 5: det K normalised by N^9, symbols as in Fig. 4; the arrow marks the one program above the "
+                   "range, with its value");
+  r.figure("fig6", "Fig. 6: lower part of N^9 det K, symbols as in Fig. 4, with the analytic limit 61509375/4; circled "
+                   "and numbered: the N whose optimum misses the limit");
   r.paragraph("Data: [fig4_programs.csv](fig4_programs.csv) (every program drawn, with all criteria) and "
               "[fig4_random.csv](fig4_random.csv) (the best of " + std::to_string(ctx.random_count) +
               " programs uniform on the sphere per N; `scalcal random --positions N --count " +

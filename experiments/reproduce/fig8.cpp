@@ -20,12 +20,18 @@ struct Bar {
   const Entry* entry;
 };
 
-std::string panel(const std::string& csv, const std::string& title, std::size_t bars, double top) {
-  return "set title " + plots::gp_quote(title) + "\nset yrange [0:" + csv_num(top) + "]\nset xrange [0.4:" + std::to_string(bars) +
-         ".6]\nplot '" + csv + "' skip 1 using ($1-0.27):4 with boxes fs solid 0.85 lc rgb '#4c72b0' title 'θ_Δ (bias)', \\\n"
-         "     '' skip 1 using 1:5:xtic(2) with boxes fs solid 0.85 lc rgb '#dd8452' title 'θ_{δk} (scale factor)', \\\n"
-         "     '' skip 1 using ($1+0.27):6 with boxes fs solid 0.85 lc rgb '#55a868' title 'θ_γ (non-orthogonality)', \\\n"
-         "     '' skip 1 using ($1+0.27):6:(sprintf('%.2f', $6)) with labels offset 0,0.7 font ',11' notitle\n";
+// One panel of bars: theta_bias, theta_scale, theta_nonorth per program (dark, medium, light, so
+// the three stay apart in greyscale), theta_nonorth's value above its bar. The program labels are
+// rotated and end at their group's tick.
+std::string panel(const std::string& csv, const std::string& label, std::size_t bars, double top, bool key) {
+  using namespace plots::style;
+  auto title = [key](const char* t) { return key ? "title " + plots::gp_quote(t) : std::string("notitle"); };
+  return "set label 1 " + plots::gp_quote(label) + " at graph 0.5, graph 0.92 center front\nset yrange [0:" +
+         csv_num(top) + "]\nset xrange [0.4:" + std::to_string(bars) + ".75]\nplot '" + csv +
+         "' skip 1 using ($1-0.27):4 with boxes lc rgb '" + group[0] + "' " + title(theta_bias) +
+         ", \\\n     '' skip 1 using 1:5:xtic(2) with boxes lc rgb '" + group[1] + "' " + title(theta_scale) +
+         ", \\\n     '' skip 1 using ($1+0.27):6 with boxes lc rgb '" + group[2] + "' " + title(theta_nonorth) +
+         ", \\\n     '' skip 1 using ($1+0.27):6:(sprintf('{/*0.9 %.2f}', $6)) with labels offset 0,0.6 notitle\n";
 }
 
 std::size_t write_panel(Context& ctx, const std::string& file, std::vector<Bar> bars, double& top) {
@@ -47,26 +53,32 @@ std::size_t write_panel(Context& ctx, const std::string& file, std::vector<Bar> 
 void figure_8(Context& ctx) {
   static const Entry rot6 = make_entry("analytic", "rotation-6", "ref. [12]", Program::rotation(6));
   static const Entry classic = make_entry("analytic", "classic18", "ref. [14]", Program::classic18());
-  std::vector<Bar> a = {{"[12] 60° turns", &rot6}, {"[14] 45°", &classic}};
+  std::vector<Bar> a = {{"[12] 60°", &rot6}, {"[14] 45°", &classic}};
   std::vector<Bar> b = {{"[13] √3/3", &ctx.analytic9[0]}, {"[14] 9 of 18", &ctx.analytic9[1]}};
   for (auto c : kCriteria) {
     if (const Entry* e = ctx.optimum(c, 18)) a.push_back({"scalcal " + std::string(criterion_name(c)), e});
     if (const Entry* e = ctx.optimum(c, 9)) b.push_back({"scalcal " + std::string(criterion_name(c)), e});
   }
-  const char* paper_labels[] = {"paper Tab.1 (A)", "paper Tab.2 (E)", "paper Tab.3 (S)"};
+  const char* paper_labels[] = {"Tab. 1 (A)", "Tab. 2 (E)", "Tab. 3 (S)"};
   for (int i = 0; i < 3; ++i) a.push_back({paper_labels[i], &ctx.paper[static_cast<std::size_t>(i)]});
   double top_a = 0, top_b = 0;
   const std::size_t na = write_panel(ctx, "fig8a.csv", a, top_a), nb = write_panel(ctx, "fig8b.csv", b, top_b);
   const std::string body =
-      "set multiplot layout 2,1 spacing 0,0.12\nset grid ytics\nset style fill solid 0.85 border -1\nset boxwidth 0.27\n"
-      "set ylabel 'θ_q = √(N max K(r,r))'\nset xtics rotate by -20 nomirror\nset key top right\n" +
-      panel("fig8a.csv", "(a) N = 18, in order of decreasing θ_γ", na, top_a) +
-      panel("fig8b.csv", "(b) N = 9, in order of decreasing θ_γ", nb, top_b) + "unset multiplot\n";
-  render_figure(ctx, "fig8", "thetas of the N = 18 and N = 9 programs by criterion (the paper's Fig. 8)", body, 1200, 1200);
+      "set multiplot\nset lmargin at screen 0.14\nset rmargin at screen 0.98\nset grid ytics\n"
+      "set style fill solid 1.0 border rgb 'black'\nset boxwidth 0.27\nset ylabel '" +
+      std::string(plots::style::theta_q) + " = √(N max K(r,r))'\nset xtics rotate by 35 right nomirror\n"
+      "set key top right Left reverse samplen 1 width -2\nset tmargin at screen 0.98\nset bmargin at screen 0.62\n" +
+      panel("fig8a.csv", "(a) N = 18", na, top_a, true) +
+      "unset key\nset tmargin at screen 0.47\nset bmargin at screen 0.11\n" +
+      panel("fig8b.csv", "(b) N = 9", nb, top_b, false) + "unset multiplot\n";
+  render_figure(ctx, "fig8", "thetas of the N = 18 and N = 9 programs by criterion (the paper's Fig. 8)", body,
+                plots::kColumnWidthCm, 11);
   auto& r = ctx.report;
   r.heading(2, "Fig. 8: RMS errors by optimisation criterion, N = 18 and N = 9");
-  r.figure("fig8", "Fig. 8: θ_bias, θ_scale, θ_nonorth for N = 18 (a) and N = 9 (b), by decreasing θ_nonorth");
-  r.paragraph("Data: [fig8a.csv](fig8a.csv), [fig8b.csv](fig8b.csv). \"paper Tab.k\" are the paper's own Table 1-3 "
+  r.figure("fig8", "Fig. 8: θ_bias, θ_scale, θ_nonorth for N = 18 (a) and N = 9 (b), by decreasing θ_nonorth: the "
+                   "analytic programs [12], [13], [14], scalcal's optimum for each criterion D, A, E, S, and the "
+                   "paper's Tables 1-3 (\"Tab. k\")");
+  r.paragraph("Data: [fig8a.csv](fig8a.csv), [fig8b.csv](fig8b.csv). \"Tab. k\" are the paper's own Table 1-3 "
               "programs, evaluated by scalcal from the printed angles (0.1° resolution).");
 }
 

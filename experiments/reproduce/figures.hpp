@@ -1,6 +1,6 @@
 // The figures and tables of `scalcal reproduce`, one stage each (fig456.cpp ... tables.cpp,
 // summary.cpp), and the helpers they share (figures.cpp): the CSV columns of a program, the plot of
-// the program classes, and rendering through plots/.
+// the program classes, and rendering through plots/ (PDF, PNG and SVG at the print size).
 #pragma once
 #include <string>
 #include <vector>
@@ -25,11 +25,23 @@ std::vector<std::string> entry_header();
 std::vector<std::string> entry_cells(const Entry& e);
 
 // The gnuplot `plot` command drawing column `column` of fig4_programs.csv for each program class of
-// Fig. 4, and the random programs' dashed line (their D column when column is 6, else det K).
-std::string class_plot(int column, const Context& ctx, bool with_limit);
+// Fig. 4 (squares first, then the line of the random programs, stars, triangles and the open jig
+// symbols on top), with the limit line LIMIT underneath them all when `limit` is set.
+struct ClassPlot {
+  int column = 5;       // 5 det K, 6 D, 10-12 the thetas
+  bool titles = true;   // key entries; Figs. 5 and 6 label their lines in the plot instead
+  bool random = true;   // the random programs' dashed line (their D when column is 6, else det K)
+  bool limit = false;   // the D limit, as the gnuplot variable LIMIT
+  bool short_titles = false;  // "rotation [12]" for a key in three columns
+};
+std::string class_plot(const ClassPlot& p, const Context& ctx);
 
-// Paths are relative to the output folder; the figure scripts run there.
+// "best of 10^5 random (N ≤ 36)": the random search covers fewer N than the other classes.
+std::string random_title(const Context& ctx);
+
+// Paths are relative to the output folder; the figure scripts run there. Sizes are at print size:
+// plots::kColumnWidthCm for one journal column, plots::kPageWidthCm for both.
 void render_figure(Context& ctx, const std::string& name, const std::string& comment, const std::string& body,
-                   int width = 1100, int height = 750);
+                   double width_cm, double height_cm);
 
 }  // namespace scalcal::reproduce

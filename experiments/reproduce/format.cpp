@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include "plots/figure.hpp"
+
 namespace scalcal::reproduce {
 
 std::string decimal(double x, int significant) {
@@ -30,6 +32,32 @@ std::string csv_num(double x) { return std::isfinite(x) ? ::fmt::format("{}", x)
 std::string exact_and_decimal(std::string_view exact, double value, int significant) {
   const std::string d = decimal(value, significant);
   return exact == d ? d : std::string(exact) + " = " + d;
+}
+
+std::string gp_power(double x, int significant) {
+  if (!std::isfinite(x) || x == 0) return decimal(x, significant);
+  const int e = static_cast<int>(std::floor(std::log10(std::abs(x))));
+  const std::string mantissa = ::fmt::format("{:.{}g}", x / std::pow(10.0, e), significant);
+  return e == 0 ? mantissa : mantissa + "·10" + plots::sup(std::to_string(e));
+}
+
+std::string math_text(std::string_view exact) {
+  std::string out;
+  for (std::size_t i = 0; i < exact.size();) {
+    if (exact.substr(i, 5) == "sqrt(") {  // sqrt(2) -> √2
+      const std::size_t close = exact.find(')', i);
+      out += "√" + std::string(exact.substr(i + 5, close - i - 5));
+      i = close == std::string_view::npos ? exact.size() : close + 1;
+    } else if (exact[i] == '*') {  // 18*sqrt(2) -> 18√2: a product reads without its sign
+      ++i;
+    } else if (exact[i] == '+' || exact[i] == '-') {
+      out += exact[i] == '+' ? " + " : " − ";
+      ++i;
+    } else {
+      out += exact[i++];
+    }
+  }
+  return out;
 }
 
 }  // namespace scalcal::reproduce

@@ -21,4 +21,9 @@ std::string csv_num(double x);
 // "61509375/4 = 15377343.75", or just "12" when the closed form already is the decimal.
 std::string exact_and_decimal(std::string_view exact, double value, int significant = 10);
 
+// For figures (gnuplot enhanced text): x as "1.29·10^9" with a 7 pt exponent (plots::sup), and a
+// closed form as the limits spell it ("45+18*sqrt(2)") written as mathematics ("45 + 18√2").
+std::string gp_power(double x, int significant = 3);
+std::string math_text(std::string_view exact);
+
 }  // namespace scalcal::reproduce

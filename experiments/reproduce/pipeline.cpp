@@ -1,6 +1,7 @@
 #include "experiments/reproduce/pipeline.hpp"
 
 #include <chrono>
+#include <iterator>
 #include <stdexcept>
 
 #include "experiments/reproduce/figures.hpp"
@@ -20,8 +21,11 @@ std::string preamble(const Context& ctx) {
       "`. Every number below is computed in this run; the paper's own numbers are quoted as the paper states "
       "them, beside scalcal's, with the difference. Criteria are normalised by N as in the paper: "
       "D = N^9 det K, A = N trace K, E = N lambda_max(K), S = N max_r K(r,r), and "
-      "theta_q = sqrt(N max K(r,r)) over each group of three parameters (bias, scale-factor deviation, "
-      "non-orthogonality), in units of the noise RMS sigma_omega.\n";
+      "θ_bias, θ_scale, θ_nonorth (the CLI's theta_bias, theta_scale, theta_nonorth) = sqrt(N max K(r,r)) over each "
+      "group of three parameters (bias, scale-factor deviation, non-orthogonality), in units of the noise RMS "
+      "sigma_omega. Each figure is a PDF drawn at its print size (one journal column, 85 mm, or both, 175 mm; "
+      "text 8 pt) with the same drawing as PNG (300 pixels per inch) and SVG, and the gnuplot script that makes "
+      "all three.\n";
   if (options.quick)
     p += "\n> **--quick run:** small sweeps (2-4 optimiser starts, few N); numbers "
          "are indicative only. Run `scalcal reproduce` without --quick for the full results.\n";
@@ -43,36 +47,55 @@ std::string epilogue(const Context& ctx, double total) {
 
 }  // namespace
 
-RunSummary run(const Options& options, bool show_progress) {
+RunSummary run(const Options& options, ProgressMode progress) {
   std::error_code ec;
   std::filesystem::create_directories(options.out, ec);
   if (ec || !std::filesystem::is_directory(options.out))
     throw std::runtime_error("cannot create the output folder '" + options.out.string() + "'");
 
   const auto t0 = std::chrono::steady_clock::now();
-  Context ctx(options, show_progress);
+  Context ctx(options, progress);
   using Stage = void (*)(Context&);
-  const std::pair<const char*, Stage> stages[] = {
-      {"analytic programs", compute_analytic},
-      {"random programs (total)", compute_random},
-      {"optimised programs (total)", compute_optimised},
-      {"figures 4-6", figures_4_5_6},
-      {"figure 7", figure_7},
-      {"figure 8", figure_8},
-      {"figure 9", figure_9},
-      {"figure 10", figure_limits},
-      {"figure 11", figure_sphere},
-      {"figure 12", figure_regions},
-      {"figure 13 (real log)", real_data},
-      {"tables 1-3", tables_1_2_3},
-      {"summary", summary},
+  // Each stage's weight for the time-left estimate: its seconds in REPORT.md's "Run" table of a full
+  // and a --quick run on two cores (full: 118 s, of which the optimiser 56 s and fig12's regions 60 s;
+  // quick: 14 s, fig12 11 s), the figure stages times 1.5 for the PDF rendered since.
+  struct Step {
+    const char* name;
+    Stage stage;
+    double full_seconds, quick_seconds;
   };
-  for (const auto& [name, stage] : stages) {
+  const Step stages[] = {
+      {"analytic programs", compute_analytic, 0.01, 0.01},
+      {"random programs (total)", compute_random, 0.5, 0.7},
+      {"optimised programs (total)", compute_optimised, 56, 0.7},
+      {"figures 4-6", figures_4_5_6, 0.3, 0.45},
+      {"figure 7", figure_7, 0.12, 0.25},
+      {"figure 8", figure_8, 0.1, 0.2},
+      {"figure 9", figure_9, 0.14, 0.3},
+      {"figure 10", figure_limits, 0.12, 0.2},
+      {"figure 11", figure_sphere, 0.13, 0.25},
+      {"figure 12", figure_regions, 60, 11},
+      {"figure 13 (real log)", real_data, 0.3, 0.45},
+      {"tables 1-3", tables_1_2_3, 0.01, 0.01},
+      {"summary", summary, 0.01, 0.01},
+  };
+  {
+    std::vector<std::string> names;
+    std::vector<double> weights;
+    for (const auto& s : stages) {
+      const std::string name(s.name);
+      names.push_back(name.substr(0, name.find(" (total)")));
+      weights.push_back(options.quick ? s.quick_seconds : s.full_seconds);
+    }
+    ctx.progress.plan(names, weights);
+  }
+  for (std::size_t i = 0; i < std::size(stages); ++i) {
+    ctx.progress.begin_stage(i);
     const auto s0 = std::chrono::steady_clock::now();
-    stage(ctx);
+    stages[i].stage(ctx);
     const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - s0).count();
     // The "(total)" stages record their own parts.
-    if (std::string(name).find("(total)") == std::string::npos) ctx.timings.emplace_back(name, s);
+    if (std::string(stages[i].name).find("(total)") == std::string::npos) ctx.timings.emplace_back(stages[i].name, s);
   }
   ctx.progress.done();
   const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -11,6 +11,8 @@ struct RunSummary {
 };
 
 // Creates options.out when missing. Throws std::runtime_error when a file cannot be written.
-RunSummary run(const Options& options, bool show_progress);
+// Progress goes to stderr as `progress` says: ProgressMode::off for --quiet, else
+// progress_mode(false, stderr is a terminal) (lines into a log, one line rewritten on a terminal).
+RunSummary run(const Options& options, ProgressMode progress);
 
 }  // namespace scalcal::reproduce

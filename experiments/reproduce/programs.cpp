@@ -14,7 +14,6 @@
 namespace scalcal::reproduce {
 
 void compute_analytic(Context& ctx) {
-  ctx.progress.stage("analytic programs");
   // Green squares of Fig. 4: orbits of the octahedral group with projections 1, sqrt2/2, sqrt3/3.
   for (int a = 0; a <= 8; ++a)
     for (int e = 0; e <= 4; ++e)
@@ -50,9 +49,12 @@ void compute_random(Context& ctx) {
   // on all cores; it is fast enough that --quick keeps the paper's count).
   ctx.random_count = 100000;
   const int n_lo = 9, n_hi = 36;
-  ctx.progress.stage("best of " + std::to_string(ctx.random_count) + " random programs, N = 9..36");
+  // One part per N, weighted by N: a random program costs its N rows.
+  const double all_rows = (n_lo + n_hi) * (n_hi - n_lo + 1) / 2.0;
+  double rows_before = 0;
   for (int n = n_lo; n <= n_hi; ++n) {
-    ctx.progress.step(n - n_lo, n_hi - n_lo + 1);
+    ctx.progress.part(rows_before / all_rows, n / all_rows, "N = " + std::to_string(n));
+    rows_before += n;
     const RandomSearchResult r = random_search(n, ctx.random_count, CriterionKind::D, ctx.options.seed, ctx.options.threads);
     ctx.random_best.emplace(n, make_entry("random", "random-best-" + std::to_string(n), "Fig. 4 (dashed)", r.program));
   }
@@ -86,12 +88,26 @@ void compute_optimised(Context& ctx) {
              {CriterionKind::E, range(9, 30), 0},
              {CriterionKind::S, range(9, 30), 0}};
   }
+  // One part of the stage per (criterion, N), weighted by the seconds one N took in a full run on two
+  // cores (fig10.csv's seconds column, N = 9..30: D 0.012, A 0.018, E 1.0, S 1.5 on average): E and S
+  // take nearly all of the stage.
+  auto weight = [](CriterionKind c) {
+    if (c == CriterionKind::D) return 0.012;
+    if (c == CriterionKind::A) return 0.018;
+    return c == CriterionKind::E ? 1.0 : 1.5;
+  };
   int total = 0, done = 0;
-  for (const auto& p : plans) total += static_cast<int>(p.sizes.size());
+  double all_work = 0, work_before = 0;
+  for (const auto& p : plans) {
+    total += static_cast<int>(p.sizes.size());
+    all_work += weight(p.criterion) * static_cast<double>(p.sizes.size());
+  }
   for (const auto& plan : plans)
     for (int n : plan.sizes) {
-      ctx.progress.stage("optimising " + std::string(criterion_name(plan.criterion)) + ", N = " + std::to_string(n) +
-                         " (" + std::to_string(done + 1) + "/" + std::to_string(total) + ")");
+      ctx.progress.part(work_before / all_work, weight(plan.criterion) / all_work,
+                        std::string(criterion_name(plan.criterion)) + ", N = " + std::to_string(n) + " (" +
+                            std::to_string(done + 1) + "/" + std::to_string(total) + ")");
+      work_before += weight(plan.criterion);
       SynthesisOptions so;
       so.positions = n;
       so.criterion = plan.criterion;

@@ -24,7 +24,7 @@ void real_data(Context& ctx) {
   constexpr double kG = 9.81744;  // the publishers' local gravity
   auto& rep = ctx.report;
   rep.heading(2, "fig13 (new): a real accelerometer log calibrated end to end");
-  ctx.progress.stage("real log: static intervals and calibration");
+  ctx.progress.detail("static intervals and calibration");
   const RawLog log = read_raw_log(data_dir() + "/xsens_acc.txt");
   const IntervalDetection d = detect_static_intervals(log);
   std::vector<PositionSamples> data;
@@ -70,30 +70,33 @@ void real_data(Context& ctx) {
       hi = std::max(hi, log.samples[static_cast<std::size_t>(i)].maxCoeff());
     }
   const double pad = 0.04 * (hi - lo), mid = 0.5 * (lo + hi), half = 0.5 * (hi - lo) + pad;
+  // Two panels on the page width with their keys in a common right margin; the axes are x, y, z in
+  // dark, medium, light over light grey static intervals.
   using namespace plots::style;
   std::string body =
-      "set multiplot layout 2,1 margins 0.08,0.97,0.08,0.95 spacing 0,0.14\nset grid\nset datafile separator ','\n"
-      "set key outside right top\n"
-      "set title '(a) the raw log (ADC counts) with the static intervals found shaded'\nset xlabel 't (s)'\n"
+      "set multiplot\nset grid\nset lmargin at screen 0.1\nset rmargin at screen 0.78\n"
+      "set key outside right top Left reverse samplen 2 width -1\nset label 1 '(a)' at graph 0, graph 1.04 left front\n"
+      "set tmargin at screen 0.94\nset bmargin at screen 0.6\nset xlabel 't (s)'\n"
       "set xrange [0:" + csv_num(std::ceil(log.t.back() / 10) * 10) + "]\n"
-      "set ylabel 'counts'\nset style fill transparent solid 0.18 noborder\nset yrange [" + csv_num(mid - half) + ":" +
+      "set ylabel 'ADC counts'\nset style fill solid 1.0 noborder\nset yrange [" + csv_num(mid - half) + ":" +
       csv_num(mid + half) + "]\n"
       "plot 'real_intervals.csv' skip 1 using (($2+$3)/2):(" + csv_num(mid) + "):(($3-$2)/2):(" + csv_num(half) +
-      ") with boxxyerror lc rgb '" +
-      std::string(uniform) + "' title 'static', \\\n"
-      "     'real_log.csv' skip 1 using 1:2 with lines lw 1 lc rgb '" + optimised + "' title 'x', \\\n"
-      "     'real_log.csv' skip 1 using 1:3 with lines lw 1 lc rgb '" + rotation + "' title 'y', \\\n"
-      "     'real_log.csv' skip 1 using 1:4 with lines lw 1 lc rgb '" + jig + "' title 'z'\n"
-      "set title '(b) |a| − g of each interval''s mean (m/s^2)'\nset xlabel 'interval'\nset ylabel '| |a| − g | (m/s^2)'\n"
-      "set xrange [0:" + std::to_string(d.intervals.size() + 1) + "]\nset yrange [*:*]\nset logscale y\nset format y '10^{%T}'\n"
-      "plot 'real_intervals.csv' skip 1 using 1:(abs($5)) with points pt 6 ps 1.3 lw 2 lc rgb '" + random +
-      "' title 'before: zero 32768, one gain for all axes', \\\n"
-      "     'real_intervals.csv' skip 1 using 1:(abs($6)) with points pt 7 ps 1.3 lc rgb '" + optimised +
-      "' title 'after scalcal calibrate'\nunset multiplot\n";
+      ") with boxxyerror lc rgb '#e3e3e3' title 'static', \\\n"
+      "     'real_log.csv' skip 1 using 1:2 with lines lw 1 lc rgb '" + dark + "' title 'x', \\\n"
+      "     'real_log.csv' skip 1 using 1:3 with lines lw 1 lc rgb '" + medium + "' title 'y', \\\n"
+      "     'real_log.csv' skip 1 using 1:4 with lines lw 1 lc rgb '" + light + "' title 'z'\n"
+      "set label 1 '(b)'\nset tmargin at screen 0.44\nset bmargin at screen 0.12\nset xlabel 'static interval'\n"
+      "set ylabel '| |a| − g | (m/s" + plots::sup("2") + ")'\nset xrange [0:" + std::to_string(d.intervals.size() + 1) +
+      "]\nset yrange [*:*]\nset logscale y\nset format y '10" + plots::sup("%T") + "'\n"
+      "plot 'real_intervals.csv' skip 1 using 1:(abs($5)) with points pt 6 ps 0.9 lw 1.5 lc rgb '" + grey +
+      "' title 'before (one gain)', \\\n"
+      "     'real_intervals.csv' skip 1 using 1:(abs($6)) with points pt 7 ps 0.9 lc rgb '" + dark +
+      "' title 'after calibration'\nunset multiplot\n";
   render_figure(ctx, "fig13", "the Xsens log with its static intervals, and |a| - g per interval before and after", body,
-                1400, 1000);
-  rep.figure("fig13", "fig13: (a) the raw log with the static intervals scalcal found (shaded); (b) | |a| − g | of each "
-                      "interval's mean before (zero 32768, one gain) and after calibration");
+                plots::kPageWidthCm, 9.5);
+  rep.figure("fig13", "fig13: (a) the raw log (ADC counts) with the static intervals scalcal found (shaded); (b) "
+                      "| |a| − g | of each interval's mean before calibration (zero at 32768, one gain for all three "
+                      "axes) and after");
   const ProgramAdvice advice = advise_program(Program{a.directions}, sphere_region(), CriterionKind::D, 3);
   const Evaluation& ev = advice.evaluation;
   rep.paragraph("`scalcal calibrate --measurements data/xsens_acc.txt --magnitude 9.81744` on the log of IMU-TK (" +

@@ -13,7 +13,7 @@ class Report {
  public:
   void heading(int level, const std::string& text);
   void paragraph(const std::string& text);
-  void figure(const std::string& stem, const std::string& caption);  // PNG embedded, SVG linked
+  void figure(const std::string& stem, const std::string& caption);  // PNG embedded, PDF and SVG linked
   void table(const std::vector<std::string>& header, const std::vector<std::vector<std::string>>& rows);
   void missing(const std::string& what);  // a clearly marked gap, never a made-up number
 

@@ -1,6 +1,8 @@
-// `scalcal reproduce --quick --out DIR`: every figure file exists (PNG by its signature, SVG by its
-// root element), the CSVs parse, and numbers in them match closed forms derived by hand:
-// classic18 (Fig. 1) has N^9 det K = 17006112 and the icosahedral jig 61509375/4.
+// `scalcal reproduce --quick --out DIR`: every figure file exists (PDF and PNG by their signatures,
+// SVG by its root element) at its stated print width, no figure repeats its caption as a title, the
+// CSVs parse, and numbers in them match closed forms derived by hand: classic18 (Fig. 1) has N^9 det K
+// = 17006112 and the icosahedral jig 61509375/4. Progress reaches a log as plain lines; --quiet
+// silences it.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -9,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -77,8 +80,14 @@ int ReproduceQuick::status_ = -1;
 
 TEST_F(ReproduceQuick, ExitsCleanly) { EXPECT_EQ(status_, 0) << slurp(dir_.string() + ".log"); }
 
-TEST_F(ReproduceQuick, EveryFigureHasPngSvgAndScript) {
-  for (const char* stem : {"fig4", "fig5", "fig6", "fig7", "fig8", "fig9"}) {
+const char* const kFigures[] = {"fig4", "fig5", "fig6", "fig7", "fig8", "fig9", "fig10", "fig11", "fig12", "fig13"};
+
+TEST_F(ReproduceQuick, EveryFigureHasPdfPngSvgAndScript) {
+  for (const char* stem : kFigures) {
+    const std::string pdf = slurp(dir_ / (std::string(stem) + ".pdf"));
+    ASSERT_GT(pdf.size(), 1000u) << stem;
+    EXPECT_EQ(pdf.substr(0, 5), "%PDF-") << stem;
+    EXPECT_NE(pdf.find("%%EOF"), std::string::npos) << stem;
     const std::string png = slurp(dir_ / (std::string(stem) + ".png"));
     ASSERT_GT(png.size(), 1000u) << stem;
     EXPECT_EQ(png.substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8)) << stem;
@@ -87,6 +96,48 @@ TEST_F(ReproduceQuick, EveryFigureHasPngSvgAndScript) {
     EXPECT_NE(svg.find("</svg>"), std::string::npos) << stem;
     EXPECT_NE(slurp(dir_ / (std::string(stem) + ".gp")).find("plot"), std::string::npos) << stem;
   }
+}
+
+// Each script states the width it is drawn for (one column, 85 mm, or two, 175 mm), and its PNG is
+// that width at 300 pixels per inch, so the text printed at that width keeps its size in points.
+TEST_F(ReproduceQuick, FiguresAreDrawnForAJournalColumn) {
+  for (const char* stem : kFigures) {
+    const std::string gp = slurp(dir_ / (std::string(stem) + ".gp"));
+    const bool one = gp.find("# intended print width: 85 mm (one journal column)") != std::string::npos;
+    const bool two = gp.find("# intended print width: 175 mm (two journal columns)") != std::string::npos;
+    EXPECT_TRUE(one || two) << stem << ":\n" << gp.substr(0, 400);
+    const std::string png = slurp(dir_ / (std::string(stem) + ".png"));
+    ASSERT_GT(png.size(), 24u) << stem;
+    const unsigned width = (static_cast<unsigned char>(png[16]) << 24) | (static_cast<unsigned char>(png[17]) << 16) |
+                           (static_cast<unsigned char>(png[18]) << 8) | static_cast<unsigned char>(png[19]);
+    EXPECT_EQ(width, one ? 1004u : 2067u) << stem;
+  }
+}
+
+// REPORT.md captions every figure; a title inside the image would say it twice (panel labels such as
+// "(a)" are labels, not titles).
+TEST_F(ReproduceQuick, FiguresHaveNoTitleOfTheirOwn) {
+  for (const char* stem : kFigures) {
+    const std::string gp = slurp(dir_ / (std::string(stem) + ".gp"));
+    EXPECT_EQ(gp.find("set title"), std::string::npos) << stem;
+    EXPECT_EQ(std::regex_search(gp, std::regex("multiplot[^\\n]* title ")), false) << stem;
+  }
+}
+
+// The limits print as mathematics, not as code.
+TEST_F(ReproduceQuick, LimitsAreWrittenAsMathematics) {
+  const std::string gp = slurp(dir_ / "fig10.gp");
+  EXPECT_EQ(gp.find("sqrt("), std::string::npos);
+  EXPECT_NE(gp.find("45 + 18√2"), std::string::npos);
+}
+
+// stderr is a log here, not a terminal: one line per stage with the time left, no carriage returns.
+TEST_F(ReproduceQuick, ProgressReachesALogAsLines) {
+  const std::string log = slurp(dir_.string() + ".log");
+  EXPECT_EQ(log.find('\r'), std::string::npos);
+  EXPECT_NE(log.find("[reproduce] 1/13 analytic programs"), std::string::npos) << log;
+  EXPECT_NE(log.find("[reproduce] 13/13 summary"), std::string::npos) << log;
+  EXPECT_NE(log.find(" left\n"), std::string::npos) << log;
 }
 
 TEST_F(ReproduceQuick, ReportEmbedsFiguresAndStatesThePapersNumbers) {
@@ -133,6 +184,19 @@ TEST_F(ReproduceQuick, ClosedFormsInTheCsv) {
     EXPECT_FALSE(read_csv(dir_ / f).empty()) << f;
   // The random line lies above the limit everywhere (the limit bounds every finite program).
   for (const auto& r : read_csv(dir_ / "fig4_random.csv")) EXPECT_GE(std::stod(r.at("D")), 61509375.0 / 4);
+}
+
+// --quiet: the run writes its files and nothing on stderr.
+TEST(ReproduceQuiet, PrintsNoProgress) {
+  const fs::path dir = fs::temp_directory_path() / ("scalcal_reproduce_quiet_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  const std::string err = dir.string() + ".err";
+  const std::string cmd = std::string(SCALCAL_CLI) + " reproduce --quick --quiet --out " + dir.string() + " > /dev/null 2> " + err;
+  EXPECT_EQ(std::system(cmd.c_str()), 0) << slurp(err);
+  EXPECT_EQ(slurp(err), "");
+  EXPECT_TRUE(fs::exists(dir / "REPORT.md"));
+  fs::remove_all(dir);
+  fs::remove(err);
 }
 
 }  // namespace
