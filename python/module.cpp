@@ -17,6 +17,7 @@
 #include "experiments/cli/evaluate_report.hpp"
 #include "experiments/cli/limits_report.hpp"
 #include "experiments/cli/optimize_report.hpp"
+#include "experiments/cli/synthesis_cli.hpp"
 #include "numeric/io/input_error.hpp"
 #include "numeric/io/measurements_csv.hpp"
 #include "numeric/program/catalogue.hpp"
@@ -37,21 +38,20 @@ std::string choice(const std::string& argument, const std::string& value, const 
   throw cli::UsageError(argument + ": '" + value + "' is not one of " + list);
 }
 
-long long in_range(const std::string& argument, long long value, long long lo, long long hi) {
-  if (value < lo || value > hi)
-    throw cli::UsageError(argument + ": " + std::to_string(value) + " is not in " + std::to_string(lo) + ".." +
-                          std::to_string(hi));
+// An integer argument within its CLI option's range; `none` (0: the default, no polish) is also taken.
+long long in_range(const std::string& argument, long long value, cli::IntegerRange range,
+                   std::optional<long long> none = std::nullopt) {
+  if (value == none) return value;
+  if (value < range.lo || value > range.hi)
+    throw cli::UsageError(argument + ": " + std::to_string(value) + " is not in " + std::to_string(range.lo) + ".." +
+                          std::to_string(range.hi));
   return value;
 }
 
-ModelKind model_of(const std::string& name) {
-  std::vector<std::string> names;
-  for (int i = 0; i < kModelCount; ++i) names.emplace_back(model_name(ModelKind(i)));
-  return *parse_model(choice("model", name, names));
-}
+ModelKind model_of(const std::string& name) { return *parse_model(choice("model", name, cli::model_names())); }
 
 CriterionKind criterion_of(const std::string& name) {
-  return *parse_criterion(choice("criterion", name, {"D", "A", "E", "S"}));
+  return *parse_criterion(choice("criterion", name, cli::criterion_names()));
 }
 
 // region: None, one spec, or a sequence of specs (their union), as repeated --region options.
@@ -92,14 +92,14 @@ py::object evaluate(const py::object& positions, const std::string& model, const
 py::object optimize(long long n, const std::string& criterion, const std::string& model, const py::object& region,
                     long long starts, long long seed, long long threads, long long digits, const std::string& local) {
   cli::OptimizeRequest q;
-  q.synthesis.positions = static_cast<int>(in_range("n", n, 3, 1000));
+  q.synthesis.positions = static_cast<int>(in_range("n", n, cli::kOptimizePositions));
   q.synthesis.criterion = criterion_of(criterion);
   q.synthesis.model = model_of(model);
-  q.synthesis.starts = static_cast<int>(in_range("starts", starts, 0, 1000000));
-  q.synthesis.seed = static_cast<std::uint64_t>(in_range("seed", seed, 0, 1LL << 62));
-  q.synthesis.threads = static_cast<int>(in_range("threads", threads, 0, 256));
+  q.synthesis.starts = static_cast<int>(in_range("starts", starts, cli::kStarts, 0));
+  q.synthesis.seed = static_cast<std::uint64_t>(in_range("seed", seed, cli::kSeeds));
+  q.synthesis.threads = static_cast<int>(in_range("threads", threads, cli::kThreads));
   q.synthesis.local = choice("local", local, {"auto", "ipopt"}) == "ipopt" ? LocalSolver::Ipopt : LocalSolver::Automatic;
-  q.digits = static_cast<int>(in_range("digits", digits, 0, 1000));
+  q.digits = static_cast<int>(in_range("digits", digits, cli::kPolishDigits, 0));
   q.regions = regions_of(region);
   return computed([&] { return cli::optimize_report(q); });
 }
@@ -124,7 +124,7 @@ py::object calibrate(const py::object& samples, const py::object& magnitude, con
   q.modulus = choice("modulus", modulus, {"norm", "projection"}) == "norm" ? Modulus::norm : Modulus::projection;
   q.weights = choice("weights", weights, {"auto", "samples", "positions"});
   q.keep_outliers = keep_outliers;
-  q.suggest = static_cast<int>(in_range("suggest", suggest, 0, 100));
+  q.suggest = static_cast<int>(in_range("suggest", suggest, cli::kSuggestions));
   q.criterion = criterion_of(criterion);
   q.regions = regions_of(region);
   q.model = model_of(model);

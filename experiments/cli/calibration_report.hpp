@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "experiments/cli/options.hpp"
 #include "experiments/cli/report.hpp"
 #include "numeric/calibration/scalar_calibration.hpp"
 #include "numeric/calibration/static_intervals.hpp"
@@ -14,6 +15,8 @@
 #include "numeric/model/registry.hpp"
 
 namespace scalcal::cli {
+
+inline constexpr IntegerRange kSuggestions{0, 100};  // positions to suggest adding
 
 struct CalibrationRequest {
   std::string file;                 // the data's name in messages

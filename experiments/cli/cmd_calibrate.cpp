@@ -71,7 +71,7 @@ Runner setup(CLI::App& app) {
              {"each position's weight: its number of samples, or 1; auto: positions for a raw log, samples otherwise"});
   add_switch(app, "--keep-outliers", o->keep_outliers,
              "keep samples more than 10 robust scales from their position's median (excluded by default)");
-  add_integer(app, "--suggest", o->suggest, 0, 100, {"how many positions to suggest adding", "positions"});
+  add_integer(app, "--suggest", o->suggest, kSuggestions.lo, kSuggestions.hi, {"how many positions to suggest adding", "positions"});
   add_criterion(app, o->criterion, "D");
   add_region_option(app, o->regions);
   add_model(app, o->model);

@@ -36,7 +36,7 @@ int run(Options& o) {
 
 Runner setup(CLI::App& app) {
   auto o = std::make_shared<Options>();
-  add_integer(app, "--positions", o->synthesis.positions, 3, 1000,
+  add_integer(app, "--positions", o->synthesis.positions, kOptimizePositions.lo, kOptimizePositions.hi,
               {"number of positions N (at least the model's number of parameters)", "positions", kRequired});
   add_criterion(app, o->criterion);
   add_model(app, o->model);
@@ -44,7 +44,7 @@ Runner setup(CLI::App& app) {
   add_region_option(app, o->regions);
   add_seed(app, o->synthesis.seed);
   add_threads(app, o->synthesis.threads);
-  add_integer(app, "--digits", o->digits, 1, 1000,
+  add_integer(app, "--digits", o->digits, kPolishDigits.lo, kPolishDigits.hi,
               {"polish the optimum to this many digits in MPFR", "significant digits", "none (no polish)"});
   add_choice(app, "--local", o->local, {"auto", "ipopt"},
              {"local solver: auto = Newton for D and A, Ipopt for E and S; ipopt = Ipopt for all"});

@@ -4,10 +4,13 @@
 #include <string>
 #include <vector>
 
+#include "experiments/cli/options.hpp"
 #include "experiments/cli/report.hpp"
 #include "numeric/synthesis/multistart.hpp"
 
 namespace scalcal::cli {
+
+inline constexpr IntegerRange kOptimizePositions{3, 1000}, kPolishDigits{1, 1000};
 
 struct OptimizeRequest {
   SynthesisOptions synthesis;        // N, criterion, model, starts, seed, threads, local solver, progress

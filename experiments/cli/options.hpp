@@ -34,6 +34,11 @@ struct NumberRange {
   bool positive = false;
 };
 inline NumberRange number_in(double lo, double hi) { return {lo, hi, false}; }
+
+// The accepted values of an integer option, where the Python module takes the same argument too.
+struct IntegerRange {
+  long long lo, hi;
+};
 inline NumberRange positive_number() { return {0, std::numeric_limits<double>::max(), true}; }
 
 // Integers are read as decimal text (CLI11 alone would read "010" as octal and "-1" as a huge

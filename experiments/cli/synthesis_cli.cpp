@@ -8,8 +8,20 @@
 
 namespace scalcal::cli {
 
+std::vector<std::string> criterion_names() {
+  std::vector<std::string> names;
+  for (auto c : kCriteria) names.emplace_back(criterion_name(c));
+  return names;
+}
+
+std::vector<std::string> model_names() {
+  std::vector<std::string> names;
+  for (int i = 0; i < kModelCount; ++i) names.emplace_back(model_name(ModelKind(i)));
+  return names;
+}
+
 void add_criterion(CLI::App& app, std::string& target, const std::string& fallback_text) {
-  add_choice(app, "--criterion", target, {"D", "A", "E", "S"},
+  add_choice(app, "--criterion", target, criterion_names(),
              {"the criterion: D = N^9 det K, A = N trace K, E = N lambda_max K, S = N max K(r,r)", "none",
               fallback_text});
 }
@@ -21,9 +33,7 @@ CriterionKind criterion_of(const std::string& name) {
 }
 
 void add_model(CLI::App& app, std::string& target) {
-  std::vector<std::string> names;
-  for (int i = 0; i < kModelCount; ++i) names.push_back(std::string(model_name(ModelKind(i))));
-  add_choice(app, "--model", target, names,
+  add_choice(app, "--model", target, model_names(),
              {"the calibration model: paper9 (the paper's 9 parameters), axis6 (bias and scale factor), bias3 "
               "(offsets only), cubic12 (paper9 plus x^3, y^3, z^3)"});
 }
@@ -43,16 +53,16 @@ void require_positions(const std::string& command, int positions, ModelKind mode
 }
 
 void add_seed(CLI::App& app, std::uint64_t& seed) {
-  add_integer(app, "--seed", seed, 0, 1LL << 62, {"seed of every random choice (the same seed, the same answer)"});
+  add_integer(app, "--seed", seed, kSeeds.lo, kSeeds.hi, {"seed of every random choice (the same seed, the same answer)"});
 }
 
 void add_starts(CLI::App& app, int& starts) {
-  add_integer(app, "--starts", starts, 1, 1000000,
+  add_integer(app, "--starts", starts, kStarts.lo, kStarts.hi,
               {"random starts of the multistart", "starts", "chosen to find the global optimum for N <= 30; 8 on a restricted --region"});
 }
 
 void add_threads(CLI::App& app, int& threads) {
-  add_integer(app, "--threads", threads, 0, 256, {"worker threads or processes", "threads", "0 = all cores"});
+  add_integer(app, "--threads", threads, kThreads.lo, kThreads.hi, {"worker threads or processes", "threads", "0 = all cores"});
 }
 
 }  // namespace scalcal::cli

@@ -3,7 +3,7 @@
 #pragma once
 #include <cstdint>
 #include <string>
-
+#include <vector>
 
 #include "experiments/cli/options.hpp"
 #include "numeric/criteria/registry.hpp"
@@ -19,6 +19,12 @@ void add_model(CLI::App& app, std::string& target);
 ModelKind model_of(const std::string& name);  // a name add_model has checked
 // UsageError from `command` unless positions >= the model's number of parameters.
 void require_positions(const std::string& command, int positions, ModelKind model);
+
+inline constexpr IntegerRange kSeeds{0, 1LL << 62}, kStarts{1, 1000000}, kThreads{0, 256};
+
+// The names --criterion and --model accept, in the registries' order.
+std::vector<std::string> criterion_names();
+std::vector<std::string> model_names();
 
 void add_seed(CLI::App& app, std::uint64_t& seed);
 void add_starts(CLI::App& app, int& starts);
