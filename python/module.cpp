@@ -22,6 +22,7 @@
 #include "numeric/io/measurements_csv.hpp"
 #include "numeric/program/catalogue.hpp"
 #include "python/from_numpy.hpp"
+#include "symbolic/family.hpp"
 #include "python/to_python.hpp"
 
 namespace py = pybind11;
@@ -162,6 +163,7 @@ PYBIND11_MODULE(scalcal, m) {
   using namespace scalcal::python;
   m.doc() = "scalcal: calibration programs for the scalar calibration of vector meters";
   m.attr("__version__") = SCALCAL_VERSION;
+  symbolic::register_family_programs();  // the families' program names, as the CLI has them
   static py::exception<InputError> input_error(m, "InputError", PyExc_ValueError);
   static py::exception<cli::UsageError> usage_error(m, "UsageError", PyExc_ValueError);
   py::register_exception_translator([](std::exception_ptr p) {

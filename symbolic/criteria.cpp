@@ -168,7 +168,7 @@ ExactCriteria exact_criteria(const matrix& M, const ex& N, const std::vector<Par
   c.K_diagonal.assign(static_cast<std::size_t>(P), ex(0));
   ex det = 1, trace = 0;
   std::vector<ex> eig;
-  bool eig_exact = true;
+  bool eig_exact = true, eig_symbolic = false;
   for (const auto& idx : blocks(M)) {
     const unsigned s = idx.size();
     matrix B(s, s);
@@ -184,13 +184,27 @@ ExactCriteria exact_criteria(const matrix& M, const ex& N, const std::vector<Par
       trace += k;
     }
     auto ev = block_eigenvalues(B);
-    if (ev.empty()) ev = numeric_eigenvalues(B), eig_exact = false;
+    if (ev.empty()) {
+      eig_exact = false;
+      // A block of symbols with no closed-form eigenvalues (a jig turned by a symbolic angle): E has
+      // no value here, the other criteria keep theirs.
+      bool numbers = true;
+      for (unsigned i = 0; i < s && numbers; ++i)
+        for (unsigned j = 0; j < s; ++j)
+          if (!GiNaC::is_a<GiNaC::numeric>(GiNaC::evalf(B(i, j)))) numbers = false;
+      if (!numbers) {
+        eig_symbolic = true;
+        continue;
+      }
+      ev = numeric_eigenvalues(B);
+    }
     eig.insert(eig.end(), ev.begin(), ev.end());
   }
   c.eigenvalues = eig;
   c.D.candidates = {canonical(GiNaC::pow(N, P) / det)};
   c.A.candidates = {canonical(N * trace)};
-  for (const auto& l : eig) add_distinct(c.E.candidates, eig_exact ? canonical(N / l) : GiNaC::evalf(N / l));
+  if (!eig_symbolic)
+    for (const auto& l : eig) add_distinct(c.E.candidates, eig_exact ? canonical(N / l) : GiNaC::evalf(N / l));
   c.E.exact = eig_exact;
   for (int r = 0; r < P; ++r) add_distinct(c.S.candidates, canonical(N * c.K_diagonal[r]));
   ExactValue* theta[4] = {&c.theta_bias, &c.theta_scale, &c.theta_nonorth, &c.theta_cubic};

@@ -1,7 +1,10 @@
-// Families of calibration programs with exact coordinates, discovered by name. A family is one
-// file in symbolic/families/ defining `Family NAME_family()` plus one line in family_list.cpp.
+// Families of calibration programs with exact coordinates, discovered by file. A family is one
+// file in symbolic/families/ defining `std::vector<Family> FILE_families()` (FILE its name without
+// .cpp); the build lists the folder, so `family`, `evaluate`, `catalogue`, `optimize --from`, `augment`,
+// `polish`, `certify` and the reproduction find it with no other edit (ADDING_A_FAMILY.md).
 // Parameter values are GiNaC expressions: numbers give numbers, names give closed forms in them.
 #pragma once
+#include <deque>
 #include <functional>
 #include <map>
 #include <optional>
@@ -19,6 +22,8 @@ struct FamilyParam {
   std::string key;
   std::string fallback;  // default value, as text
   std::string doc;
+  // How the text of a value becomes an expression; empty: GiNaC's parser (numbers and symbols).
+  std::function<GiNaC::ex(const std::string& text, GiNaC::parser& reader)> read = {};
 };
 
 using ParamMap = std::map<std::string, GiNaC::ex>;
@@ -33,13 +38,31 @@ struct Family {
   std::string name;
   std::string summary;
   std::vector<FamilyParam> params;
+  // Program names of this family: literal text with {key} for a parameter given as a number
+  // ("octa-{k}"); any parameter may also follow as @key=value ("jig:cube@orientation=aa:0,0,1,30").
+  // Empty: the family has no program names of its own (the paper's four, whose names numeric owns).
+  std::string pattern;
+  std::string group = "family";  // "jig" puts it among the printable jigs of the figures and tables
+  std::string source = "scalcal";  // where it comes from, for the catalogue
+  // The exact positions with their multiplicities (integers for a program). A family that gives
+  // them needs nothing else: instance and numeric below are derived when left empty.
+  std::function<std::vector<WeightedPoint>(const ParamMap&)> points;
   std::function<FamilyInstance(const ParamMap&)> instance;
-  // The same program built by numeric/program.hpp (for cross-checks); nullopt when a parameter
-  // is symbolic.
+  // The same program in double (nullopt when a parameter is symbolic): numeric/program.hpp's
+  // constructor where one exists, else the exact points rounded.
   std::function<std::optional<Program>(const ParamMap&)> numeric;
 };
 
-const std::vector<Family>& families();
+// Every family: those of symbolic/families/ in file order, then those registered at run time.
+const std::deque<Family>& families();
+
+// Adds a family at run time (a test's own, a plug-in's), with its program names. Throws
+// std::invalid_argument for a name already taken.
+void register_family(Family family);
+
+// Registers every family's program names with numeric's registry (numeric/program/program_names.hpp);
+// front ends (the CLI, the Python module) call it once at start. Idempotent.
+void register_family_programs();
 
 // Throws InputError for an unknown name.
 const Family& find_family(const std::string& name);
@@ -50,7 +73,12 @@ ParamMap parse_params(const Family& family, const std::vector<std::string>& sett
 
 // A parameter that must be a number: an integer in [lo, hi] (throws InputError otherwise).
 int integer_param(const ParamMap& p, const std::string& key, int lo, int hi);
-// True when the value holds no symbol.
+// True when the value holds no symbol (a list: when none of its elements does).
 bool is_number(const GiNaC::ex& e);
+// A value as text for output: canonical_text, a list as {a,b,...}.
+std::string param_text(const GiNaC::ex& e);
+
+// Exact points with integer multiplicities as a program in double (each point repeated).
+Program rounded_program(const std::vector<WeightedPoint>& points);
 
 }  // namespace scalcal::symbolic

@@ -45,7 +45,7 @@ Runner setup(CLI::App& app) {
 }
 
 const Registration reg({"catalogue", "catalogue [--json]",
-                        "every named program of the paper with its source and criteria", 5, setup});
+                        "every named program (the paper's, the printable jigs, the families') with its source and criteria", 5, setup});
 
 }  // namespace
 }  // namespace scalcal::cli

@@ -38,7 +38,14 @@ Json positions_value(const GiNaC::ex& N) {
 int run(const Options& o) {
   const auto& family = symbolic::find_family(o.name);
   const auto params = symbolic::parse_params(family, o.params);
-  const auto inst = family.instance(params);
+  symbolic::FamilyInstance inst;
+  try {
+    inst = family.instance(params);
+  } catch (const std::runtime_error& e) {
+    if (dynamic_cast<const InputError*>(&e)) throw;
+    throw InputError(o.name, 0, std::string("no closed form for these symbolic parameters (GiNaC: ") + e.what() +
+                                    "); give numbers instead");
+  }
   const ModelKind model = model_of(o.model);
   const bool paper9 = model == ModelKind::paper9;
   const int P = model_parameters(model);
@@ -54,6 +61,11 @@ int run(const Options& o) {
     throw InputError(o.name, 0,
                      "the information matrix is singular: these parameters cannot identify all " +
                          (paper9 ? std::string("nine") : std::to_string(P) + " parameters of --model " + o.model));
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::runtime_error& e) {  // GiNaC's: e.g. a nested radical under a symbolic rotation
+    throw InputError(o.name, 0, std::string("no closed form for these symbolic parameters (GiNaC: ") + e.what() +
+                                    "); give numbers instead");
   }
   const std::string n = symbolic::canonical_text(inst.N);
   struct Row {
@@ -69,7 +81,7 @@ int run(const Options& o) {
     if (!t.v->candidates.empty()) rows.push_back(t);  // only the groups the model has
   if (o.json) {
     Json ps = Json::object();
-    for (const auto& [k, v] : params) ps[k] = symbolic::canonical_text(v);
+    for (const auto& [k, v] : params) ps[k] = symbolic::param_text(v);
     // positions is always the exact text; positions_value the number, null when N is symbolic.
     Json out{{"family", family.name}, {"params", ps}, {"positions", n}};
     if (!paper9) out["model"] = o.model;
@@ -83,7 +95,7 @@ int run(const Options& o) {
     return 0;
   }
   std::cout << "family " << family.name;
-  for (const auto& [k, v] : params) std::cout << " " << k << "=" << symbolic::canonical_text(v);
+  for (const auto& [k, v] : params) std::cout << " " << k << "=" << symbolic::param_text(v);
   if (!paper9) std::cout << " (model " << o.model << ", D = N^" << P << " det K)";
   std::cout << "\npositions N = " << n << "\n";
   for (const auto& r : rows) {
@@ -95,8 +107,12 @@ int run(const Options& o) {
 }
 
 std::string names() {
-  std::string u;
+  std::string u, jigs;
   for (const auto& f : symbolic::families()) {
+    if (f.group == "jig") {  // twelve and more: one entry for all, their parameter once
+      jigs += (jigs.empty() ? "" : ",") + f.name.substr(4);
+      continue;
+    }
     u += " " + f.name;
     if (!f.params.empty()) {
       u += "[";
@@ -105,7 +121,7 @@ std::string names() {
       u += "]";
     }
   }
-  return u;
+  return jigs.empty() ? u : u + " jig:{" + jigs + "}[orientation=identity]";
 }
 
 Runner setup(CLI::App& app) {

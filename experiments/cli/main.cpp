@@ -12,6 +12,7 @@
 #include "experiments/cli/options.hpp"
 #include "experiments/cli/output_file.hpp"
 #include "numeric/io/input_error.hpp"
+#include "symbolic/family.hpp"
 
 namespace {
 
@@ -43,6 +44,7 @@ int fail(const std::string& command, const std::string& message, int status) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  scalcal::symbolic::register_family_programs();  // every family's names, for every PROGRAM argument
   const std::vector<std::string> args(argv + 1, argv + argc);
   if (args.empty()) {
     print_overview(std::cerr);

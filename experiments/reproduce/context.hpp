@@ -47,6 +47,7 @@ struct Context {
   std::vector<std::string> optimiser_failures;  // optimised programs rejected by scalcal's own evaluation
 
   std::vector<Entry> uniform, rotation, jigs, paper, analytic9;  // analytic classes and the paper's tables
+  std::vector<Entry> printable;  // the registry's printable jigs (group "jig"), default mounting, full rank
   std::map<int, Entry> random_best;                              // best of random_count programs per N (D)
   long long random_count = 0;
   std::map<std::pair<CriterionKind, int>, Entry> optimised;       // (criterion, N)

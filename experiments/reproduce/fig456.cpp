@@ -22,7 +22,7 @@ constexpr double kLimitTolerance = 1e-5;
 void figures_4_5_6(Context& ctx) {
   const double limit = criterion_limit(CriterionKind::D).value;
   std::vector<const Entry*> drawn;
-  for (const auto* group : {&ctx.uniform, &ctx.rotation, &ctx.jigs})
+  for (const auto* group : {&ctx.uniform, &ctx.rotation, &ctx.jigs, &ctx.printable})
     for (const auto& e : *group) drawn.push_back(&e);
   for (int n : ctx.optimised_sizes(CriterionKind::D)) drawn.push_back(ctx.optimum(CriterionKind::D, n));
   {
@@ -47,7 +47,7 @@ void figures_4_5_6(Context& ctx) {
   // Fig. 4: the key sits top right, above the falling cloud of points.
   render_figure(ctx, "fig4", "generalized variance det K against N (the paper's Fig. 4)",
                 common + "set logscale y\nset format y '10" + plots::sup("%L") +
-                    "'\nset yrange [5e-9:10]\nset ylabel 'det K (dimensionless)'\n"
+                    "'\nset yrange [5e-9:3e3]\nset ylabel 'det K (dimensionless)'\n"
                     "set key top right Left reverse box opaque samplen 2.5 width -5\n" +
                     class_plot({5, true, true, false}, ctx),
                 plots::kColumnWidthCm, 7);
@@ -136,7 +136,9 @@ void figures_4_5_6(Context& ctx) {
                                                              " only)";
   r.figure("fig4", "Fig. 4: det K (K for unit-vector rows, dimensionless) against N: uniform projections (squares), "
                    "rotation about each axis [12] (stars), scalcal's D-optimal programs (triangles), the dodecahedral "
-                   "and icosahedral jigs (open circle, diamond) and the best of " + std::to_string(ctx.random_count) +
+                   "and icosahedral jigs (open circle, diamond), the " + std::to_string(ctx.printable.size()) +
+                   " printable jigs of full rank in their default mounting (open squares; experiments/docs/jigs.md) "
+                   "and the best of " + std::to_string(ctx.random_count) +
                    " random programs per N (dashed" + random_n + ")");
   r.figure("fig5", "Fig. 5: det K normalised by N^9, symbols as in Fig. 4; the arrow marks the one program above the "
                    "range, with its value");

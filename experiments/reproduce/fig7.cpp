@@ -15,7 +15,7 @@ void figure_7(Context& ctx) {
   // bulk, and a program more than 1.5 times above all others (the rotation program at N = 9) gets an
   // arrow at the top edge with its value.
   std::vector<std::pair<double, const Entry*>> bias;
-  for (const auto* g : {&ctx.uniform, &ctx.rotation, &ctx.jigs})
+  for (const auto* g : {&ctx.uniform, &ctx.rotation, &ctx.jigs, &ctx.printable})
     for (const auto& e : *g) bias.emplace_back(e.ev.theta_bias, &e);
   for (int n : ctx.optimised_sizes(CriterionKind::D)) bias.emplace_back(ctx.optimum(CriterionKind::D, n)->ev.theta_bias,
                                                                          ctx.optimum(CriterionKind::D, n));
@@ -63,7 +63,7 @@ void figure_7(Context& ctx) {
     hi = std::max(hi, e.ev.theta_bias);
     ++count;
   };
-  for (const auto* g : {&ctx.uniform, &ctx.rotation, &ctx.jigs, &ctx.paper})
+  for (const auto* g : {&ctx.uniform, &ctx.rotation, &ctx.jigs, &ctx.printable, &ctx.paper})
     for (const auto& e : *g) take(e);
   for (const auto& [k, e] : ctx.optimised) take(e);
   auto& r = ctx.report;

@@ -76,6 +76,9 @@ std::string class_plot(const ClassPlot& p, const Context& ctx) {
   parts.push_back(series("strcol(2) eq 'icosahedral-20'", p.column,
                          std::string("with points pt 12 ps 1.9 lw 2 lc rgb '") + jig + "'",
                          title("icosahedral jig (N = 20)", "icosahedral jig")));
+  parts.push_back(series("strcol(1) eq 'printable'", p.column,
+                         std::string("with points pt 4 ps 0.9 lw 1.5 lc rgb '") + jig + "'",
+                         title("printable jigs (scalcal)", "printable jigs")));
   std::string plot = "plot ";
   for (std::size_t i = 0; i < parts.size(); ++i) plot += (i ? ", \\\n     " : "") + parts[i];
   return plot + "\n";

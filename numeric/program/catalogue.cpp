@@ -8,6 +8,7 @@
 
 #include "numeric/io/input_error.hpp"
 #include "numeric/io/program_csv.hpp"
+#include "numeric/program/program_names.hpp"
 
 namespace scalcal {
 
@@ -69,9 +70,8 @@ double parse_phase(const std::string& s, const std::string& name) {
 // recursive matcher can exhaust the stack on a long input).
 constexpr std::size_t kMaxNameLength = 64;
 
-}  // namespace
-
-std::optional<Program> named_program(const std::string& name) {
+// The paper's programs and its parametric classes (Figs. 1-4, Tables 1-3) and random programs.
+std::optional<Program> paper_program(const std::string& name) {
   std::smatch m;
   if (name == "classic18") return Program::classic18();
   if (name == "nine-2axes") return Program::nine_two_axes();
@@ -113,19 +113,17 @@ std::optional<Program> named_program(const std::string& name) {
   return std::nullopt;
 }
 
-Program resolve_program(const std::string& argument) {
-  if (auto p = named_program(argument)) return *p;
-  std::error_code ec;  // exists() throws on a name too long for the system; with ec it says false
-  if (std::filesystem::exists(argument, ec) || argument.find('/') != std::string::npos ||
-      argument.ends_with(".csv"))
-    return read_program_csv(argument);
-  throw InputError(argument, 0, "neither a catalogue name nor a file (see `scalcal catalogue`)");
-}
+}  // namespace
 
-std::vector<CatalogueEntry> catalogue() {
-  std::vector<CatalogueEntry> c;
+ProgramNames paper_program_names() {
+  ProgramNames p;
+  p.key = "paper";
+  p.pattern = "classic18, nine-2axes, nine-3axes, rotation-K[-pDEG], octahedral-A-E-D, dodecahedral-12, icosahedral-20, "
+              "table1-A, table2-E, table3-S, random-N[-sSEED]";
+  p.group = "paper";
+  p.resolve = paper_program;
   auto add = [&](const std::string& name, const std::string& description, const std::string& source) {
-    c.push_back({name, description, source, *named_program(name)});
+    p.listed.push_back({name, description, source});
   };
   add("classic18", "axes along/against the vector + 4 positions at 45 deg per axis pair", "Fig. 1, ref. [14]");
   add("nine-2axes", "6 axis positions + 3 projecting on two axes", "refs. [8, 14]");
@@ -145,6 +143,28 @@ std::vector<CatalogueEntry> catalogue() {
   add("icosahedral-20", "icosahedral jig: 20 face normals", "Fig. 4, ref. [25]");
   for (const auto& t : kTables) add(t.name, t.description, std::string("Table ") + t.name[5]);
   add("random-18-s1", "18 positions uniform on the sphere, seed 1", "Fig. 4 (dashed: best of many)");
+  return p;
+}
+
+std::optional<Program> named_program(const std::string& name) {
+  for (const auto& entry : program_names())
+    if (auto p = entry.resolve(name)) return p;
+  return std::nullopt;
+}
+
+Program resolve_program(const std::string& argument) {
+  if (auto p = named_program(argument)) return *p;
+  std::error_code ec;  // exists() throws on a name too long for the system; with ec it says false
+  if (std::filesystem::exists(argument, ec) || argument.find('/') != std::string::npos ||
+      argument.ends_with(".csv"))
+    return read_program_csv(argument);
+  throw InputError(argument, 0, "neither a catalogue name nor a file (see `scalcal catalogue`)");
+}
+
+std::vector<CatalogueEntry> catalogue() {
+  std::vector<CatalogueEntry> c;
+  for (const auto& entry : program_names())
+    for (const auto& l : entry.listed) c.push_back({l.name, l.description, l.source, *entry.resolve(l.name)});
   return c;
 }
 

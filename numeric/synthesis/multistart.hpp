@@ -5,6 +5,7 @@
 #pragma once
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 
 #include "numeric/criteria/registry.hpp"
@@ -24,6 +25,9 @@ struct SynthesisOptions {
   int threads = 0;           // 0: all cores
   LocalSolver local = LocalSolver::Automatic;
   std::function<void(int done, int total)> progress;  // called from one thread at a time
+  // Start 0 is this program instead of a random one (optimize --from: a lab's program or a family
+  // member as a start); its size must be `positions`.
+  std::optional<Program> first_start;
 };
 
 struct SynthesisResult {

@@ -78,12 +78,16 @@ SynthesisResult synthesize(const SynthesisOptions& options) {
   if (options.positions < Model::kParameters)
     throw std::invalid_argument("synthesize: at least " + std::to_string(Model::kParameters) + " positions are needed");
   if (options.starts < 0) throw std::invalid_argument("synthesize: the number of starts must not be negative");
+  if (options.first_start && options.first_start->size() != options.positions)
+    throw std::invalid_argument("synthesize: the first start has " + std::to_string(options.first_start->size()) +
+                                " positions, not " + std::to_string(options.positions));
   const auto t0 = std::chrono::steady_clock::now();
   const int starts = options.starts > 0 ? options.starts : C::default_starts(options.positions);
   const int workers = thread_count(options.threads);
   const std::vector<LocalResult> results = run_in_workers(
       starts, workers, options.positions,
       [&](int k) {
+        if (k == 0 && options.first_start) return local_start<C, Model>(*options.first_start, options.local);
         Program start = Program::random(options.positions, start_seed(options.seed, static_cast<std::uint64_t>(k)));
         // The paper's model keeps its random starts (its results are documented); every other
         // registered model exchanges every second start onto a grid first (exchange_start.hpp) for

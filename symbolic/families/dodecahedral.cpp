@@ -25,7 +25,7 @@ std::vector<WeightedPoint> dodecahedral_points() {
   return pts;
 }
 
-Family dodecahedral_family() {
+std::vector<Family> dodecahedral_families() {
   Family f;
   f.name = "dodecahedral";
   f.summary = "12-face jig: the face normals of a regular dodecahedron (12 positions)";
@@ -34,7 +34,7 @@ Family dodecahedral_family() {
     return FamilyInstance{12, moment_matrix(points), point_moments(points)};
   };
   f.numeric = [](const ParamMap&) -> std::optional<Program> { return Program::dodecahedral(); };
-  return f;
+  return {f};
 }
 
 }  // namespace scalcal::symbolic

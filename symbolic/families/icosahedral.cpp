@@ -29,7 +29,7 @@ std::vector<WeightedPoint> icosahedral_points() {
   return pts;
 }
 
-Family icosahedral_family() {
+std::vector<Family> icosahedral_families() {
   Family f;
   f.name = "icosahedral";
   f.summary = "20-face jig: the face normals of a regular icosahedron (20 positions)";
@@ -38,7 +38,7 @@ Family icosahedral_family() {
     return FamilyInstance{20, moment_matrix(points), point_moments(points)};
   };
   f.numeric = [](const ParamMap&) -> std::optional<Program> { return Program::icosahedral(); };
-  return f;
+  return {f};
 }
 
 }  // namespace scalcal::symbolic

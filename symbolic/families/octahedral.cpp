@@ -3,6 +3,7 @@
 // (sqrt3/3 on three), with multiplicities axes, edges, diagonals (numbers or symbols).
 #include "symbolic/exact.hpp"
 #include "symbolic/family.hpp"
+#include "symbolic/octahedral_orbits.hpp"
 
 namespace scalcal::symbolic {
 
@@ -11,25 +12,8 @@ using GiNaC::ex;
 namespace {
 
 std::vector<WeightedPoint> octahedral_points(const ex& axes, const ex& edges, const ex& diagonals) {
-  std::vector<WeightedPoint> pts;
-  for (int axis = 0; axis < 3; ++axis)
-    for (int s : {1, -1}) {
-      Point v{0, 0, 0};
-      v[axis] = s;
-      pts.push_back({axes, v});
-    }
-  const ex e = GiNaC::sqrt(ex(2)) / 2, d = GiNaC::sqrt(ex(3)) / 3;
-  for (int axis = 0; axis < 3; ++axis)
-    for (int s1 : {1, -1})
-      for (int s2 : {1, -1}) {
-        Point v{0, 0, 0};
-        v[axis] = s1 * e;
-        v[(axis + 1) % 3] = s2 * e;
-        pts.push_back({edges, v});
-      }
-  for (int s1 : {1, -1})
-    for (int s2 : {1, -1})
-      for (int s3 : {1, -1}) pts.push_back({diagonals, Point{s1 * d, s2 * d, s3 * d}});
+  std::vector<WeightedPoint> pts = axis_orbit(axes);
+  for (const auto& more : {edge_orbit(edges), diagonal_orbit(diagonals)}) pts.insert(pts.end(), more.begin(), more.end());
   return pts;
 }
 
@@ -40,7 +24,7 @@ int multiplicity(const ParamMap& p, const std::string& key) {
 
 }  // namespace
 
-Family octahedral_family() {
+std::vector<Family> octahedral_families() {
   Family f;
   f.name = "octahedral";
   f.summary = "orbits of the axes (6), edges (12) and diagonals (8) with multiplicities";
@@ -58,7 +42,7 @@ Family octahedral_family() {
     if (a < 0 || e < 0 || d < 0) return std::nullopt;
     return Program::octahedral(a, e, d);
   };
-  return f;
+  return {f};
 }
 
 }  // namespace scalcal::symbolic

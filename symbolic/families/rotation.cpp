@@ -62,7 +62,7 @@ FamilyInstance rotation_instance(int k, const ex& phase_deg) {
   return {3 * k, M, moment};
 }
 
-Family rotation_family() {
+std::vector<Family> rotation_families() {
   Family f;
   f.name = "rotation";
   f.summary = "k positions per ring while rotating about each axis in turn (3k positions)";
@@ -80,7 +80,7 @@ Family rotation_family() {
     const double phase = GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(p.at("phase"))).to_double();
     return Program::rotation(integer_param(p, "k", 3, 100000), phase);
   };
-  return f;
+  return {f};
 }
 
 }  // namespace scalcal::symbolic

@@ -180,6 +180,22 @@ TEST_F(ReproduceQuick, ClosedFormsInTheCsv) {
   }
   EXPECT_TRUE(classic);
   EXPECT_TRUE(icosa);
+  // The registry's printable jigs are drawn beside the paper's two: the rhombic dodecahedron's 12
+  // faces are the edge positions, D = 81/((1/3 - 3b)^2 b^3) at b = 1/12 = 20155392 by hand; the
+  // icosidodecahedron is a 5-design, at the limit.
+  bool rhombic = false, icosidodeca = false;
+  for (const auto& r : rows) {
+    if (r.at("name") == "jig:rhombic-dodecahedron") {
+      rhombic = true;
+      EXPECT_NEAR(std::stod(r.at("D")), 20155392.0, 20155392.0 * 1e-12);
+    }
+    if (r.at("name") == "jig:icosidodecahedron") {
+      icosidodeca = true;
+      EXPECT_NEAR(std::stod(r.at("D")), 61509375.0 / 4, 61509375.0 / 4 * 1e-12);
+    }
+  }
+  EXPECT_TRUE(rhombic);
+  EXPECT_TRUE(icosidodeca);
   for (const char* f : {"fig4_random.csv", "fig8a.csv", "fig8b.csv", "fig9.csv", "fig9_cov.csv", "tables.csv"})
     EXPECT_FALSE(read_csv(dir_ / f).empty()) << f;
   // The random line lies above the limit everywhere (the limit bounds every finite program).

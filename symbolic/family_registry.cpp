@@ -1,0 +1,259 @@
+// The registry of families: the files of symbolic/families/ (listed by the build into
+// family_files.inc, one X(FILE) each) and those registered at run time, and their program names
+// in numeric's registry.
+#include <mutex>
+#include <regex>
+#include <stdexcept>
+
+#include "numeric/io/input_error.hpp"
+#include "numeric/io/program_csv.hpp"
+#include "numeric/program/program_names.hpp"
+#include "symbolic/exact.hpp"
+#include "symbolic/family.hpp"
+
+namespace scalcal::symbolic {
+
+#define X(file) std::vector<Family> file##_families();
+#include "family_files.inc"
+#undef X
+
+namespace {
+
+// Fills what a family that gives its points leaves out.
+Family completed(Family f) {
+  if (f.points && !f.instance)
+    f.instance = [points = f.points](const ParamMap& p) {
+      const auto pts = points(p);
+      GiNaC::ex n = 0;
+      for (const auto& w : pts) n += w.weight;
+      return FamilyInstance{GiNaC::expand(n), moment_matrix(pts), point_moments(pts)};
+    };
+  if (f.points && !f.numeric)
+    f.numeric = [points = f.points](const ParamMap& p) -> std::optional<Program> {
+      for (const auto& [k, v] : p)
+        if (!is_number(v)) return std::nullopt;
+      return rounded_program(points(p));
+    };
+  return f;
+}
+
+struct Store {
+  std::mutex mutex;
+  std::deque<Family> all;
+  Store() {
+#define X(file) \
+  for (auto& f : file##_families()) all.push_back(completed(std::move(f)));
+#include "family_files.inc"
+#undef X
+  }
+};
+
+Store& store() {
+  static Store s;
+  return s;
+}
+
+// A parameter value inside a program name: a decimal or a fraction, signed.
+constexpr const char* kNumberInName = R"((-?[0-9]+(?:\.[0-9]+)?(?:/[0-9]+)?))";
+constexpr std::size_t kMaxNameLength = 200;
+
+std::string regex_escaped(const std::string& s) {
+  static const std::string special = R"(\^$.|?*+()[]{}/)";
+  std::string out;
+  for (char c : s) {
+    if (special.find(c) != std::string::npos) out += '\\';
+    out += c;
+  }
+  return out;
+}
+
+std::vector<std::string> split(const std::string& s, char sep) {
+  std::vector<std::string> parts;
+  std::size_t from = 0;
+  for (std::size_t at; (at = s.find(sep, from)) != std::string::npos; from = at + 1) parts.push_back(s.substr(from, at - from));
+  parts.push_back(s.substr(from));
+  return parts;
+}
+
+// The resolver of a family's program names: the pattern's literal text with a number at each {key},
+// then any @key=value.
+std::function<std::optional<Program>(const std::string&)> name_resolver(const Family& family) {
+  std::string re;
+  std::vector<std::string> keys;
+  const std::string& pat = family.pattern;
+  for (std::size_t i = 0; i < pat.size();) {
+    if (pat[i] == '{') {
+      const std::size_t close = pat.find('}', i);
+      if (close == std::string::npos) throw std::invalid_argument("family " + family.name + ": unclosed { in pattern");
+      keys.push_back(pat.substr(i + 1, close - i - 1));
+      re += kNumberInName;
+      i = close + 1;
+    } else {
+      const std::size_t next = pat.find('{', i);
+      re += regex_escaped(pat.substr(i, next == std::string::npos ? std::string::npos : next - i));
+      i = next == std::string::npos ? pat.size() : next;
+    }
+  }
+  const std::string family_name = family.name;
+  return [re = std::regex(re), keys, family_name](const std::string& name) -> std::optional<Program> {
+    if (name.size() > kMaxNameLength) return std::nullopt;
+    const std::size_t at = name.find('@');
+    const std::string base = name.substr(0, at);
+    std::smatch m;
+    if (!std::regex_match(base, m, re)) return std::nullopt;
+    std::vector<std::string> settings;
+    for (std::size_t k = 0; k < keys.size(); ++k) settings.push_back(keys[k] + "=" + m[k + 1].str());
+    if (at != std::string::npos)
+      for (const auto& s : split(name.substr(at + 1), '@')) {
+        // A name is a number's text, not a computation: GiNaC evaluates powers and factorials of
+        // numbers eagerly, and 9^9^9 would take the machine's memory.
+        if (s.find_first_of("^!") != std::string::npos)
+          throw InputError(name, 0, "'" + display_name(s) + "': powers (^) and factorials (!) are not taken in a program name");
+        settings.push_back(s);
+      }
+    const Family& f = find_family(family_name);
+    std::optional<Program> p;
+    try {
+      const ParamMap params = parse_params(f, settings);
+      for (const auto& [k, v] : params)
+        if (!is_number(v)) throw InputError("", 0, k + " must be a number in a program name, not " + param_text(v));
+      p = f.numeric(params);
+    } catch (const InputError& e) {
+      throw InputError(name, 0, e.reason());
+    } catch (const std::exception& e) {  // GiNaC's, or a family's own invalid_argument
+      throw InputError(name, 0, std::string("not a program of family ") + family_name + " (" + e.what() + ")");
+    }
+    if (!p) throw InputError(name, 0, "family " + family_name + " gives no numeric program for these parameters");
+    if (p->size() < 1 || p->size() > kMaximumPositions)
+      throw InputError(name, 0, std::to_string(p->size()) + " positions; a program holds 1.." +
+                                    std::to_string(kMaximumPositions));
+    return p;
+  };
+}
+
+void register_names(const Family& f) {
+  if (f.pattern.empty()) return;
+  ProgramNames names;
+  names.key = "family:" + f.name;
+  names.pattern = f.pattern;
+  names.group = f.group;
+  names.resolve = name_resolver(f);
+  if (f.pattern.find('{') == std::string::npos) names.listed.push_back({f.pattern, f.summary, f.source});
+  register_program_names(std::move(names));
+}
+
+}  // namespace
+
+const std::deque<Family>& families() { return store().all; }
+
+void register_family(Family family) {
+  Store& s = store();
+  {
+    const std::lock_guard<std::mutex> lock(s.mutex);
+    for (const auto& f : s.all)
+      if (f.name == family.name) throw std::invalid_argument("register_family: the name " + f.name + " is taken");
+    s.all.push_back(completed(std::move(family)));
+  }
+  register_names(s.all.back());
+}
+
+void register_family_programs() {
+  for (const auto& f : families()) register_names(f);
+}
+
+const Family& find_family(const std::string& name) {
+  std::string known;
+  for (const auto& f : families()) {
+    if (f.name == name) return f;
+    known += (known.empty() ? "" : ", ") + f.name;
+  }
+  throw InputError("family", 0, "unknown family '" + display_name(name) + "' (known: " + known + ")");
+}
+
+bool is_number(const GiNaC::ex& e) {
+  if (GiNaC::is_a<GiNaC::lst>(e) || GiNaC::is_a<GiNaC::matrix>(e)) {
+    for (std::size_t i = 0; i < e.nops(); ++i)
+      if (!is_number(e.op(i))) return false;
+    return true;
+  }
+  const GiNaC::ex v = GiNaC::evalf(e);
+  return GiNaC::is_a<GiNaC::numeric>(v) && GiNaC::ex_to<GiNaC::numeric>(v).is_real();
+}
+
+std::string param_text(const GiNaC::ex& e) {
+  if (GiNaC::is_a<GiNaC::matrix>(e)) {
+    const auto& m = GiNaC::ex_to<GiNaC::matrix>(e);
+    std::string s = "[";
+    for (unsigned r = 0; r < m.rows(); ++r) {
+      s += r ? ",[" : "[";
+      for (unsigned c = 0; c < m.cols(); ++c) s += (c ? "," : "") + canonical_text(m(r, c));
+      s += "]";
+    }
+    return s + "]";
+  }
+  if (GiNaC::is_a<GiNaC::lst>(e)) {
+    std::string s = "{";
+    for (std::size_t i = 0; i < e.nops(); ++i) s += (i ? "," : "") + param_text(e.op(i));
+    return s + "}";
+  }
+  return canonical_text(e);
+}
+
+ParamMap parse_params(const Family& family, const std::vector<std::string>& settings) {
+  GiNaC::parser reader;
+  ParamMap out;
+  auto read = [&](const FamilyParam& p, const std::string& text) {
+    try {
+      out[p.key] = p.read ? p.read(text, reader) : reader(text);
+    } catch (const InputError&) {
+      throw;
+    } catch (const std::exception& e) {
+      throw InputError("--param", 0, p.key + "=" + display_name(text) + ": not an expression (" + e.what() + ")");
+    }
+  };
+  for (const auto& p : family.params) read(p, p.fallback);
+  for (const auto& s : settings) {
+    const auto eq = s.find('=');
+    if (eq == std::string::npos || eq == 0)
+      throw InputError("--param", 0, "expected key=value, got '" + display_name(s) + "'");
+    const std::string key = s.substr(0, eq);
+    const FamilyParam* param = nullptr;
+    for (const auto& p : family.params)
+      if (p.key == key) param = &p;
+    if (!param) throw InputError("--param", 0, "family " + family.name + " has no parameter '" + display_name(key) + "'");
+    read(*param, s.substr(eq + 1));
+  }
+  return out;
+}
+
+int integer_param(const ParamMap& p, const std::string& key, int lo, int hi) {
+  const GiNaC::ex v = p.at(key);
+  if (!GiNaC::is_a<GiNaC::numeric>(v) || !GiNaC::ex_to<GiNaC::numeric>(v).is_integer())
+    throw InputError("--param", 0, key + " must be an integer");
+  const long n = GiNaC::ex_to<GiNaC::numeric>(v).to_long();
+  if (n < lo || n > hi)
+    throw InputError("--param", 0, key + " must lie in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+  return static_cast<int>(n);
+}
+
+Program rounded_program(const std::vector<WeightedPoint>& points) {
+  Program p;
+  for (const auto& w : points) {
+    if (!GiNaC::is_a<GiNaC::numeric>(w.weight) || !GiNaC::ex_to<GiNaC::numeric>(w.weight).is_integer() ||
+        GiNaC::ex_to<GiNaC::numeric>(w.weight).is_negative())
+      throw InputError("", 0, "a multiplicity must be a non-negative integer, not " + canonical_text(w.weight));
+    const long times = GiNaC::ex_to<GiNaC::numeric>(w.weight).to_long();
+    if (times > kMaximumPositions) throw InputError("", 0, "a multiplicity above " + std::to_string(kMaximumPositions));
+    Vec3 v;
+    for (int c = 0; c < 3; ++c) {
+      const GiNaC::ex x = GiNaC::evalf(w.eta[c]);
+      if (!GiNaC::is_a<GiNaC::numeric>(x) || !GiNaC::ex_to<GiNaC::numeric>(x).is_real())
+        throw InputError("", 0, "a coordinate is not a real number: " + canonical_text(w.eta[c]));
+      v(c) = GiNaC::ex_to<GiNaC::numeric>(x).to_double();
+    }
+    for (long k = 0; k < times; ++k) p.positions.push_back(v);
+  }
+  return p;
+}
+
+}  // namespace scalcal::symbolic
