@@ -1,4 +1,5 @@
 // `scalcal catalogue [--json]`: every named program with its source and criteria.
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -23,16 +24,18 @@ int run(bool json) {
     print_json(all);
     return 0;
   }
-  std::printf("%-16s %3s %4s %14s %9s %9s %9s %7s %7s %7s  %s\n", "program", "N", "rank", "D=N^9detK", "A", "E",
+  int width = 16;  // the paper's names fit; the families' (jig:rhombic-triacontahedron) widen the column
+  for (const auto& e : entries) width = std::max(width, static_cast<int>(e.name.size()));
+  std::printf("%-*s %3s %4s %14s %9s %9s %9s %7s %7s %7s  %s\n", width, "program", "N", "rank", "D=N^9detK", "A", "E",
               "S", "th_b", "th_dk", "th_g", "source");
   for (const auto& e : entries) {
     const Evaluation ev = evaluate(e.program);
     if (!ev.full_rank()) {
-      std::printf("%-16s %3d %4d  %s  %s\n", e.name.c_str(), ev.positions, ev.rank, rank_deficiency(ev).c_str(),
+      std::printf("%-*s %3d %4d  %s  %s\n", width, e.name.c_str(), ev.positions, ev.rank, rank_deficiency(ev).c_str(),
                   e.source.c_str());
       continue;
     }
-    std::printf("%-16s %3d %4d %14.6g %9.4f %9.4f %9.4f %7.4f %7.4f %7.4f  %s\n", e.name.c_str(), ev.positions,
+    std::printf("%-*s %3d %4d %14.6g %9.4f %9.4f %9.4f %7.4f %7.4f %7.4f  %s\n", width, e.name.c_str(), ev.positions,
                 ev.rank, ev.D, ev.A, ev.E, ev.S, ev.theta_bias, ev.theta_scale, ev.theta_nonorth, e.source.c_str());
   }
   return 0;

@@ -129,7 +129,9 @@ int run(const Options& o) {
                   best.starts, best.hits, best.spread);
     how = buf;
   }
+  const symbolic::SymbolicLimit limit = symbolic::symbolic_limit(c);
   std::string exact_best, exact_orientation;
+  bool at_limit = false;  // the exact value at the mounting found is the limit: optimal, whatever the search
   if (!invariant)
     if (const auto X = exact_rotation(best.orientation)) {
       auto turned = params;
@@ -144,13 +146,17 @@ int run(const Options& o) {
           for (int r = 0; r < 3; ++r)
             for (int k = 0; k < 3; ++k) best.orientation(r, k) = as_double((*X)(r, k));
           best.value = v->number();
+          at_limit = symbolic::is_zero_exact(v->value() - limit.value);
         }
       } catch (const std::exception&) {  // no closed form at this mounting: the numbers stand
       }
     }
+  if (at_limit) {
+    status = "proven";
+    how = "the value is the limit, below which no program goes (search: " + how + ")";
+  }
   const Program program = mounted(best.orientation, normals);
   const Evaluation after = evaluate(program);
-  const symbolic::SymbolicLimit limit = symbolic::symbolic_limit(c);
   const double limit_value = as_double(limit.value);
   const std::string exact_value =
       invariant && facts.at_default && facts.at_default->of(c)->exact ? facts.at_default->of(c)->str() : "";
@@ -189,10 +195,14 @@ int run(const Options& o) {
               best.value, best.value_default, exact_value.empty() ? "" : ", exactly ", exact_value.c_str());
   std::printf("  %s: %s\n", status.c_str(), how.c_str());
   if (!exact_best.empty())
-    std::printf("  at the exact mounting %s the value is exactly %s (its optimality is numerical)\n",
-                exact_orientation.c_str(), exact_best.c_str());
-  std::printf("limit %s = %.10g, ratio %.10g: %s, %s (%s)\n", symbolic::canonical_text(limit.value).c_str(), limit_value,
-              best.value / limit_value, claim.status.c_str(), claim.proven ? "proven" : "numerical", claim.reason.c_str());
+    std::printf("  at the exact mounting %s the value is exactly %s%s\n", exact_orientation.c_str(), exact_best.c_str(),
+                at_limit ? "" : " (its optimality is numerical)");
+  const std::string limit_text = symbolic::canonical_text(limit.value);
+  char limit_number[32];
+  std::snprintf(limit_number, sizeof limit_number, "%.10g", limit_value);
+  std::printf("limit %s%s%s, ratio %.10g: %s, %s (%s)\n", limit_text.c_str(), limit_text == limit_number ? "" : " = ",
+              limit_text == limit_number ? "" : limit_number, best.value / limit_value, claim.status.c_str(),
+              claim.proven ? "proven" : "numerical", claim.reason.c_str());
   std::printf("meter axes in jig coordinates (mount the meter so that its axes point along these):\n");
   const char* axis[3] = {"x", "y", "z"};
   for (int r = 0; r < 3; ++r)

@@ -29,8 +29,8 @@ for jig in jigs:
           f"{g(c['theta_bias'], 5)} | {g(c['theta_scale'], 5)} | {g(c['theta_nonorth'], 5)} |")
 
 print()
-print("| jig | criterion | default mounting | best mounting | exact there | ratio to the limit | the limit | how |")
-print("| --- | --- | ---: | ---: | --- | ---: | --- | --- |")
+print("| jig | criterion | default mounting | best mounting | exact there | θ_bias, θ_scale, θ_nonorth there | ratio to the limit | the limit | how |")
+print("| --- | --- | ---: | ---: | --- | --- | ---: | --- | --- |")
 for jig in jigs:
     for crit in "DAES":
         r = load(jig, crit)
@@ -41,8 +41,10 @@ for jig in jigs:
         how = r["value_status"]
         if "starts" in r:
             how += f", {r['hits']}/{r['starts']} starts agree"
+        b = r["criteria_best"]
+        thetas = ", ".join(g(b[k], 5) for k in ("theta_bias", "theta_scale", "theta_nonorth"))
         print(f"| `{jig}` | {crit} | {g(r['value_default_orientation'], 10)} | {g(r['value'], 10)} | "
-              f"{('`' + exact + '`') if exact else ''} | {r['ratio']:.6f} | {r['limit_claim']} ({proven}) | {how} |")
+              f"{('`' + exact + '`') if exact else ''} | {thetas} | {r['ratio']:.6f} | {r['limit_claim']} ({proven}) | {how} |")
 
 print()
 print("Best mountings that differ from the default (rows: the meter's x, y, z axes in jig coordinates):")

@@ -11,7 +11,7 @@ namespace scalcal::testing {
 namespace {
 
 const char* const kCommands[] = {"catalogue", "evaluate", "calibrate", "optimize", "random", "simulate",
-                                 "sweep",     "polish",   "reproduce", "family",   "limits"};
+                                 "sweep",     "polish",   "reproduce", "family",   "limits", "jig"};
 
 int lines(const std::string& s) { return static_cast<int>(std::count(s.begin(), s.end(), '\n')); }
 
