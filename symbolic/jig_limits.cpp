@@ -12,15 +12,6 @@ namespace {
 
 long double_factorial(int n) { return n <= 1 ? 1 : n * double_factorial(n - 2); }
 
-// x^a y^b z^c with x^0 = 1 also for x = 0 (GiNaC leaves 0^0 undefined).
-ex monomial(const Point& p, int a, int b, int c) {
-  ex m = 1;
-  const int e[3] = {a, b, c};
-  for (int i = 0; i < 3; ++i)
-    for (int k = 0; k < e[i]; ++k) m *= p[i];
-  return m;
-}
-
 ex total_weight(const std::vector<WeightedPoint>& points) {
   ex n = 0;
   for (const auto& w : points) n += w.weight;
@@ -37,14 +28,11 @@ ex sphere_moment(int a, int b, int c) {
 
 bool is_design(const std::vector<WeightedPoint>& points, int t) {
   const ex n = total_weight(points);
+  const MomentFunction moment = point_moments(points);
   for (int d = 1; d <= t; ++d)
     for (int a = 0; a <= d; ++a)
-      for (int b = 0; a + b <= d; ++b) {
-        const int c = d - a - b;
-        ex sum = 0;
-        for (const auto& w : points) sum += w.weight * monomial(w.eta, a, b, c);
-        if (!is_zero_exact(sum - n * sphere_moment(a, b, c))) return false;
-      }
+      for (int b = 0; a + b <= d; ++b)
+        if (!is_zero_exact(moment(a, b, d - a - b) - n * sphere_moment(a, b, d - a - b))) return false;
   return true;
 }
 
