@@ -99,7 +99,7 @@ py::object optimize(long long n, const std::string& criterion, const std::string
   q.synthesis.starts = static_cast<int>(in_range("starts", starts, cli::kStarts, 0));
   q.synthesis.seed = static_cast<std::uint64_t>(in_range("seed", seed, cli::kSeeds));
   q.synthesis.threads = static_cast<int>(in_range("threads", threads, cli::kThreads));
-  q.synthesis.local = choice("local", local, {"auto", "ipopt"}) == "ipopt" ? LocalSolver::Ipopt : LocalSolver::Automatic;
+  q.synthesis.local = cli::local_solver_of(choice("local", local, cli::local_solver_names()));
   q.digits = static_cast<int>(in_range("digits", digits, cli::kPolishDigits, 0));
   q.regions = regions_of(region);
   return computed([&] { return cli::optimize_report(q); });

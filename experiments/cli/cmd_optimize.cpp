@@ -43,7 +43,7 @@ int run(Options& o) {
   }
   OptimizeRequest q{o.synthesis, o.regions, o.digits, o.out};
   q.synthesis.criterion = criterion_of(o.criterion);
-  q.synthesis.local = o.local == "ipopt" ? LocalSolver::Ipopt : LocalSolver::Automatic;
+  q.synthesis.local = local_solver_of(o.local);
   q.synthesis.model = model_of(o.model);
   if (progress_enabled())
     q.synthesis.progress = [](int done, int total) { std::cerr << "\rstart " << done << "/" << total << std::flush; };
@@ -68,8 +68,10 @@ Runner setup(CLI::App& app) {
   add_threads(app, o->synthesis.threads);
   add_integer(app, "--digits", o->digits, kPolishDigits.lo, kPolishDigits.hi,
               {"polish the optimum to this many digits in MPFR", "significant digits", "none (no polish)"});
-  add_choice(app, "--local", o->local, {"auto", "ipopt"},
-             {"local solver: auto = Newton for D and A, Ipopt for E and S; ipopt = Ipopt for all"});
+  add_choice(app, "--local", o->local, local_solver_names(),
+             {"local solver: auto = Riemannian Newton for D and A below N = 40, L-BFGS from N = 40, Ipopt for E "
+              "and S (E warm-started by A's solver); newton, lbfgs = that solver for D, A and E's warm start; "
+              "ipopt = Ipopt for all"});
   add_text(app, "--out", o->out, "FILE",
            {"write the program (the polished one with --digits) as CSV x,y,z,alpha1_deg,alpha2_deg", "file path"});
   add_switch(app, "--json", o->json, "print one JSON object");

@@ -81,7 +81,7 @@ struct Task {
 
 // One task's result as JSON (doubles print with 17 digits, so rank 0 reads back the same bits).
 Json encode(std::size_t task, const SynthesisResult& r) {
-  return Json{{"task", task},   {"value", r.value},       {"starts", r.starts},   {"hits", r.hits},
+  return Json{{"task", task},   {"value", r.value},       {"starts", r.starts},   {"stopping", r.stopping}, {"hits", r.hits},
               {"distinct", r.distinct}, {"seconds", r.seconds}, {"program", program_json(r.program)}};
 }
 
@@ -89,6 +89,7 @@ SynthesisResult decode(const Json& j) {
   SynthesisResult r;
   r.value = j.at("value").get<double>();
   r.starts = j.at("starts").get<int>();
+  r.stopping = j.at("stopping").get<std::string>();
   r.hits = j.at("hits").get<int>();
   r.distinct = j.at("distinct").get<int>();
   r.seconds = j.at("seconds").get<double>();
@@ -159,7 +160,7 @@ int run(const Options& o) {
     if (o.json) {
       Json j{{"positions", n},  {"criterion", name},       {"value", r.value},
              {"ratio", r.value / limit}, {"program", program_json(r.program)}, {"hits", r.hits},
-             {"starts", r.starts}, {"distinct", r.distinct}};
+             {"starts", r.starts}, {"stopping", r.stopping}, {"distinct", r.distinct}};
       if (!o.no_timing) j["seconds"] = r.seconds;
       if (!paper9) {
         j["model"] = std::string(model_name(model));

@@ -62,6 +62,7 @@ Report optimize_report(const OptimizeRequest& o) {
            {"value", r.value},
            {"program", program_json(best)},
            {"starts", r.starts},
+           {"stopping", r.stopping},
            {"hits", r.hits},
            {"distinct", r.distinct},
            {"seconds", r.seconds},
@@ -89,7 +90,7 @@ Report optimize_report(const OptimizeRequest& o) {
   {
     std::ostringstream text;
     text << criterion_name(opt.criterion) << " = " << std::setprecision(15) << r.value << "  (N = " << opt.positions
-         << ", " << r.hits << " of " << r.starts << " starts reached it, " << r.distinct
+         << ", " << r.hits << " of " << r.starts << " starts reached it (stopped: " << r.stopping << "), " << r.distinct
          << (r.distinct == 1 ? " program" : " distinct programs") << " up to symmetry, " << std::setprecision(3)
          << r.seconds << " s)\n";
     if (limit && !paper9)

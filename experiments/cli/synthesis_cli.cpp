@@ -20,6 +20,15 @@ std::vector<std::string> model_names() {
   return names;
 }
 
+std::vector<std::string> local_solver_names() { return {"auto", "newton", "lbfgs", "ipopt"}; }
+
+LocalSolver local_solver_of(const std::string& name) {
+  return name == "newton" ? LocalSolver::Newton
+         : name == "lbfgs" ? LocalSolver::Lbfgs
+         : name == "ipopt" ? LocalSolver::Ipopt
+                           : LocalSolver::Automatic;
+}
+
 void add_criterion(CLI::App& app, std::string& target, const std::string& fallback_text) {
   add_choice(app, "--criterion", target, criterion_names(),
              {"the criterion: D = N^9 det K, A = N trace K, E = N lambda_max K, S = N max K(r,r)", "none",

@@ -8,6 +8,7 @@
 #include "experiments/cli/options.hpp"
 #include "numeric/criteria/registry.hpp"
 #include "numeric/model/registry.hpp"
+#include "numeric/synthesis/local_result.hpp"
 
 namespace scalcal::cli {
 
@@ -25,6 +26,10 @@ inline constexpr IntegerRange kSeeds{0, 1LL << 62}, kStarts{1, 1000000}, kThread
 // The names --criterion and --model accept, in the registries' order.
 std::vector<std::string> criterion_names();
 std::vector<std::string> model_names();
+
+// --local auto|newton|lbfgs|ipopt: the multistart's local solver.
+std::vector<std::string> local_solver_names();
+LocalSolver local_solver_of(const std::string& name);  // a name of local_solver_names()
 
 void add_seed(CLI::App& app, std::uint64_t& seed);
 void add_starts(CLI::App& app, int& starts);

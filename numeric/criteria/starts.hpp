@@ -6,4 +6,12 @@ namespace scalcal {
 
 constexpr int grown_starts(int base, int positions) { return positions <= 12 ? base : base + (positions - 12); }
 
+// The starts that always run before the adaptive rule (synthesis/stopping_rule.hpp) may end a
+// multistart: C::minimum_starts(N) where the criterion knows a deceptive N, else none.
+template <class C>
+constexpr int minimum_starts(int positions) {
+  if constexpr (requires { C::minimum_starts(positions); }) return C::minimum_starts(positions);
+  else return 0;
+}
+
 }  // namespace scalcal

@@ -62,6 +62,7 @@ SynthesisResult synthesize_region_with(const SynthesisOptions& options, const Re
       [&](int k) { return region_start<C>(region, candidates, options.positions, options.seed, k); }, options.progress);
   SynthesisResult out = best_of_starts<C>(results);
   out.starts = starts;
+  out.stopping = (options.starts > 0 ? "forced " : "cap ") + std::to_string(starts);
   out.local_solver = region.zones.empty() ? "exchange" : "exchange+ipopt";
   out.summary.message = out.summary.message == "exchange"
                             ? "the best start is an exchange optimum on the candidates"

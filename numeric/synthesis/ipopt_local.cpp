@@ -12,6 +12,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Eigenvalues>
@@ -31,6 +32,10 @@ class ProgramNlp : public Ipopt::TNLP {
  public:
   ProgramNlp(const SmoothProblem& problem, std::vector<double> start, const PositionBounds* bounds)
       : p_(problem), x0_(std::move(start)), n_(static_cast<int>(x0_.size())) {
+    const int coordinates = 3 * p_.positions();
+    for (int r = 0; r < n_; ++r)
+      for (int c = 0; c <= r; ++c)
+        if ((r == c && r < coordinates) || p_.hessian_entry_used(r, c)) hessian_pattern_.emplace_back(r, c);
     if (bounds)
       for (int i = 0; i < p_.positions(); ++i) {
         const PositionBound& b = (*bounds)[static_cast<std::size_t>(i)];
@@ -45,7 +50,7 @@ class ProgramNlp : public Ipopt::TNLP {
     n = n_;
     m = p_.positions() + p_.constraints() + static_cast<int>(zones_.size());
     nnz_jac = 3 * p_.positions() + p_.constraints() * n_ + 3 * static_cast<int>(zones_.size());
-    nnz_h = n_ * (n_ + 1) / 2;
+    nnz_h = dense_hessian() ? n_ * (n_ + 1) / 2 : static_cast<Index>(hessian_pattern_.size());
     style = TNLP::C_STYLE;
     return true;
   }
@@ -131,11 +136,19 @@ class ProgramNlp : public Ipopt::TNLP {
     return p_.constraint_values(x, g.data(), values + 3 * N);
   }
 
-  // Lower triangle, dense: the criterion's Lagrangian Hessian plus 2 lambda_i I_3 from the norm
-  // constraints |eta_i|^2 = 1.
+  // Lower triangle (dense, or the problem's pattern gathered from a dense buffer): the criterion's
+  // Lagrangian Hessian plus 2 lambda_i I_3 from the norm constraints |eta_i|^2 = 1.
   bool eval_h(Index, const Number* x, bool, Number obj_factor, Index, const Number* lambda, bool, Index,
               Index* rows, Index* cols, Number* values) override {
+    const bool dense = dense_hessian();
     if (values == nullptr) {
+      if (!dense) {
+        for (std::size_t k = 0; k < hessian_pattern_.size(); ++k) {
+          rows[k] = hessian_pattern_[k].first;
+          cols[k] = hessian_pattern_[k].second;
+        }
+        return true;
+      }
       for (Index r = 0, k = 0; r < n_; ++r)
         for (Index c = 0; c <= r; ++c, ++k) {
           rows[k] = r;
@@ -143,8 +156,15 @@ class ProgramNlp : public Ipopt::TNLP {
         }
       return true;
     }
-    if (!p_.lagrangian_hessian(x, obj_factor, lambda + p_.positions(), values)) return false;
-    for (Index r = 0; r < 3 * p_.positions(); ++r) values[r * (r + 1) / 2 + r] += 2.0 * lambda[r / 3];
+    if (!dense) lower_.resize(static_cast<std::size_t>(n_) * static_cast<std::size_t>(n_ + 1) / 2);
+    Number* lower = dense ? values : lower_.data();
+    if (!p_.lagrangian_hessian(x, obj_factor, lambda + p_.positions(), lower)) return false;
+    for (Index r = 0; r < 3 * p_.positions(); ++r) lower[r * (r + 1) / 2 + r] += 2.0 * lambda[r / 3];
+    if (!dense)
+      for (std::size_t k = 0; k < hessian_pattern_.size(); ++k) {
+        const auto [r, c] = hessian_pattern_[k];
+        values[k] = lower[static_cast<std::size_t>(r) * static_cast<std::size_t>(r + 1) / 2 + static_cast<std::size_t>(c)];
+      }
     return true;
   }
 
@@ -167,6 +187,14 @@ class ProgramNlp : public Ipopt::TNLP {
   int n_;
   std::vector<ZoneRow> zones_;  // linear rows: their Hessian is zero
   std::vector<int> fixed_;
+  // The entries the problem says can be nonzero (with the norm constraints' diagonal), in Ipopt's
+  // order; all of them when it declares none zero.
+  std::vector<std::pair<Index, Index>> hessian_pattern_;
+  std::vector<Number> lower_;  // the dense lower triangle a sparse pattern is gathered from
+
+  bool dense_hessian() const {
+    return hessian_pattern_.size() == static_cast<std::size_t>(n_) * static_cast<std::size_t>(n_ + 1) / 2;
+  }
 };
 
 }  // namespace

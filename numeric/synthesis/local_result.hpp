@@ -7,7 +7,9 @@
 namespace scalcal {
 
 enum class LocalSolver {
-  Automatic,  // Riemannian Newton where the criterion is smooth, else Ipopt
+  Automatic,  // for smooth criteria Riemannian Newton below N = 40, L-BFGS from there; else Ipopt
+  Newton,     // Riemannian Newton for the smooth criteria (and E's trace warm start)
+  Lbfgs,      // Riemannian L-BFGS likewise
   Ipopt,      // Ipopt for every start (slower; for comparison)
 };
 

@@ -20,7 +20,9 @@ struct SynthesisOptions {
   int positions = 18;
   CriterionKind criterion = CriterionKind::D;
   ModelKind model = ModelKind::paper9;
-  int starts = 0;            // 0: the criterion's default (enough for the global optimum for N <= 30)
+  // 0: adaptive, up to the criterion's default count (enough for the global optimum for N <= 30),
+  // ending when the stopping rule holds (stopping_rule.hpp); > 0: exactly this many.
+  int starts = 0;
   std::uint64_t seed = 1;
   int threads = 0;           // 0: all cores
   LocalSolver local = LocalSolver::Automatic;
@@ -33,7 +35,8 @@ struct SynthesisOptions {
 struct SynthesisResult {
   Program program;
   double value = 0;  // normalised criterion of `program`
-  int starts = 0;
+  int starts = 0;    // starts run
+  std::string stopping;  // what ended the multistart: "8 consecutive hits", "cap 204" or "forced 50"
   int hits = 0;      // starts that reached `value` (to a relative kHitTolerance)
   int distinct = 0;  // distinct programs among the hits, up to the criterion's symmetry
   std::string local_solver;  // "newton" or "ipopt": what ran the starts

@@ -4,16 +4,20 @@
 // processes; the best program (lowest value, then lowest start index) never depends on scheduling.
 #pragma once
 #include <chrono>
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "numeric/program/program_equivalence.hpp"
+#include "numeric/criteria/starts.hpp"
 #include "numeric/synthesis/exchange_start.hpp"
 #include "numeric/synthesis/ipopt_local.hpp"
+#include "numeric/synthesis/max_diagonal_newton.hpp"
 #include "numeric/synthesis/multistart.hpp"
 #include "numeric/synthesis/newton_local.hpp"
 #include "numeric/synthesis/seeds.hpp"
+#include "numeric/synthesis/stopping_rule.hpp"
 #include "numeric/synthesis/workers.hpp"
 
 namespace scalcal {
@@ -22,16 +26,26 @@ namespace scalcal {
 // A) or 1e-5 (Ipopt on the nonsmooth E and S); distinct optima seen so far differ by 1e-2 or more.
 inline constexpr double kSameProgramTolerance = 1e-4;
 
+// What runs the starts of C at `positions`: "newton", "lbfgs" or "ipopt".
 template <Criterion C>
-constexpr bool uses_newton(LocalSolver solver) {
-  return SmoothCriterion<C> && solver == LocalSolver::Automatic;
+LocalSolver starts_solver(LocalSolver requested, int positions) {
+  if constexpr (SmoothCriterion<C>) return smooth_local_solver(requested, positions);
+  else return LocalSolver::Ipopt;
+}
+
+inline const char* solver_name(LocalSolver solver) {
+  return solver == LocalSolver::Newton ? "newton" : solver == LocalSolver::Lbfgs ? "lbfgs" : "ipopt";
 }
 
 // One local optimisation from `start` by the solver C's form calls for.
 template <Criterion C, class Model = Paper9Model>
 LocalResult local_start(const Program& start, LocalSolver solver) {
   if constexpr (SmoothCriterion<C>) {
-    return uses_newton<C>(solver) ? optimize_with_newton<C, Model>(start) : optimize_with_ipopt<C, Model>(start);
+    switch (smooth_local_solver(solver, start.size())) {
+      case LocalSolver::Newton: return optimize_with_newton<C, Model>(start);
+      case LocalSolver::Lbfgs: return optimize_with_lbfgs<C, Model>(start);
+      default: return optimize_with_ipopt<C, Model>(start);
+    }
   } else if constexpr (MaxEigenvalueCriterion<C>) {
     // The eigenvalue constraint converges poorly from a random program (N = 9: random starts ended
     // near 68.7 where the A optimum alone has E = 12.9), so the smooth trace criterion runs first
@@ -82,37 +96,58 @@ SynthesisResult synthesize(const SynthesisOptions& options) {
     throw std::invalid_argument("synthesize: the first start has " + std::to_string(options.first_start->size()) +
                                 " positions, not " + std::to_string(options.positions));
   const auto t0 = std::chrono::steady_clock::now();
-  const int starts = options.starts > 0 ? options.starts : C::default_starts(options.positions);
+  // --starts forces a count; otherwise the criterion's default is a cap and the stopping rule may
+  // end the run sooner.
+  const bool forced = options.starts > 0;
+  const int cap = forced ? options.starts : C::default_starts(options.positions);
+  const StoppingRule rule;
   const int workers = thread_count(options.threads);
-  const std::vector<LocalResult> results = run_in_workers(
-      starts, workers, options.positions,
-      [&](int k) {
-        if (k == 0 && options.first_start) return local_start<C, Model>(*options.first_start, options.local);
-        Program start = Program::random(options.positions, start_seed(options.seed, static_cast<std::uint64_t>(k)));
-        // The paper's model keeps its random starts (its results are documented); every other
-        // registered model exchanges every second start onto a grid first (exchange_start.hpp) for
-        // the smooth criteria, whose Newton steps cannot merge positions. E and S run Ipopt, which
-        // reached every limit at N = 6k for axis6 from random starts, and whose exchange would cost
-        // an eigen-decomposition per trial swap (E at N = 24: 33 s of CPU instead of 2 s).
-        if constexpr (kModelIndex<Model> > 0 && SmoothCriterion<C>)
-          if (k % 2 == 1) start = exchanged_start<C, Model>(start);
-        return local_start<C, Model>(start, options.local);
-      },
-      options.progress);
+  const auto start_at = [&](int k) {
+    if (k == 0 && options.first_start) return local_start<C, Model>(*options.first_start, options.local);
+    Program start = Program::random(options.positions, start_seed(options.seed, static_cast<std::uint64_t>(k)));
+    // The paper's model keeps its random starts (its results are documented); every other
+    // registered model exchanges every second start onto a grid first (exchange_start.hpp) for
+    // the smooth criteria, whose Newton steps cannot merge positions. E and S run Ipopt, which
+    // reached every limit at N = 6k for axis6 from random starts, and whose exchange would cost
+    // an eigen-decomposition per trial swap (E at N = 24: 33 s of CPU instead of 2 s).
+    if constexpr (kModelIndex<Model> > 0 && SmoothCriterion<C>)
+      if (k % 2 == 1) start = exchanged_start<C, Model>(start);
+    return local_start<C, Model>(start, options.local);
+  };
+  std::vector<LocalResult> results;
+  std::string stopping = forced ? "forced " + std::to_string(cap) : "cap " + std::to_string(cap);
+  while (static_cast<int>(results.size()) < cap) {
+    const int offset = static_cast<int>(results.size());
+    const int batch = forced ? cap : std::min(rule.batch, cap - offset);
+    std::function<void(int, int)> progress;
+    if (options.progress) progress = [&](int done, int) { options.progress(offset + done, cap); };
+    const std::vector<LocalResult> done =
+        run_in_workers(batch, workers, options.positions, [&](int k) { return start_at(offset + k); }, progress);
+    results.insert(results.end(), done.begin(), done.end());
+    if (!forced && static_cast<int>(results.size()) < cap &&
+        static_cast<int>(results.size()) >= minimum_starts<C>(options.positions) && rule.satisfied(results)) {
+      stopping = rule.description();
+      break;
+    }
+  }
+  const int starts = static_cast<int>(results.size());
   SynthesisResult out = best_of_starts<C>(results);
   out.starts = starts;
-  out.local_solver = uses_newton<C>(options.local) ? "newton" : "ipopt";
-  if (uses_newton<C>(options.local)) {
-    // Ipopt, from the best Newton program, must find it a KKT point of the constrained problem
-    // (same value); should it find a lower one, that is kept.
+  out.stopping = stopping;
+  const LocalSolver solver = starts_solver<C>(options.local, options.positions);
+  out.local_solver = solver_name(solver);
+  if (solver != LocalSolver::Ipopt) {
+    // Ipopt, from the best Newton or L-BFGS program, must find it a KKT point of the constrained
+    // problem (same value); should it find a lower one, that is kept.
     const Program best_program = out.program;
     const LocalResult check = run_in_workers(1, 1, options.positions, [&](int) {
       return optimize_with_ipopt<C, Model>(best_program);
     })[0];
     const bool confirmed = check.summary.converged() && check.value <= out.value * (1 + kHitTolerance);
     out.summary.termination = confirmed ? Termination::converged : Termination::not_converged;
-    out.summary.message = confirmed ? "Ipopt confirmed the best Newton program as a KKT point"
-                                    : "Ipopt did not confirm the best Newton program as a converged optimum";
+    out.summary.message = confirmed ? std::string("Ipopt confirmed the best ") + out.local_solver + " program as a KKT point"
+                                    : std::string("Ipopt did not confirm the best ") + out.local_solver +
+                                          " program as a converged optimum";
     out.summary.iterations = check.summary.iterations;
     if (check.value < out.value) {
       out.program = check.program;
@@ -121,6 +156,16 @@ SynthesisResult synthesize(const SynthesisOptions& options) {
   } else {
     out.summary.message = out.summary.converged() ? "the best Ipopt start converged"
                                                   : "the best Ipopt start did not converge";
+  }
+  if constexpr (MaxDiagonalCriterion<C>) {
+    // Ipopt's tolerance leaves S about 1e-12 above its optimum; Newton on the active conditions
+    // takes it to rounding.
+    const LocalResult refined = refine_max_diagonal<C, Model>(LocalResult{out.program, out.value, out.summary});
+    if (refined.value < out.value) {
+      out.program = refined.program;
+      out.value = refined.value;
+      out.summary.message += "; Newton on its active conditions refined it";
+    }
   }
   count_hits<C>(results, out);
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

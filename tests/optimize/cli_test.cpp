@@ -19,7 +19,7 @@ std::pair<int, std::string> run(const std::string& args) {
 TEST(OptimizeCli, JsonKeys) {
   const auto [code, out] = run("optimize --positions 9 --criterion D --starts 2 --digits 30 --json");
   ASSERT_EQ(code, 0);
-  for (const char* key : {"\"criterion\"", "\"positions\"", "\"value\"", "\"program\"", "\"starts\"", "\"hits\"",
+  for (const char* key : {"\"criterion\"", "\"positions\"", "\"value\"", "\"program\"", "\"starts\"", "\"stopping\"", "\"hits\"",
                           "\"seconds\"", "\"value_digits\"", "\"residual\"", "\"distinct\"", "\"local_solver\"",
                           "\"confirmed\""})
     EXPECT_NE(out.find(key), std::string::npos) << key;
@@ -46,6 +46,18 @@ TEST(OptimizeCli, DigitsWritesThePolishedProgram) {
   ASSERT_EQ(program.size(), 12u);
   const auto first_row = csv.substr(csv.find('\n') + 1);
   EXPECT_EQ(std::stod(first_row.substr(0, first_row.find(','))), program[0][0].get<double>());
+}
+
+// Without a polish, S at N = 18 ends within 1e-14 of 6 + 3 sqrt 3 (Newton on the active conditions
+// after Ipopt), and the default multistart says why it stopped.
+TEST(OptimizeCli, SReachesItsLimitToRounding) {
+  const auto r = scalcal::testing::run_cli("optimize --positions 18 --criterion S --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  const double limit = 6 + 3 * std::sqrt(3.0);
+  EXPECT_NEAR(j.at("value").get<double>(), limit, 1e-14 * limit);
+  EXPECT_EQ(j.at("stopping").get<std::string>(), "8 consecutive hits");
+  EXPECT_EQ(j.at("starts").get<int>(), 8);
 }
 
 TEST(OptimizeCli, UnwritableOutIsAnError) {

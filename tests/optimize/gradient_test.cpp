@@ -93,6 +93,31 @@ TEST_P(Hessians, MatchCentralDifferencesOfTheGradient) {
   }
 }
 
+// An entry a problem declares unused is left out of Ipopt's KKT matrix, so it must be zero at every
+// x and multiplier: checked at a perturbed random start with multipliers of both signs.
+TEST_P(Hessians, DeclaredZerosAreZero) {
+  const CriterionKind c = GetParam();
+  const int n = 10;
+  const auto problem = make_problem(c, n);
+  std::vector<double> x = problem->start(Program::random(n, 7));
+  for (std::size_t i = 0; i < x.size(); ++i) x[i] *= 1.0 + 0.01 * std::sin(double(i));
+  const int nv = problem->variables(), m = problem->constraints();
+  std::vector<double> lambda(static_cast<std::size_t>(m)), lower(static_cast<std::size_t>(nv * (nv + 1) / 2));
+  for (int r = 0; r < m; ++r) lambda[static_cast<std::size_t>(r)] = std::cos(2.0 + 3 * r);
+  ASSERT_TRUE(problem->lagrangian_hessian(x.data(), 0.7, lambda.data(), lower.data()));
+  int unused = 0;
+  for (int r = 0; r < nv; ++r)
+    for (int col = 0; col <= r; ++col)
+      if (!problem->hessian_entry_used(r, col)) {
+        ++unused;
+        EXPECT_EQ(lower[static_cast<std::size_t>(r * (r + 1) / 2 + col)], 0.0) << criterion_name(c) << " (" << r << ", " << col << ")";
+      }
+  // E's position blocks are 3 x 3 and L(a, m) meets only L(b, m): most entries are unused.
+  if (c == CriterionKind::E) {
+    EXPECT_GT(unused, nv * (nv + 1) / 2 * 3 / 4);
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(AllCriteria, Hessians,
                          ::testing::Values(CriterionKind::D, CriterionKind::A, CriterionKind::E, CriterionKind::S));
 
