@@ -67,7 +67,7 @@ void add_seed(CLI::App& app, std::uint64_t& seed) {
 
 void add_starts(CLI::App& app, int& starts) {
   add_integer(app, "--starts", starts, kStarts.lo, kStarts.hi,
-              {"random starts of the multistart", "starts", "chosen to find the global optimum for N <= 30; 8 on a restricted --region"});
+              {"random starts of the multistart", "starts", "adaptive: batches of 8 until 8 consecutive starts hit the best, capped at the criterion's count; 8 on a restricted --region; K forces K"});
 }
 
 void add_threads(CLI::App& app, int& threads) {
