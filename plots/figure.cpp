@@ -1,22 +1,41 @@
 #include "plots/figure.hpp"
 
-#include <Eigen/Core>  // before gnuplot-iostream, which then enables its Eigen support
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <iterator>
 #include <sstream>
 #include <stdexcept>
 #include <vector>
 
-#include "gnuplot-iostream.h"
+extern char** environ;
 
 namespace scalcal::plots {
 
+// Inside gnuplot's single quotes only '' is special, but a line break ends the command whatever the
+// quotes: control characters become '?', so no text can leave its string.
 std::string gp_quote(const std::string& s) {
   std::string q = "'";
-  for (char c : s) q += (c == '\'') ? std::string("''") : std::string(1, c);
+  for (char c : s) {
+    const auto u = static_cast<unsigned char>(c);
+    if (c == '\'') q += "''";
+    else if (u < 0x20 || u == 0x7f) q += '?';
+    else q += c;
+  }
   return q + "'";
+}
+
+std::string one_line(const std::string& s) {
+  std::string out = s;
+  for (char& c : out)
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = '?';
+  return out;
 }
 
 std::string sub(const std::string& s) { return "_{/*1.1 " + s + "}"; }
@@ -29,11 +48,23 @@ std::string read_all(const std::filesystem::path& p) {
   return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
 
-// A POSIX shell word in single quotes ('\'' for a quote).
-std::string shell_quote(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) q += (c == '\'') ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
+// Runs `gnuplot SCRIPT` in `dir` with its stderr in `log`, with no shell and no folder name in any
+// script text: the folder is the child's working directory, the script a name without a path.
+void run_gnuplot(const std::filesystem::path& dir, const std::string& script, const std::filesystem::path& log) {
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addchdir_np(&actions, dir.c_str());
+  posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
+  posix_spawn_file_actions_addopen(&actions, 2, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  std::string program = SCALCAL_GNUPLOT, arg = script;
+  char* argv[] = {program.data(), arg.data(), nullptr};
+  pid_t pid = 0;
+  const int err = posix_spawn(&pid, program.c_str(), &actions, nullptr, argv, environ);
+  posix_spawn_file_actions_destroy(&actions);
+  if (err != 0) throw std::runtime_error("could not start gnuplot (" + program + "): " + std::strerror(err));
+  int status = 0;
+  while (waitpid(pid, &status, 0) < 0)
+    if (errno != EINTR) throw std::runtime_error(std::string("waiting for gnuplot: ") + std::strerror(errno));
 }
 
 bool non_empty(const std::filesystem::path& p) {
@@ -88,7 +119,7 @@ std::vector<Format> formats(const FigureSpec& spec) {
 
 std::string figure_script(const FigureSpec& spec) {
   std::ostringstream script;
-  script << "# " << spec.name << ": " << spec.comment << "\n"
+  script << "# " << one_line(spec.name) << ": " << one_line(spec.comment) << "\n"
          << "# intended print width: " << num(10 * spec.width_cm) << " mm (" << width_name(spec.width_cm)
          << "), height " << num(10 * spec.height_cm) << " mm; text " << num(spec.font_pt)
          << " pt there, indices and exponents " << num(spec.font_pt * kIndexScale) << " pt\n"
@@ -106,6 +137,8 @@ std::string figure_script(const FigureSpec& spec) {
 
 RenderedFigure render(const std::filesystem::path& dir, const FigureSpec& spec) {
   namespace fs = std::filesystem;
+  if (spec.name.empty() || spec.name != one_line(spec.name) || spec.name.find('/') != std::string::npos)
+    throw std::invalid_argument("a figure's name must be a plain file stem, got '" + one_line(spec.name) + "'");
   if (!(spec.width_cm > 0 && spec.height_cm > 0))
     throw std::invalid_argument(spec.name + ": the print size must be positive");
   if (!(spec.font_pt * kIndexScale >= kMinTextPt))
@@ -119,13 +152,10 @@ RenderedFigure render(const std::filesystem::path& dir, const FigureSpec& spec) 
     if (!gp) throw std::runtime_error("cannot write " + out.script.string());
   }
   for (const auto& p : {out.pdf, out.png, out.svg}) fs::remove(p);
-  const fs::path log = dir / (spec.name + ".gnuplot.log");
-  {
-    // gnuplot runs in the output folder so the script's relative data paths hold; its messages
-    // go to a log that is kept only when it is not empty.
-    Gnuplot gp(std::string(SCALCAL_GNUPLOT) + " 2> " + shell_quote(log.string()));
-    gp << "cd " << gp_quote(fs::absolute(dir).string()) << "\nload " << gp_quote(spec.name + ".gp") << "\n";
-  }  // the destructor waits for gnuplot to finish
+  const fs::path log = fs::absolute(dir) / (spec.name + ".gnuplot.log");
+  // gnuplot runs in the output folder so the script's relative data paths hold; its messages go to
+  // a log that is kept only when it is not empty.
+  run_gnuplot(fs::absolute(dir), "./" + spec.name + ".gp", log);
   const std::string messages = read_all(log);
   if (messages.empty()) fs::remove(log);
   if (!non_empty(out.pdf) || !non_empty(out.png) || !non_empty(out.svg))

@@ -2,7 +2,7 @@
 // it) is written once per output format into NAME.gp, so `cd DIR && gnuplot NAME.gp` re-makes
 // NAME.pdf (pdfcairo), NAME.png (pngcairo) and NAME.svg exactly. A figure is drawn at the size a
 // journal prints it, with its text in points at that size; render() writes the script and runs it
-// through gnuplot-iostream, and throws with gnuplot's own messages when an output is missing.
+// through gnuplot (no shell: the folder is gnuplot's working directory), and throws with gnuplot's own messages when an output is missing.
 #pragma once
 #include <filesystem>
 #include <string>
@@ -40,8 +40,12 @@ RenderedFigure render(const std::filesystem::path& dir, const FigureSpec& spec);
 // The whole NAME.gp of a figure (what render() writes).
 std::string figure_script(const FigureSpec& spec);
 
-// A gnuplot string literal in single quotes ('' escapes a quote).
+// A gnuplot string literal in single quotes ('' escapes a quote; control characters, which would end
+// the command, become '?'). Every text from outside that reaches a script goes through it.
 std::string gp_quote(const std::string& s);
+
+// The text with control characters as '?': for a comment line of a script.
+std::string one_line(const std::string& s);
 
 // Enhanced-text index and exponent that stay at kMinTextPt: sub("bias") is "_{/*1.1 bias}".
 std::string sub(const std::string& s);

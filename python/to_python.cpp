@@ -53,6 +53,16 @@ py::array filled(const Json& a, const std::vector<py::ssize_t>& shape) {
 
 }  // namespace
 
+namespace {
+// A string that is not valid UTF-8 (a file name in another encoding) keeps its bad bytes as
+// surrogates, Python's own convention for such names (os.fsdecode), instead of raising.
+py::str text(const std::string& s) {
+  PyObject* o = PyUnicode_DecodeUTF8(s.data(), static_cast<Py_ssize_t>(s.size()), "surrogateescape");
+  if (!o) throw py::error_already_set();
+  return py::reinterpret_steal<py::str>(o);
+}
+}  // namespace
+
 py::object to_python(const Json& value) {
   switch (value.type()) {
     case Json::value_t::null:
@@ -66,7 +76,7 @@ py::object to_python(const Json& value) {
     case Json::value_t::number_float:
       return py::float_(value.get<double>());
     case Json::value_t::string:
-      return py::str(value.get<std::string>());
+      return text(value.get<std::string>());
     case Json::value_t::array: {
       bool integral = false;
       if (const auto shape = numeric_shape(value, integral))
@@ -77,7 +87,7 @@ py::object to_python(const Json& value) {
     }
     case Json::value_t::object: {
       py::dict dict;
-      for (const auto& [key, v] : value.items()) dict[py::str(key)] = to_python(v);
+      for (const auto& [key, v] : value.items()) dict[text(key)] = to_python(v);
       return dict;
     }
     default:

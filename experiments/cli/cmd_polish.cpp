@@ -11,6 +11,8 @@
 #include "experiments/cli/output_file.hpp"
 #include "experiments/cli/synthesis_cli.hpp"
 #include "numeric/certify/certify.hpp"
+#include "numeric/criteria/identifiability.hpp"
+#include "numeric/io/input_error.hpp"
 #include "numeric/polish/polish.hpp"
 #include "numeric/program/catalogue.hpp"
 
@@ -26,7 +28,15 @@ struct Options {
 int run(const Options& o) {
   const Program program = resolve_program(o.program);
   const CriterionKind c = criterion_of(o.criterion);
-  const PolishResult p = polish(program, c, PolishOptions{o.digits, 40});
+  // Every criterion divides by the information matrix: refuse a rank-deficient program as evaluate does.
+  const Evaluation ev = evaluate(program);
+  if (!ev.full_rank()) throw InputError(o.program, 0, rank_deficiency(ev));
+  PolishResult p;
+  try {
+    p = polish(program, c, PolishOptions{o.digits, 40});
+  } catch (const std::invalid_argument& e) {
+    throw InputError(o.program, 0, e.what());
+  }
   if (!p.converged())
     std::cerr << "scalcal polish: " << o.program << ": warning: the polish did not converge (residual " << p.residual
               << "); value_digits keeps " << p.digits << " digits\n";

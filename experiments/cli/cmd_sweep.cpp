@@ -202,7 +202,7 @@ int run(const Options& o) {
         std::cerr << "sweep: rank 0 finished " << criterion_name(tasks[k].criterion) << " N = " << tasks[k].positions
                   << "\n";
     }
-    const std::vector<std::string> texts = ranks.gather(mine.dump());
+    const std::vector<std::string> texts = ranks.gather(json_text(mine));
     if (!root) return 0;
     std::vector<std::optional<SynthesisResult>> results(tasks.size());
     std::vector<std::string> failures;

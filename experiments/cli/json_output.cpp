@@ -21,6 +21,10 @@ Json matrix_json(const Mat9& m) {
 }
 
 void print_json(const Json& j) { write_json(std::cout, j); }
-void write_json(std::ostream& out, const Json& j) { out << j.dump(2) << "\n"; }
+// A string that is not valid UTF-8 (a file name in another encoding) is written with U+FFFD in
+// place of its bad bytes, never an exception half-way through the output.
+std::string json_text(const Json& j, int indent) { return j.dump(indent, ' ', false, Json::error_handler_t::replace); }
+
+void write_json(std::ostream& out, const Json& j) { out << json_text(j, 2) << "\n"; }
 
 }  // namespace scalcal::cli

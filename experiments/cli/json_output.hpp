@@ -16,5 +16,6 @@ Json program_json(const Program& program);  // [[x, y, z], ...]
 Json matrix_json(const Mat9& m);            // nine rows of nine numbers
 void print_json(const Json& j);             // to stdout, indented, one trailing newline
 void write_json(std::ostream& out, const Json& j);  // the same to any stream
+std::string json_text(const Json& j, int indent = -1);  // dump(), with invalid UTF-8 replaced by U+FFFD
 
 }  // namespace scalcal::cli

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <cstring>
 #include <iostream>
+#include <sstream>
 
 #include "numeric/io/program_csv.hpp"
 
@@ -34,9 +35,13 @@ void OutputFile::close() {
   if (!out_) fail(path_, "cannot write the file");
 }
 
+// The whole text is made before the file is opened: a result that fails while it is formatted
+// leaves no empty or half-written file behind.
 void write_output_file(const std::string& path, const std::function<void(std::ostream&)>& write) {
+  std::ostringstream text;
+  write(text);
   OutputFile file(path);
-  write(file.stream());
+  file.stream() << text.str();
   file.close();
 }
 

@@ -5,6 +5,8 @@
 //                           |eta_i|^2 = 1.
 #pragma once
 #include <algorithm>
+#include <cmath>
+#include <stdexcept>
 #include <vector>
 
 #include <Eigen/QR>
@@ -53,13 +55,16 @@ struct KktConditions {
     } else {
       smooth_objective<C, Model>(eta, &g, ok);
     }
+    if (!ok) g.clear();  // M is not positive definite at eta: no gradient
     return g;
   }
 
+  // An infinite residual where the information matrix is singular, so Newton backs off from there.
   VecX residual(const VecX& z) const {
     const PositionsT<Real> eta = positions_of(z, n);
     VecX F = VecX::Zero(unknowns());
     const PositionsT<Real> g = gradient(eta, z, F);
+    if (g.size() != static_cast<std::size_t>(n)) return VecX::Constant(unknowns(), Real(INFINITY));
     const int nu0 = 3 * n + multipliers();
     for (int i = 0; i < n; ++i) {
       const Real nu = z(nu0 + i);
@@ -82,6 +87,7 @@ struct KktConditions {
     if constexpr (pieces) {
       std::vector<PositionsT<Real>> grads;
       const std::vector<Real> d = diagonal_pieces<Model>(eta, active, &grads, ok);
+      if (!ok) throw std::invalid_argument("polish: the information matrix is singular at the start");
       z(3 * n) = *std::max_element(d.begin(), d.end());
       for (int a = 0; a < m; ++a) {
         for (int i = 0; i < n; ++i)
@@ -92,6 +98,7 @@ struct KktConditions {
     } else {
       PositionsT<Real> g;
       smooth_objective<C, Model>(eta, &g, ok);
+      if (!ok) throw std::invalid_argument("polish: the information matrix is singular at the start");
       for (int i = 0; i < n; ++i)
         for (int c = 0; c < 3; ++c) b(3 * i + c) = -g[static_cast<std::size_t>(i)](c);
     }
@@ -116,6 +123,7 @@ PolishResult polish_kkt(const Program& program, const PolishOptions& options) {
     bool ok = true;
     const std::vector<int> rows = C::template rows<Model>();
     const std::vector<double> d = diagonal_pieces<Model>(program.positions, rows, nullptr, ok);
+    if (!ok) throw std::invalid_argument("polish: the information matrix of the program is singular");
     const double top = *std::max_element(d.begin(), d.end());
     for (std::size_t a = 0; a < rows.size(); ++a)
       if (d[a] >= top * (1 - 1e-6)) kkt.active.push_back(rows[a]);

@@ -21,51 +21,10 @@
 #include <sys/stat.h>
 
 #include "numeric/program/program.hpp"
-#include "tests/common/run_cli.hpp"
+#include "tests/common/bad_input.hpp"
 
 namespace scalcal::testing {
 namespace {
-
-enum class Expect { error, warn, same, write };
-
-struct Case {
-  std::string name;                         // the test's name
-  std::function<std::string()> args;        // generates its inputs, returns the CLI arguments
-  Expect expect;
-  std::vector<std::string> needles;         // words the message (error, warn, write) must contain
-  std::function<std::string()> reference;   // for `same`: the arguments of the clean input
-
-  Case(std::string n, std::function<std::string()> a, Expect e, std::vector<std::string> words,
-       std::function<std::string()> clean = {})
-      : name(std::move(n)), args(std::move(a)), expect(e), needles(std::move(words)), reference(std::move(clean)) {}
-};
-
-#if defined(__SANITIZE_ADDRESS__)
-constexpr bool kAddressSanitizer = true;  // gcc -fsanitize=address (scripts/sanitize.sh)
-#else
-constexpr bool kAddressSanitizer = false;
-#endif
-
-// run_cli with a wall-clock limit (a hang is a failure, not a stuck test) and a memory limit
-// (a huge allocation fails at once instead of swapping). Under AddressSanitizer, which reserves
-// terabytes of address space for its shadow memory, the limit is ASan's own allocation check.
-CliResult run_limited(const std::string& args) {
-  static int counter = 0;
-  const auto base = (scratch_dir() / ("limited" + std::to_string(counter++))).string();
-  const std::string limit = kAddressSanitizer ? "" : "ulimit -v 8000000; ";
-  const std::string cmd = limit + "exec timeout -s KILL 60 " + std::string(SCALCAL_CLI) + " " + args +
-                          " >" + base + ".out 2>" + base + ".err </dev/null";
-  const int raw = std::system(cmd.c_str());
-  CliResult r;
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  r.out = slurp(base + ".out");
-  r.err = slurp(base + ".err");
-  return r;
-}
-
-int lines(const std::string& s) { return static_cast<int>(std::count(s.begin(), s.end(), '\n')); }
-
-std::string quote(const std::string& path) { return "'" + path + "'"; }
 
 // --- generators -----------------------------------------------------------------------------
 
@@ -342,42 +301,9 @@ std::vector<Case> cases() {
   };
 }
 
-void PrintTo(const Case& c, std::ostream* os) { *os << c.name; }
-
 class BadInput : public ::testing::TestWithParam<Case> {};
 
-TEST_P(BadInput, HasItsClass) {
-  const Case& c = GetParam();
-  const std::string args = c.args();
-  const CliResult r = run_limited(args);
-  const std::string shown = args.size() > 300 ? args.substr(0, 300) + "..." : args;
-  SCOPED_TRACE(shown);
-  ASSERT_EQ(r.err.find("internal error"), std::string::npos) << r.err;
-  switch (c.expect) {
-    case Expect::error:
-      EXPECT_EQ(r.status, 2) << r.err;
-      EXPECT_TRUE(r.out.empty()) << r.out;
-      break;
-    case Expect::warn:
-      EXPECT_EQ(r.status, 0) << r.err;
-      EXPECT_FALSE(r.out.empty());
-      break;
-    case Expect::same: {
-      EXPECT_EQ(r.status, 0) << r.err;
-      EXPECT_EQ(r.err, "");
-      const CliResult ref = run_limited(c.reference());
-      ASSERT_EQ(ref.status, 0) << ref.err;
-      EXPECT_EQ(r.out, ref.out);
-      return;
-    }
-    case Expect::write:
-      EXPECT_EQ(r.status, 1) << r.err;
-      break;
-  }
-  EXPECT_EQ(lines(r.err), 1) << r.err;
-  EXPECT_EQ(r.err.rfind("scalcal ", 0), 0u) << r.err;
-  for (const auto& n : c.needles) EXPECT_NE(r.err.find(n), std::string::npos) << "missing '" << n << "' in: " << r.err;
-}
+TEST_P(BadInput, HasItsClass) { expect_class(GetParam()); }
 
 INSTANTIATE_TEST_SUITE_P(Issue16, BadInput, ::testing::ValuesIn(cases()),
                          [](const ::testing::TestParamInfo<Case>& info) { return info.param.name; });

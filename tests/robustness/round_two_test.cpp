@@ -1,0 +1,95 @@
+// Issue 36, reliability round two: each class of input the adversarial round found crashing,
+// hanging or answering silently wrong, as a case of tests/common/bad_input.hpp. The injection
+// through gnuplot is tested on the renderer itself (figure_injection_test.cpp).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "numeric/program/program.hpp"
+#include "tests/common/bad_input.hpp"
+
+namespace scalcal::testing {
+namespace {
+
+std::string program_csv(const std::vector<Vec3>& positions) {
+  std::ostringstream s;
+  s.precision(17);
+  s << "x,y,z\n";
+  for (const auto& e : positions) s << e(0) << ',' << e(1) << ',' << e(2) << '\n';
+  return s.str();
+}
+
+std::string file(const std::string& name, const std::string& content) { return quote(write_file(name, content)); }
+
+// Rank-deficient programs that evaluate and certify refuse: one position twenty times, twelve
+// positions on one great circle, a cluster of twelve within 1e-9 rad.
+std::string copies() { return file("copies.csv", program_csv(std::vector<Vec3>(20, Vec3(0.6, 0.0, 0.8)))); }
+std::string circle() {
+  std::vector<Vec3> p;
+  for (int k = 0; k < 12; ++k) p.emplace_back(std::cos(0.5 * k), std::sin(0.5 * k), 0);
+  return file("circle.csv", program_csv(p));
+}
+std::string cluster() {
+  std::vector<Vec3> p;
+  for (int k = 0; k < 12; ++k) p.push_back(Vec3(1, 1e-13 * k, 1e-13 * k * k).normalized());
+  return file("cluster.csv", program_csv(p));
+}
+
+// A file whose name is not valid UTF-8 (Latin-1 bytes), holding classic18's 18 positions.
+std::string latin1_candidates() {
+  return write_file("cand\xE9\xFF.csv", program_csv(Program::classic18().positions));
+}
+
+std::vector<Case> cases() {
+  using E = Expect;
+  std::vector<Case> out;
+  // Item 2: the polish of a rank-deficient program is refused as evaluate refuses it.
+  for (const char* c : {"D", "A", "E", "S"}) {
+    const std::string crit = c;
+    out.push_back({"PolishCopies" + crit, [crit] { return "polish " + copies() + " --criterion " + crit; }, E::error,
+                   {"copies.csv", "rank-deficient program"}});
+    out.push_back({"PolishCircle" + crit, [crit] { return "polish " + circle() + " --criterion " + crit; }, E::error,
+                   {"circle.csv", "rank-deficient program", "not identifiable"}});
+    out.push_back({"PolishCluster" + crit, [crit] { return "polish " + cluster() + " --criterion " + crit; }, E::error,
+                   {"cluster.csv", "rank-deficient program"}});
+  }
+  out.push_back({"PolishRotation4", [] { return std::string("polish rotation-4 --criterion D"); }, E::error,
+                 {"rotation-4", "rank-deficient program: rank 6 of 9"}});
+  return out;
+}
+
+void PrintTo(const Case& c, std::ostream* os) { *os << c.name; }
+class RoundTwo : public ::testing::TestWithParam<Case> {};
+TEST_P(RoundTwo, HasItsClass) { expect_class(GetParam()); }
+INSTANTIATE_TEST_SUITE_P(Issue36, RoundTwo, ::testing::ValuesIn(cases()),
+                         [](const ::testing::TestParamInfo<Case>& info) { return info.param.name; });
+
+// Item 3: a region file whose name is not valid UTF-8 reaches the JSON of every subcommand that
+// echoes its regions; the JSON is written (the bad bytes as U+FFFD) and parses, exit 0.
+TEST(NonUtf8Path, EveryJsonOutputIsWritten) {
+  const std::string region = quote("candidates:" + latin1_candidates());
+  const std::string out_file = (scratch_dir() / "utf8_out.json").string();
+  for (const std::string& args :
+       {"evaluate classic18 --json --region " + region, "limits --json --region " + region,
+        "optimize --positions 12 --starts 2 --json --region " + region,
+        "random --positions 12 --count 50 --json --region " + region,
+        "sweep --positions 12 --criteria D --starts 2 --json --region " + region,
+        "augment --program classic18 --add 1 --json --region " + region}) {
+    SCOPED_TRACE(args);
+    const CliResult r = run_limited(args);
+    EXPECT_EQ(r.err.find("internal error"), std::string::npos) << r.err;
+    EXPECT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.out.find("\xEF\xBF\xBD"), std::string::npos) << "no U+FFFD in the JSON";
+  }
+  // A result that fails while formatted leaves no empty --out file (it was opened only after).
+  const CliResult r = run_limited("evaluate classic18 --json --out " + quote(out_file) + " --region " + region);
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_GT(std::filesystem::file_size(out_file), 0u);
+}
+
+}  // namespace
+}  // namespace scalcal::testing
