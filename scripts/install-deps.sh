@@ -3,7 +3,7 @@
 # libopenblas0-serial becomes the libblas.so.3 / liblapack.so.3 that Ipopt's MUMPS loads (Debian's
 # alternatives): single-threaded, as the multistart already runs one worker per core.
 set -euo pipefail
-packages=(cmake g++ make pkg-config libeigen3-dev libboost-dev libginac-dev libcln-dev coinor-libipopt-dev
+packages=(cmake ninja-build g++ make pkg-config libeigen3-dev libboost-dev libginac-dev libcln-dev coinor-libipopt-dev
   gnuplot-nox libgtest-dev libbenchmark-dev libmpfr-dev libmpfi-dev libgmp-dev
   libopenblas0-serial
   libcli11-dev nlohmann-json3-dev libfmt-dev libopenmpi-dev openmpi-bin

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "commands/usage_error.hpp"
+
 namespace CLI {
 class App;
 }
@@ -14,10 +16,7 @@ class App;
 namespace scalcal::cli {
 
 // A usage error found after parsing (e.g. two options that contradict each other): exit 2.
-class UsageError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
+using scalcal::UsageError;
 
 using Runner = std::function<int()>;
 
