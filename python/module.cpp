@@ -14,9 +14,9 @@
 
 #include "experiments/cli/calibration_report.hpp"
 #include "experiments/cli/command.hpp"
-#include "experiments/cli/evaluate_report.hpp"
-#include "experiments/cli/limits_report.hpp"
-#include "experiments/cli/optimize_report.hpp"
+#include "commands/evaluate.hpp"
+#include "commands/limits.hpp"
+#include "commands/optimize.hpp"
 #include "experiments/cli/synthesis_cli.hpp"
 #include "numeric/io/input_error.hpp"
 #include "numeric/io/measurements_csv.hpp"
@@ -40,7 +40,7 @@ std::string choice(const std::string& argument, const std::string& value, const 
 }
 
 // An integer argument within its CLI option's range; `none` (0: the default, no polish) is also taken.
-long long in_range(const std::string& argument, long long value, cli::IntegerRange range,
+long long in_range(const std::string& argument, long long value, commands::IntegerRange range,
                    std::optional<long long> none = std::nullopt) {
   if (value == none) return value;
   if (value < range.lo || value > range.hi)
@@ -80,35 +80,48 @@ py::object computed(F&& report) {
   return to_python(r.json);
 }
 
+// Runs a command of commands/ with the GIL released, passes its warnings to Python's warnings.warn
+// and returns its JSON form as Python objects.
+template <class F>
+py::object run_command(F&& work) {
+  decltype(work()) r;
+  {
+    py::gil_scoped_release free;
+    r = work();
+  }
+  for (const auto& w : r.warnings)
+    PyErr_WarnEx(PyExc_UserWarning, ((w.subject.empty() ? "" : w.subject + ": ") + w.message).c_str(), 1);
+  return to_python(commands::to_json(r));
+}
+
 py::object evaluate(const py::object& positions, const std::string& model, const py::object& region,
                     const std::string& name) {
-  cli::EvaluateRequest q;
+  commands::EvaluateRequest q;
   q.name = py::isinstance<py::str>(positions) ? positions.cast<std::string>() : name;
   q.program = program_of(positions, name);
   q.model = model_of(model);
   q.regions = regions_of(region);
-  return computed([&] { return cli::evaluate_report(q); });
+  return run_command([&] { return commands::evaluate(q); });
 }
 
 py::object optimize(long long n, const std::string& criterion, const std::string& model, const py::object& region,
                     long long starts, long long seed, long long threads, long long digits, const std::string& local) {
-  cli::OptimizeRequest q;
-  q.synthesis.positions = static_cast<int>(in_range("n", n, cli::kOptimizePositions));
+  commands::OptimizeRequest q;
+  q.synthesis.positions = static_cast<int>(in_range("n", n, commands::kOptimizePositions));
   q.synthesis.criterion = criterion_of(criterion);
   q.synthesis.model = model_of(model);
-  q.synthesis.starts = static_cast<int>(in_range("starts", starts, cli::kStarts, 0));
-  q.synthesis.seed = static_cast<std::uint64_t>(in_range("seed", seed, cli::kSeeds));
-  q.synthesis.threads = static_cast<int>(in_range("threads", threads, cli::kThreads));
+  q.synthesis.starts = static_cast<int>(in_range("starts", starts, commands::kStarts, 0));
+  q.synthesis.seed = static_cast<std::uint64_t>(in_range("seed", seed, commands::kSeeds));
+  q.synthesis.threads = static_cast<int>(in_range("threads", threads, commands::kThreads));
   q.synthesis.local = cli::local_solver_of(choice("local", local, cli::local_solver_names()));
-  q.digits = static_cast<int>(in_range("digits", digits, cli::kPolishDigits, 0));
+  q.digits = static_cast<int>(in_range("digits", digits, commands::kPolishDigits, 0));
   q.regions = regions_of(region);
-  return computed([&] { return cli::optimize_report(q); });
+  return run_command([&] { return commands::optimize(q); });
 }
 
 py::object limits(const std::string& model, const py::object& region) {
-  const ModelKind m = model_of(model);
-  const std::vector<std::string> regions = regions_of(region);
-  return computed([&] { return cli::limits_report(m, regions); });
+  commands::LimitsRequest q{model_of(model), regions_of(region)};
+  return run_command([&] { return commands::limits(q); });
 }
 
 struct IntervalArguments {
@@ -125,7 +138,7 @@ py::object calibrate(const py::object& samples, const py::object& magnitude, con
   q.modulus = choice("modulus", modulus, {"norm", "projection"}) == "norm" ? Modulus::norm : Modulus::projection;
   q.weights = choice("weights", weights, {"auto", "samples", "positions"});
   q.keep_outliers = keep_outliers;
-  q.suggest = static_cast<int>(in_range("suggest", suggest, cli::kSuggestions));
+  q.suggest = static_cast<int>(in_range("suggest", suggest, {cli::kSuggestions.lo, cli::kSuggestions.hi}));
   q.criterion = criterion_of(criterion);
   q.regions = regions_of(region);
   q.model = model_of(model);
@@ -180,19 +193,19 @@ PYBIND11_MODULE(scalcal, m) {
       "program", [](const std::string& name) { return to_python(cli::program_json(resolve_program(name))); },
       py::arg("name"), "The (N, 3) positions of a catalogue program (see `scalcal catalogue`) or a CSV file.");
 
-  m.def("evaluate", &evaluate, py::arg("positions"), py::kw_only(), py::arg("model") = "paper9",
+  m.def("evaluate", &scalcal::python::evaluate, py::arg("positions"), py::kw_only(), py::arg("model") = "paper9",
         py::arg("region") = py::none(), py::arg("name") = "positions",
         "The criteria D, A, E, S, the RMS errors theta, the program and K of a program: an (N, 3) array of "
         "directions, a catalogue name or a CSV file (`scalcal evaluate --json`). With region (a spec or a list "
         "of specs), also each criterion's efficiency against the region's limit.");
 
-  m.def("optimize", &optimize, py::arg("n"), py::arg("criterion") = "D", py::kw_only(), py::arg("model") = "paper9",
+  m.def("optimize", &scalcal::python::optimize, py::arg("n"), py::arg("criterion") = "D", py::kw_only(), py::arg("model") = "paper9",
         py::arg("region") = py::none(), py::arg("starts") = 0, py::arg("seed") = 1, py::arg("threads") = 0,
         py::arg("digits") = 0, py::arg("local") = "auto",
         "The optimal program of n positions for a criterion (`scalcal optimize --json`); starts 0 is the "
         "criterion's default, threads 0 all cores, digits > 0 polishes the optimum in MPFR.");
 
-  m.def("limits", &limits, py::kw_only(), py::arg("model") = "paper9", py::arg("region") = py::none(),
+  m.def("limits", &scalcal::python::limits, py::kw_only(), py::arg("model") = "paper9", py::arg("region") = py::none(),
         "The N -> infinity limits of the normalised criteria (`scalcal limits --json`): exact on the sphere, "
         "certified bounds on a region.");
 

@@ -201,17 +201,31 @@ ExactCriteria exact_criteria(const matrix& M, const ex& N, const std::vector<Par
     eig.insert(eig.end(), ev.begin(), ev.end());
   }
   c.eigenvalues = eig;
-  c.D.candidates = {canonical(GiNaC::pow(N, P) / det)};
-  c.A.candidates = {canonical(N * trace)};
-  if (!eig_symbolic)
-    for (const auto& l : eig) add_distinct(c.E.candidates, eig_exact ? canonical(N / l) : GiNaC::evalf(N / l));
-  c.E.exact = eig_exact;
-  for (int r = 0; r < P; ++r) add_distinct(c.S.candidates, canonical(N * c.K_diagonal[r]));
+  // The closed forms known here, by the registered criterion's name; any other criterion has none.
+  for (CriterionKind k : kCriteria) {
+    ExactValue& v = c.values[static_cast<std::size_t>(k.index())];
+    const std::string_view name = criterion_name(k);
+    if (name == "D") v.candidates = {canonical(GiNaC::pow(N, P) / det)};
+    if (name == "A") v.candidates = {canonical(N * trace)};
+    if (name == "E") {
+      if (!eig_symbolic)
+        for (const auto& l : eig) add_distinct(v.candidates, eig_exact ? canonical(N / l) : GiNaC::evalf(N / l));
+      v.exact = eig_exact;
+    }
+    if (name == "S")
+      for (int r = 0; r < P; ++r) add_distinct(v.candidates, canonical(N * c.K_diagonal[r]));
+  }
   ExactValue* theta[4] = {&c.theta_bias, &c.theta_scale, &c.theta_nonorth, &c.theta_cubic};
   for (int r = 0; r < P; ++r)
     add_distinct(theta[static_cast<int>(groups[static_cast<std::size_t>(r)])]->candidates,
                  GiNaC::sqrt(canonical(N * c.K_diagonal[r])));
   return c;
+}
+
+const ExactValue& ExactCriteria::at(std::string_view name) const {
+  const auto k = parse_criterion(name);
+  if (!k || !of(*k)) throw std::out_of_range("no closed form for criterion " + std::string(name));
+  return *of(*k);
 }
 
 }  // namespace scalcal::symbolic

@@ -3,7 +3,9 @@
 // groups, with K = M^-1 inverted block by block (the connected components of M's sparsity
 // pattern), so symmetric programs stay cheap.
 #pragma once
+#include <array>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <ginac/ginac.h>
@@ -27,15 +29,20 @@ struct ExactValue {
 
 struct ExactCriteria {
   GiNaC::ex N;
-  ExactValue D, A, E, S;
+  // Every registered criterion by CriterionKind index; no candidates where there is no closed form here.
+  std::array<ExactValue, kCriterionCount> values;
   ExactValue theta_bias, theta_scale, theta_nonorth, theta_cubic;  // no candidates: the model lacks the group
   std::vector<GiNaC::ex> eigenvalues;  // of M (one per eigenvalue with multiplicity) when exact
   std::vector<GiNaC::ex> K_diagonal;    // K(r, r), r = 0..P-1
 
-  // The paper's four criteria by their numeric handle; nullptr for a criterion with no closed form here.
+  // A criterion's exact value; nullptr where it has no closed form here.
   const ExactValue* of(CriterionKind c) const {
-    return c == CriterionKind::D ? &D : c == CriterionKind::A ? &A : c == CriterionKind::E ? &E : c == CriterionKind::S ? &S : nullptr;
+    const ExactValue& v = values[static_cast<std::size_t>(c.index())];
+    return v.candidates.empty() ? nullptr : &v;
   }
+  // By the criterion's registered name ("D"), for readability where one is meant; throws
+  // std::out_of_range when it has no closed form here.
+  const ExactValue& at(std::string_view name) const;
 };
 
 // The paper's nine parameters in their groups (bias, scale, non-orthogonality, three each).

@@ -60,12 +60,14 @@ JigAnalysis analyse_jig(const std::vector<WeightedPoint>& normals) {
   } catch (const std::invalid_argument&) {
     out.at_default.reset();
   }
-  const CriterionKind kinds[4] = {CriterionKind::D, CriterionKind::A, CriterionKind::E, CriterionKind::S};
-  for (int i = 0; i < 4; ++i) {
-    JigLimitClaim& claim = out.claim[i];
-    const CriterionKind c = kinds[i];
+  for (const CriterionKind c : kCriteria) {
+    JigLimitClaim& claim = out.claim[static_cast<std::size_t>(c.index())];
     if (!out.at_default) {
       claim = {"never reached", true, "rank-deficient in every orientation: rank does not change under rotation"};
+      continue;
+    }
+    if (!has_symbolic_limit(c)) {
+      claim = {"not decided exactly", false, "no known limit for criterion " + std::string(criterion_name(c))};
       continue;
     }
     const ex limit = symbolic_limit(c).value;

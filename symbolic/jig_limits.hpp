@@ -3,6 +3,7 @@
 // sits); D's limit needs a 4-design (proofs/d_equality.md); A's optimum is unique, so a jig whose
 // rotation-invariant fourth-moment norm differs from the optimum's never reaches A.
 #pragma once
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -38,7 +39,7 @@ struct JigLimitClaim {
 struct JigAnalysis {
   bool four_design = false;  // every criterion is the same in every orientation
   std::optional<ExactCriteria> at_default;  // nullopt when the jig is rank-deficient
-  JigLimitClaim claim[4];                   // by criterion: D, A, E, S (kCriteria order)
+  std::array<JigLimitClaim, kCriterionCount> claim;  // by CriterionKind index
 };
 
 // `normals` at the default mounting, N >= 1.

@@ -90,9 +90,16 @@ SymbolicLimit minimise_max(const std::vector<ex>& pieces, const symbol& b) {
   return best;
 }
 
+bool has_symbolic_limit(CriterionKind c) {
+  const symbol b("b");
+  return !criterion_pieces(c, b).empty();
+}
+
 SymbolicLimit symbolic_limit(CriterionKind c) {
   const symbol b("b");
-  return minimise_max(criterion_pieces(c, b), b);
+  const std::vector<ex> pieces = criterion_pieces(c, b);
+  if (pieces.empty()) throw std::invalid_argument("no known limit for criterion " + std::string(criterion_name(c)));
+  return minimise_max(pieces, b);
 }
 
 }  // namespace scalcal::symbolic

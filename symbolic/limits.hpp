@@ -27,6 +27,9 @@ struct SymbolicLimit {
 // or a crossing of two, all roots of polynomials of degree <= 2 found in closed form.
 SymbolicLimit minimise_max(const std::vector<GiNaC::ex>& pieces, const GiNaC::symbol& b);
 
+// Throws std::invalid_argument("no known limit for criterion X") for a criterion without closed
+// forms on the symmetric measures (has_symbolic_limit is false).
 SymbolicLimit symbolic_limit(CriterionKind c);
+bool has_symbolic_limit(CriterionKind c);
 
 }  // namespace scalcal::symbolic

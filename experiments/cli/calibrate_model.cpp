@@ -22,6 +22,13 @@ namespace scalcal::cli {
 // estimator starts from; the paper9 path fits an ellipsoid first, the other models do not.
 constexpr double kGainTolerance = 0.2;
 
+// " D 1.7e+07, A 78, E 18, S 18": every registered criterion, in the registry's order.
+std::string criteria_text(const ModelEvaluation& ev) {
+  std::ostringstream t;
+  for (auto c : kCriteria) t << (c.index() ? ", " : " ") << criterion_name(c) << " " << ev.value(c);
+  return t.str();
+}
+
 std::string not_identifiable_text(ModelKind model) {
   const std::string rotation =
       "the rotation part of the misalignment (three angles) leaves every modulus unchanged and is not estimated";
@@ -92,14 +99,9 @@ Report model_calibration_report(const ModelCalibrationRequest& q, const std::vec
     t << " " << criterion_name(c) << " " << std::setprecision(4) << e;
     eff_text += t.str();
   }
-  Json program{{"positions", ev.positions},
-               {"rank", ev.rank},
-               {"condition", ev.condition},
-               {"D", ev.D},
-               {"A", ev.A},
-               {"E", ev.E},
-               {"S", ev.S},
-               {"efficiency", eff}};
+  Json program{{"positions", ev.positions}, {"rank", ev.rank}, {"condition", ev.condition}};
+  for (auto c : kCriteria) program[std::string(criterion_name(c))] = ev.value(c);
+  program["efficiency"] = eff;
   for (int g = 0; g < 4; ++g)
     if (ev.has_group(static_cast<ParameterGroup>(g)))
       program["theta_" + std::string(kGroupNames[static_cast<std::size_t>(g)])] = ev.theta[static_cast<std::size_t>(g)];
@@ -146,8 +148,7 @@ Report model_calibration_report(const ModelCalibrationRequest& q, const std::vec
        << " " << offset(2) << ")\n"
        << "not identified: " << not_identifiable_text(q.model) << "\n"
        << "residual rms " << r.residual_rms << ", noise " << (have_std ? std::to_string(r.noise) : "n/a") << "\n"
-       << "program measured under " << name << ": D " << ev.D << ", A " << ev.A << ", E " << ev.E << ", S " << ev.S
-       << ", condition " << ev.condition << "; efficiency (limit / value, D as its " << P << "th root):" << eff_text
+       << "program measured under " << name << ":" << criteria_text(ev) << ", condition " << ev.condition << "; efficiency (limit / value, D as its " << P << "th root):" << eff_text
        << "\n";
   return Report{j, text.str(), r.converged ? 0 : 1};
 }

@@ -7,6 +7,7 @@
 #include <sstream>
 #include <vector>
 
+#include "commands/evaluation_json.hpp"
 #include "experiments/cli/calibrate_model.hpp"
 #include "experiments/cli/command.hpp"
 #include "experiments/cli/output_file.hpp"
@@ -227,19 +228,12 @@ Report calibrate_report(const CalibrationRequest& o, CalibrationInput in) {
   const auto errors_json = [](const std::array<double, 3>& e) {
     return Json{{"bias", e[0]}, {"scale", e[1]}, {"nonorth", e[2]}};
   };
-  j["program"] = Json{{"positions", ev.positions},
-                      {"rank", ev.rank},
-                      {"condition", ev.condition},
-                      {"D", ev.D},
-                      {"A", ev.A},
-                      {"E", ev.E},
-                      {"S", ev.S},
-                      {"theta_bias", ev.theta_bias},
-                      {"theta_scale", ev.theta_scale},
-                      {"theta_nonorth", ev.theta_nonorth},
-                      {"errors", errors_json(rms_errors(ev))},
-                      {"region", region.text()},
-                      {"efficiency", eff}};
+  Json measured{{"positions", ev.positions}, {"rank", ev.rank}, {"condition", ev.condition}};
+  commands::add_criteria(measured, erase_model(ev));
+  measured["errors"] = errors_json(rms_errors(ev));
+  measured["region"] = region.text();
+  measured["efficiency"] = eff;
+  j["program"] = measured;
   Json out_list = Json::array();
   for (const auto* p : outliers)
     out_list.push_back(Json{{"line", p->line}, {"residual", p->residual}, {"standardised", p->standardised}});
@@ -280,8 +274,9 @@ Report calibrate_report(const CalibrationRequest& o, CalibrationInput in) {
            : r.noise_source == NoiseSource::residuals ? "residuals, N - 9 degrees of freedom"
                                                       : "not estimable")
        << ")\n";
-  text << "program measured: N = " << ev.positions << ", D " << ev.D << ", A " << ev.A << ", E " << ev.E << ", S "
-       << ev.S << ", thetas " << ev.theta_bias << " " << ev.theta_scale << " " << ev.theta_nonorth << ", condition "
+  text << "program measured: N = " << ev.positions;
+  for (auto c : kCriteria) text << (c.index() ? ", " : ", ") << criterion_name(c) << " " << ev.value(c);
+  text << ", thetas " << ev.theta_bias << " " << ev.theta_scale << " " << ev.theta_nonorth << ", condition "
        << ev.condition << "; efficiency on " << region.text() << ":";
   for (auto c : kCriteria)
     text << " " << criterion_name(c) << " " << advice.efficiency[static_cast<std::size_t>(c.index())];

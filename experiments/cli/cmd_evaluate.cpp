@@ -1,43 +1,45 @@
-// `scalcal evaluate PROGRAM [--region SPEC]... [--out FILE] [--json]`: the criteria of one program,
-// as the paper compares them; --out writes the program itself as CSV (any catalogue name becomes a
-// file). With --region, positions outside the bench's region are refused, and each criterion gets
-// its efficiency against the region's limit.
-#include <memory>
+// `scalcal evaluate PROGRAM [--model NAME] [--region SPEC]... [--out FILE] [--json]`: the criteria of
+// one program, as the paper compares them (commands/evaluate.hpp); --out writes the program itself
+// as CSV (any catalogue name becomes a file), with tilt and azimuth on a one-zone region.
+#include <cstdio>
+#include <iostream>
+#include <sstream>
 
+#include "commands/evaluate.hpp"
 #include "experiments/cli/command.hpp"
-#include "experiments/cli/evaluate_report.hpp"
-#include "experiments/cli/options.hpp"
-#include "experiments/cli/region_option.hpp"
-#include "experiments/cli/synthesis_cli.hpp"
-#include "numeric/program/catalogue.hpp"
+#include "experiments/cli/evaluation_report.hpp"
+#include "experiments/cli/json_output.hpp"
+#include "experiments/cli/output_file.hpp"
 
 namespace scalcal::cli {
 namespace {
 
-struct Options {
-  std::string program, out, model = "paper9";
-  std::vector<std::string> regions;
-  bool json = false;
-};
-
-int run(const Options& o) {
-  return print_report(evaluate_report({o.program, resolve_program(o.program), model_of(o.model), o.regions, o.out}),
-                      o.json);
+void print_text(const commands::EvaluateResult& r) {
+  std::ostringstream text;
+  print_evaluation(text, r.name, r.evaluation);
+  if (r.region) {
+    text << "efficiency on " << r.region->text() << " (limit / value; D as its 9th root):";
+    for (auto c : kCriteria) {
+      const auto& e = r.efficiency[static_cast<std::size_t>(c.index())];
+      char buffer[32];
+      std::snprintf(buffer, sizeof buffer, "%.4f", e ? *e : 0.0);
+      text << " " << criterion_name(c) << " " << (e ? std::string(buffer) : std::string("n/a (no known limit)"));
+    }
+    text << "\n";
+  }
+  std::cout << text.str();
 }
 
-Runner setup(CLI::App& app) {
-  auto o = std::make_shared<Options>();
-  add_positional(app, "PROGRAM", o->program, "a catalogue name (scalcal catalogue) or a CSV file (x,y,z or alpha1_deg,alpha2_deg)");
-  add_region_option(app, o->regions);
-  add_model(app, o->model);
-  add_text(app, "--out", o->out, "FILE", {"also write the program as CSV x,y,z,alpha1_deg,alpha2_deg", "file path"});
-  add_switch(app, "--json", o->json, "print one JSON object (the criteria, the program and K)");
-  return [o] { return run(*o); };
+int run(const commands::Values& v) {
+  const auto r = commands::evaluate(commands::evaluate_request(v), terminal_progress("evaluate"));
+  print_warnings("evaluate", r.warnings);
+  if (v.given("--out")) write_program_file(v.text("--out"), r.program, r.columns);
+  if (v.flag("--json")) print_json(commands::to_json(r));
+  else print_text(r);
+  return 0;
 }
 
-const Registration reg({"evaluate", "evaluate PROGRAM [--model NAME] [--region SPEC]... [--out FILE] [--json]",
-                        "criteria D, A, E, S, the RMS errors theta and K of a catalogue program or CSV file", 10,
-                        setup});
+const Registration reg(commands::evaluate_table(), run);
 
 }  // namespace
 }  // namespace scalcal::cli

@@ -1,38 +1,79 @@
-// `scalcal limits [--region SPEC]... [--json]`: the infimum of each normalised criterion over all
-// measures on the sphere, derived symbolically (symbolic/limits.hpp), with the moments of an
-// optimal measure; on a restricted region, an optimal measure found numerically and a lower bound
-// certified by weak duality over the whole region (numeric/region/region_limit.hpp).
-#include <memory>
+// `scalcal limits [--model NAME] [--region SPEC]... [--json]`: the infimum of each normalised
+// criterion over all measures on the sphere, derived symbolically, with the moments of an optimal
+// measure; on a restricted region, an optimal measure found numerically and a lower bound certified
+// by weak duality over the whole region (commands/limits.hpp).
+#include <cstdio>
+#include <iostream>
+#include <sstream>
 
+#include "commands/limits.hpp"
 #include "experiments/cli/command.hpp"
-#include "experiments/cli/limits_report.hpp"
-#include "experiments/cli/options.hpp"
-#include "experiments/cli/region_option.hpp"
-#include "experiments/cli/synthesis_cli.hpp"
+#include "experiments/cli/json_output.hpp"
 
 namespace scalcal::cli {
 namespace {
 
-struct Options {
-  std::vector<std::string> regions;
-  std::string model = "paper9";
-  bool json = false;
-};
-
-int run(const Options& o) { return print_report(limits_report(model_of(o.model), o.regions), o.json); }
-
-Runner setup(CLI::App& app) {
-  auto o = std::make_shared<Options>();
-  add_region_option(app, o->regions);
-  add_model(app, o->model);
-  add_switch(app, "--json", o->json, "print one JSON object keyed by criterion");
-  return [o] { return run(*o); };
+std::string decimal(const char* format, double v) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, format, v);
+  return buffer;
 }
 
-const Registration reg({"limits", "limits [--model NAME] [--region SPEC]... [--json]",
-                        "N -> infinity limits of the normalised D, A, E, S criteria: exact on the sphere, certified "
-                        "bounds on a region",
-                        61, setup});
+// "D >= 61509375/4 = 1.53773e+07": the decimal only where it says something the exact form does not.
+std::string exact_and_decimal(const commands::SphereLimit& s) {
+  std::ostringstream d;
+  d << s.value;
+  return s.exact + (d.str() == s.exact ? "" : " = " + d.str());
+}
+
+void print_region(const commands::LimitsResult& r) {
+  std::cout << "region " << r.region->text() << "\n";
+  for (const auto& l : r.criteria) {
+    std::cout << criterion_name(l.criterion);
+    if (!l.region) {
+      std::cout << ": no known limit\n";
+      continue;
+    }
+    std::cout << " >= " << decimal("%.10g", l.region->value) << " (numerically, an optimal measure on "
+              << l.region->candidates << " candidates)";
+    if (l.region->lower_bound)
+      std::cout << "; proven >= " << decimal("%.10g", *l.region->lower_bound) << " (gap "
+                << decimal("%.2g", (l.region->value - *l.region->lower_bound) / l.region->value) << " relative)";
+    std::cout << "; " << decimal("%.4g", l.region->value / *l.sphere_value) << " x the sphere's; support "
+              << l.region->support.size() << " positions\n";
+  }
+}
+
+void print_sphere(const commands::LimitsResult& r) {
+  const bool paper9 = r.model == ModelKind::paper9;
+  for (const auto& l : r.criteria) {
+    if (!l.sphere) {
+      if (paper9) std::cout << criterion_name(l.criterion) << ": no known limit\n";
+      continue;
+    }
+    const auto& s = *l.sphere;
+    std::cout << criterion_name(l.criterion) << " >= " << exact_and_decimal(s);
+    if (paper9)
+      std::cout << "   optimal moments: E[x^2] = 1/3, E[x^4] = " << s.x4 << ", E[x^2 y^2] = " << s.x2y2
+                << ", odd moments and other mixed moments 0\n";
+    else
+      std::cout << "   optimal measure: " << s.measure << "; attained: " << s.attained << "\n";
+  }
+  if (!paper9)
+    std::cout << "(model " << model_name(r.model) << ", " << model_parameters(r.model) << " parameters; proofs: "
+              << visit_model(r.model, [](auto M) { return decltype(M)::proof; }) << ")\n";
+}
+
+int run(const commands::Values& v) {
+  const auto r = commands::limits(commands::limits_request(v), terminal_progress("limits"));
+  print_warnings("limits", r.warnings);
+  if (v.flag("--json")) print_json(commands::to_json(r));
+  else if (r.region) print_region(r);
+  else print_sphere(r);
+  return 0;
+}
+
+const Registration reg(commands::limits_table(), run);
 
 }  // namespace
 }  // namespace scalcal::cli

@@ -8,6 +8,9 @@
 #include <vector>
 
 #include "commands/usage_error.hpp"
+#include "commands/values.hpp"
+#include "commands/warning.hpp"
+#include "commands/progress.hpp"
 
 namespace CLI {
 class App;
@@ -31,11 +34,21 @@ struct Command {
 
 struct Registration {
   explicit Registration(Command c);
+  // A command whose options are a table of commands/ (parsed by table_options.hpp); `run` gets the
+  // checked values and returns the exit status.
+  Registration(const commands::CommandTable& table, std::function<int(const commands::Values&)> run);
 };
 
 const std::vector<Command>& commands();
 
 // True when stderr is a terminal: long work shows progress only then.
 bool progress_enabled();
+
+// Progress on a terminal's stderr ("\rstart 5/16", "limits: D on cap:30"); empty when stderr is
+// not a terminal.
+commands::Progress terminal_progress(const std::string& command);
+
+// Each warning as one stderr line: "scalcal COMMAND: SUBJECT: warning: MESSAGE".
+void print_warnings(const std::string& command, const commands::Warnings& warnings);
 
 }  // namespace scalcal::cli

@@ -64,7 +64,7 @@ int main(int argc, char** argv) {
   std::map<std::string, CLI::App*> subs;
   for (const auto& c : commands()) {
     CLI::App* sub = app.add_subcommand(c.name, c.summary);
-    sub->set_help_flag("-h,--help", scalcal::cli::describe({"print this help and exit"}, "off"));
+    sub->set_help_flag("-h,--help", "print this help and exit");
     sub->allow_extras();
     runners[c.name] = c.setup(*sub);
     subs[c.name] = sub;

@@ -130,7 +130,7 @@ void add_choice(CLI::App& app, const std::string& name, std::string& target, con
 }
 
 void add_switch(CLI::App& app, const std::string& name, bool& target, const std::string& what) {
-  app.add_flag(name, target, describe({what}, "off"));
+  app.add_flag(name, target, what);
 }
 
 void add_positional(CLI::App& app, const std::string& name, std::string& target, const std::string& what) {

@@ -15,10 +15,6 @@ namespace scalcal::cli {
 
 void add_region_option(CLI::App& app, std::vector<std::string>& specs);
 
-// Above this condition number of the region's uniform measure, K is not resolved in double
-// precision (a cap of 3 degrees: 7.9e14; of 4 degrees: 7.9e13).
-inline constexpr double kBeyondDouble = 1e14;
-
 // The region of the specs (the sphere when there are none). Throws InputError (exit 2) for a bad
 // spec, a region on which no program is rank 9, or one whose conditioning is beyond double
 // precision; warns on stderr, naming the command, when the region's best conditioning is poor.

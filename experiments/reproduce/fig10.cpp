@@ -37,9 +37,9 @@ void figure_limits(Context& ctx) {
                csv_num(e.seconds)});
     }
   CsvWriter paper(ctx.file("fig10_paper.csv"), {"criterion", "N", "value"});
-  paper.row({"A", "18", csv_num(ctx.paper[0].ev.A)});
-  paper.row({"E", "18", csv_num(ctx.paper[1].ev.E)});
-  paper.row({"S", "18", csv_num(ctx.paper[2].ev.S)});
+  paper.row({"A", "18", csv_num(ctx.paper[0].ev.value(CriterionKind::A))});
+  paper.row({"E", "18", csv_num(ctx.paper[1].ev.value(CriterionKind::E))});
+  paper.row({"S", "18", csv_num(ctx.paper[2].ev.value(CriterionKind::S))});
   csv.close();
   paper.close();
   // Four panels on the page width, one key above them (a plot of its own, so it may use the full

@@ -31,7 +31,7 @@ void figures_4_5_6(Context& ctx) {
     CsvWriter csv(ctx.file("fig4_programs.csv"), header);
     for (const auto* e : drawn) {
       auto cells = entry_cells(*e);
-      cells.push_back(e->family == "optimised" ? (e->ev.D > limit * (1 + kLimitTolerance) ? "1" : "0") : "");
+      cells.push_back(e->family == "optimised" ? (e->ev.value(CriterionKind::D) > limit * (1 + kLimitTolerance) ? "1" : "0") : "");
       csv.row(cells);
     }
   }
@@ -39,7 +39,7 @@ void figures_4_5_6(Context& ctx) {
     CsvWriter csv(ctx.file("fig4_random.csv"), {"N", "count", "seed", "det_K", "D"});
     for (const auto& [n, e] : ctx.random_best)
       csv.row({std::to_string(n), std::to_string(ctx.random_count), std::to_string(ctx.options.seed),
-               csv_num(e.ev.det_K), csv_num(e.ev.D)});
+               csv_num(e.ev.raw(CriterionKind::D)), csv_num(e.ev.value(CriterionKind::D))});
   }
   const std::string common =
       "set grid\nset xlabel 'number of measurement positions N'\nset xrange [8:49]\nset xtics 4\nset mxtics 4\n";
@@ -57,7 +57,7 @@ void figures_4_5_6(Context& ctx) {
   const std::string limit_label = "set style textbox opaque noborder margins 1,1\nLIMIT = " + csv_num(limit) +
                                   "\nset label 1 'limit 61509375/4' at 47.5, LIMIT offset 0,-0.8 right front boxed\n";
   std::vector<double> values;  // every D drawn, for the axis range
-  for (const auto* e : drawn) values.push_back(e->ev.D);
+  for (const auto* e : drawn) values.push_back(e->ev.value(CriterionKind::D));
   std::sort(values.begin(), values.end());
   const auto first_random = ctx.random_best.empty() ? nullptr : &*ctx.random_best.begin();
 
@@ -73,18 +73,18 @@ void figures_4_5_6(Context& ctx) {
     if (const auto space = label.find(" ("); space != std::string::npos) label.replace(space, 1, "\\n");
     return label;
   };
-  if (first_random && first_random->second.ev.D < top5)
+  if (first_random && first_random->second.ev.value(CriterionKind::D) < top5)
     body5 += "set label 2 \"" + two_lines(random_title(ctx)) + "\" at " +
-             std::to_string(first_random->first + 1.5) + ", " + csv_num(1.6 * first_random->second.ev.D) +
+             std::to_string(first_random->first + 1.5) + ", " + csv_num(1.6 * first_random->second.ev.value(CriterionKind::D)) +
              " left front tc rgb '" + random + "'\nset arrow 2 from " + std::to_string(first_random->first + 1.8) + ", " +
-             csv_num(1.3 * first_random->second.ev.D) + " to " + std::to_string(first_random->first + 0.3) + ", " +
-             csv_num(1.05 * first_random->second.ev.D) + " size screen 0.012,20 lw 1 lc rgb '" + random + "'\n";
+             csv_num(1.3 * first_random->second.ev.value(CriterionKind::D)) + " to " + std::to_string(first_random->first + 0.3) + ", " +
+             csv_num(1.05 * first_random->second.ev.value(CriterionKind::D)) + " size screen 0.012,20 lw 1 lc rgb '" + random + "'\n";
   if (outlier)
     for (const auto* e : drawn)
-      if (e->ev.D == values.back())
+      if (e->ev.value(CriterionKind::D) == values.back())
         body5 += "set arrow 1 from " + std::to_string(e->ev.positions) + ", graph 0.88 to " +
                  std::to_string(e->ev.positions) + ", graph 0.99 filled size screen 0.015,20 lw 2 lc rgb '" +
-                 (e->family == "rotation" ? rotation : black) + "'\nset label 3 " + plots::gp_quote(gp_power(e->ev.D)) +
+                 (e->family == "rotation" ? rotation : black) + "'\nset label 3 " + plots::gp_quote(gp_power(e->ev.value(CriterionKind::D))) +
                  " at " + std::to_string(e->ev.positions) + ", graph 0.93 offset 0.7,0 left front tc rgb '" +
                  (e->family == "rotation" ? rotation : black) + "'\n";
   render_figure(ctx, "fig5", "N^9 det K against N (the paper's Fig. 5)", body5 + class_plot({6, false, true, true}, ctx),
@@ -98,7 +98,7 @@ void figures_4_5_6(Context& ctx) {
   double random_top = 0;
   int random_top_n = 0;
   for (const auto& [n, e] : ctx.random_best)
-    if (e.ev.D > random_top) random_top = e.ev.D, random_top_n = n;
+    if (e.ev.value(CriterionKind::D) > random_top) random_top = e.ev.value(CriterionKind::D), random_top_n = n;
   if (random_top > top6) {
     random_label.pop_back();  // "(N ≤ 36; 5.4·10^7 at N = 9)"
     random_label += "; " + gp_power(random_top, 2) + " at N = " + std::to_string(random_top_n) + ")";
@@ -110,13 +110,13 @@ void figures_4_5_6(Context& ctx) {
                       " left front tc rgb '" + random + "'\n";
   std::vector<int> misses;
   for (int n : ctx.optimised_sizes(CriterionKind::D))
-    if (ctx.optimum(CriterionKind::D, n)->ev.D > limit * (1 + kLimitTolerance)) misses.push_back(n);
+    if (ctx.optimum(CriterionKind::D, n)->ev.value(CriterionKind::D) > limit * (1 + kLimitTolerance)) misses.push_back(n);
   for (std::size_t i = 0; i < misses.size(); ++i) {
     // Above the circle; to its left when the next N also misses at nearly the same height, where the
     // two numbers would collide.
-    const double d = ctx.optimum(CriterionKind::D, misses[i])->ev.D;
+    const double d = ctx.optimum(CriterionKind::D, misses[i])->ev.value(CriterionKind::D);
     const bool crowded = i + 1 < misses.size() && misses[i + 1] == misses[i] + 1 &&
-                         std::abs(ctx.optimum(CriterionKind::D, misses[i + 1])->ev.D - d) < 0.08 * (top6 - 1.45e7);
+                         std::abs(ctx.optimum(CriterionKind::D, misses[i + 1])->ev.value(CriterionKind::D) - d) < 0.08 * (top6 - 1.45e7);
     body6 += "set label " + std::to_string(10 + i) + " '" + std::to_string(misses[i]) + "' at " +
              std::to_string(misses[i]) + ", " + csv_num(d) +
              (crowded ? " offset -1.7,-0.2 center" : " offset 0,1.1 center") + " front tc rgb '" + medium + "'\n";
@@ -152,9 +152,9 @@ void figures_4_5_6(Context& ctx) {
   std::string missed;
   for (int n : ctx.optimised_sizes(CriterionKind::D)) {
     const Entry& e = *ctx.optimum(CriterionKind::D, n);
-    const bool misses = e.ev.D > limit * (1 + kLimitTolerance);
+    const bool misses = e.ev.value(CriterionKind::D) > limit * (1 + kLimitTolerance);
     if (misses) missed += (missed.empty() ? "" : ", ") + std::to_string(n);
-    rows.push_back({std::to_string(n), decimal(e.ev.D, 8), decimal(e.ev.D / limit - 1, 3), misses ? "misses" : "reaches",
+    rows.push_back({std::to_string(n), decimal(e.ev.value(CriterionKind::D), 8), decimal(e.ev.value(CriterionKind::D) / limit - 1, 3), misses ? "misses" : "reaches",
                     std::to_string(e.hits) + "/" + std::to_string(e.starts), decimal(e.seconds, 3)});
   }
   r.paragraph("The optimised D-criterion programs (scalcal's multistart; `hits` = starts that reached the best value):");

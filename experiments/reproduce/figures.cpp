@@ -15,7 +15,7 @@ std::vector<std::string> entry_header() {
 std::vector<std::string> entry_cells(const Entry& e) {
   const auto& v = e.ev;
   return {e.family,          CsvWriter::text(e.name), CsvWriter::text(e.source), std::to_string(v.positions),
-          csv_num(v.det_K), csv_num(v.D), csv_num(v.A), csv_num(v.E), csv_num(v.S),
+          csv_num(v.raw(CriterionKind::D)), csv_num(v.value(CriterionKind::D)), csv_num(v.value(CriterionKind::A)), csv_num(v.value(CriterionKind::E)), csv_num(v.value(CriterionKind::S)),
           csv_num(v.theta_bias), csv_num(v.theta_scale), csv_num(v.theta_nonorth)};
 }
 

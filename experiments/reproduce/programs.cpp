@@ -134,7 +134,7 @@ void compute_optimised(Context& ctx) {
       // A result is kept only if scalcal's own evaluation confirms it: full rank and a positive,
       // finite criterion. Anything else is reported as a failed optimisation, never plotted.
       const double v = e.ev.value(plan.criterion);
-      if (!e.ev.full_rank() || !std::isfinite(v) || v <= 0 || e.ev.lambda_max_K <= 0) {
+      if (!e.ev.full_rank() || !std::isfinite(v) || v <= 0 || e.ev.raw(CriterionKind::E) <= 0) {
         ctx.optimiser_failures.push_back(std::string(criterion_name(plan.criterion)) + ", N = " + std::to_string(n) +
                                          ": synthesize() returned value " + decimal(r.value) +
                                          "; scalcal's evaluation of its program gives " +

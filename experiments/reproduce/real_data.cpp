@@ -125,8 +125,8 @@ void real_data(Context& ctx) {
     suggestions += (suggestions.empty() ? "" : "; ") + std::string("(") + decimal(s.position(0), 3) + ", " +
                    decimal(s.position(1), 3) + ", " + decimal(s.position(2), 3) + ") → D " + decimal(s.value, 4);
   rep.paragraph("The program the positions turned out to be: N = " + std::to_string(ev.positions) + ", D = " +
-                decimal(ev.D, 4) + ", A = " + decimal(ev.A, 4) + ", E = " + decimal(ev.E, 4) + ", S = " +
-                decimal(ev.S, 4) + ", θ = " + decimal(ev.theta_bias, 3) + ", " + decimal(ev.theta_scale, 3) + ", " +
+                decimal(ev.value(CriterionKind::D), 4) + ", A = " + decimal(ev.value(CriterionKind::A), 4) + ", E = " + decimal(ev.value(CriterionKind::E), 4) + ", S = " +
+                decimal(ev.value(CriterionKind::S), 4) + ", θ = " + decimal(ev.theta_bias, 3) + ", " + decimal(ev.theta_scale, 3) + ", " +
                 decimal(ev.theta_nonorth, 3) + "; efficiency against the sphere's limits D " +
                 decimal(advice.efficiency[0], 3) + ", A " + decimal(advice.efficiency[1], 3) + ", E " +
                 decimal(advice.efficiency[2], 3) + ", S " + decimal(advice.efficiency[3], 3) +

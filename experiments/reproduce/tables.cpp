@@ -33,10 +33,10 @@ void tables_1_2_3(Context& ctx) {
     std::vector<std::vector<std::string>> rows;
     auto add = [&](const std::string& label, const Entry& e) {
       const auto& v = e.ev;
-      rows.push_back({label, decimal(v.D, 7), decimal(v.A, 7), decimal(v.E, 7), decimal(v.S, 7), decimal(v.theta_bias, 5),
+      rows.push_back({label, decimal(v.value(CriterionKind::D), 7), decimal(v.value(CriterionKind::A), 7), decimal(v.value(CriterionKind::E), 7), decimal(v.value(CriterionKind::S), 7), decimal(v.theta_bias, 5),
                       decimal(v.theta_scale, 5), decimal(v.theta_nonorth, 5), pct(value(v, c), lim)});
-      csv.row({std::to_string(t + 1), cn, e.name, std::to_string(v.positions), csv_num(v.D), csv_num(v.A),
-               csv_num(v.E), csv_num(v.S), csv_num(v.theta_bias), csv_num(v.theta_scale),
+      csv.row({std::to_string(t + 1), cn, e.name, std::to_string(v.positions), csv_num(v.value(CriterionKind::D)), csv_num(v.value(CriterionKind::A)),
+               csv_num(v.value(CriterionKind::E)), csv_num(v.value(CriterionKind::S)), csv_num(v.theta_bias), csv_num(v.theta_scale),
                csv_num(v.theta_nonorth), csv_num(value(v, c)), csv_num(lim)});
     };
     const Entry& paper = ctx.paper[static_cast<std::size_t>(t)];

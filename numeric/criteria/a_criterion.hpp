@@ -13,6 +13,9 @@ namespace scalcal {
 struct ACriterion {
   static constexpr std::string_view name = "A";
   static constexpr std::string_view summary = "N trace K";
+  static constexpr std::string_view label = "N trace K";
+  static constexpr std::string_view raw_name = "trace K";
+  static constexpr std::string_view raw_key = "trace_K";
   static constexpr ProgramSymmetry symmetry = ProgramSymmetry::SignedPermutations;
   using Form = SmoothForm;
   static constexpr DualKind dual = DualKind::DiagonalSum;  // certified limits on regions
@@ -20,6 +23,11 @@ struct ACriterion {
   template <class Model, InverseInformationView View, class Scalar>
   static Scalar value(const View& k, const Scalar& n) {
     return n * k.trace();
+  }
+
+  template <class Model, InverseInformationView View>
+  static auto raw(const View& k) {
+    return k.trace();
   }
 
   static constexpr int default_starts(int positions) { return grown_starts(32, positions); }

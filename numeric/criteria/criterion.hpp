@@ -54,10 +54,17 @@ using View = InverseInformation<double, 9>;
 using M9 = Eigen::Matrix<double, 9, 9>;
 }  // namespace criterion_check
 
+// A criterion names itself for every report: `name` ("D"), `summary` (one line for help texts),
+// `label` (its normalised form in tables, "N^P det K" with P the model's parameter count) and its
+// unnormalised value `raw` (det K) with `raw_name` ("det K") and `raw_key` (the JSON key, "det_K").
 template <class C>
 concept Criterion = requires(const criterion_check::View& k) {
   { C::name } -> std::convertible_to<std::string_view>;
   { C::summary } -> std::convertible_to<std::string_view>;
+  { C::label } -> std::convertible_to<std::string_view>;
+  { C::raw_name } -> std::convertible_to<std::string_view>;
+  { C::raw_key } -> std::convertible_to<std::string_view>;
+  { C::template raw<Paper9Model>(k) } -> std::convertible_to<double>;
   { C::symmetry } -> std::convertible_to<ProgramSymmetry>;
   typename C::Form;
   { C::template value<Paper9Model>(k, 18.0) } -> std::convertible_to<double>;

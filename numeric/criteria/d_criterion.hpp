@@ -14,6 +14,9 @@ namespace scalcal {
 struct DCriterion {
   static constexpr std::string_view name = "D";
   static constexpr std::string_view summary = "N^P det K";
+  static constexpr std::string_view label = "N^P det K";
+  static constexpr std::string_view raw_name = "det K";
+  static constexpr std::string_view raw_key = "det_K";
   static constexpr ProgramSymmetry symmetry = ProgramSymmetry::Orthogonal;
   using Form = SmoothForm;
   static constexpr DualKind dual = DualKind::Determinant;  // certified limits on regions
@@ -26,6 +29,11 @@ struct DCriterion {
     Scalar np(1);
     for (int i = 0; i < k.parameters(); ++i) np *= n;
     return np * k.det();
+  }
+
+  template <class Model, InverseInformationView View>
+  static auto raw(const View& k) {
+    return k.det();
   }
 
   static constexpr int default_starts(int positions) { return grown_starts(16, positions); }

@@ -9,12 +9,20 @@ namespace scalcal {
 struct ECriterion {
   static constexpr std::string_view name = "E";
   static constexpr std::string_view summary = "N lambda_max(K)";
+  static constexpr std::string_view label = "N lambda_max";
+  static constexpr std::string_view raw_name = "lambda_max K";
+  static constexpr std::string_view raw_key = "lambda_max_K";
   static constexpr ProgramSymmetry symmetry = ProgramSymmetry::SignedPermutations;
   using Form = MaxEigenvalueForm;
 
   template <class Model, InverseInformationView View, class Scalar>
   static Scalar value(const View& k, const Scalar& n) {
     return n * k.max_eigenvalue();
+  }
+
+  template <class Model, InverseInformationView View>
+  static auto raw(const View& k) {
+    return k.max_eigenvalue();
   }
 
   // Narrow basins at small N (N = 9: about 1 start in 100 reaches the optimum).

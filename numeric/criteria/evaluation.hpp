@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <string_view>
 #include <vector>
 
 #include <Eigen/SVD>
@@ -23,16 +24,12 @@ struct EvaluationTpl {
   int positions = 0;
   int rank = 0;
   Scalar condition;  // 2-norm condition number of H^T H: lambda_max / lambda_min
-  // Every registered criterion, normalised, by CriterionKind index.
-  std::array<Scalar, kCriterionCount> values;
-  // The paper's four (the same numbers as values[], by name): D = N^P det K, A = N trace K,
-  // E = N lambda_max(K), S = N max_r K(r,r).
-  Scalar D, A, E, S;
+  // Every registered criterion by CriterionKind index: normalised (D = N^P det K, A = N trace K,
+  // E = N lambda_max(K), S = N max_r K(r,r)) and raw (det K, trace K, ...).
+  std::array<Scalar, kCriterionCount> values, raw_values;
   // theta_q = sqrt(N max K(r,r)) over the parameters of each group (eq. 7, times sqrt N); NaN for a
   // group the model does not have.
   Scalar theta_bias, theta_scale, theta_nonorth, theta_cubic;
-  // The same criteria without normalisation.
-  Scalar det_K, trace_K, lambda_max_K, max_diag_K;
   InformationT<Model, Scalar> information;  // H^T H
   InformationT<Model, Scalar> K;            // (H^T H)^-1, zero when rank < P
   RowT<Model, Scalar> K_eigenvalues;        // ascending, zero when rank < P
@@ -40,6 +37,9 @@ struct EvaluationTpl {
 
   bool full_rank() const { return rank == P; }
   const Scalar& value(CriterionKind c) const { return values[static_cast<std::size_t>(c.index())]; }
+  const Scalar& raw(CriterionKind c) const { return raw_values[static_cast<std::size_t>(c.index())]; }
+  // By the criterion's registered name ("D"): for readability where one criterion is meant.
+  const Scalar& value(std::string_view name) const { return value(*parse_criterion(name)); }
 };
 
 using Evaluation = EvaluationTpl<double>;
@@ -96,9 +96,8 @@ EvaluationTpl<Scalar, Model> evaluate(const ProgramTpl<Scalar>& program) {
   ev.positions = program.size();
   const Scalar inf = std::numeric_limits<Scalar>::infinity();
   ev.values.fill(inf);
-  ev.D = ev.A = ev.E = ev.S = inf;
+  ev.raw_values.fill(inf);
   ev.theta_bias = ev.theta_scale = ev.theta_nonorth = ev.theta_cubic = inf;
-  ev.det_K = ev.trace_K = ev.lambda_max_K = ev.max_diag_K = inf;
   ev.condition = inf;
   ev.K.setZero();
   ev.K_eigenvalues.setZero();
@@ -116,19 +115,13 @@ EvaluationTpl<Scalar, Model> evaluate(const ProgramTpl<Scalar>& program) {
   ev.K_eigenvalues = inv_lambda;
   const Scalar N(program.size());
   const InverseInformation<Scalar, P> k{ev.K, inv_lambda};
-  for (CriterionKind c : kCriteria)
-    ev.values[static_cast<std::size_t>(c.index())] =
-        visit_criterion(c, [&](auto C) { return decltype(C)::template value<Model>(k, N); });
-  ev.D = ev.value(CriterionKind::D);
-  ev.A = ev.value(CriterionKind::A);
-  ev.E = ev.value(CriterionKind::E);
-  ev.S = ev.value(CriterionKind::S);
+  for (CriterionKind c : kCriteria) {
+    const auto i = static_cast<std::size_t>(c.index());
+    ev.values[i] = visit_criterion(c, [&](auto C) { return decltype(C)::template value<Model>(k, N); });
+    ev.raw_values[i] = visit_criterion(c, [&](auto C) { return Scalar(decltype(C)::template raw<Model>(k)); });
+  }
   ev.condition = (sigma(0) / sigma(P - 1)) * (sigma(0) / sigma(P - 1));
-  ev.det_K = k.det();
-  ev.trace_K = k.trace();
-  ev.lambda_max_K = inv_lambda(P - 1);
   const RowT<Model, Scalar> diag = ev.K.diagonal();
-  ev.max_diag_K = diag.maxCoeff();
   ev.theta_bias = detail::group_theta<Model>(diag, N, ParameterGroup::bias);
   ev.theta_scale = detail::group_theta<Model>(diag, N, ParameterGroup::scale);
   ev.theta_nonorth = detail::group_theta<Model>(diag, N, ParameterGroup::nonorth);

@@ -21,17 +21,18 @@ struct ModelEvaluation {
   std::vector<ParameterGroup> parameter_groups;
   int positions = 0, rank = 0;
   double condition = 0;
-  std::array<double, kCriterionCount> values{};
-  double D = 0, A = 0, E = 0, S = 0;
+  // Every registered criterion by CriterionKind index, normalised and raw (evaluation.hpp).
+  std::array<double, kCriterionCount> values{}, raw_values{};
   // theta of each group in kGroupNames order; NaN for a group the model does not have.
   std::array<double, 4> theta{};
-  double det_K = 0, trace_K = 0, lambda_max_K = 0, max_diag_K = 0;
   Eigen::MatrixXd information, K;
   Eigen::VectorXd K_eigenvalues;
   std::vector<int> unidentifiable;
 
   bool full_rank() const { return rank == parameters; }
   double value(CriterionKind c) const { return values[static_cast<std::size_t>(c.index())]; }
+  double raw(CriterionKind c) const { return raw_values[static_cast<std::size_t>(c.index())]; }
+  double value(std::string_view name) const { return value(*parse_criterion(name)); }
   bool has_group(ParameterGroup g) const;
 };
 
@@ -47,9 +48,8 @@ ModelEvaluation erase_model(const EvaluationTpl<double, Model>& ev, ModelKind ki
   out.rank = ev.rank;
   out.condition = ev.condition;
   out.values = ev.values;
-  out.D = ev.D, out.A = ev.A, out.E = ev.E, out.S = ev.S;
+  out.raw_values = ev.raw_values;
   out.theta = {ev.theta_bias, ev.theta_scale, ev.theta_nonorth, ev.theta_cubic};
-  out.det_K = ev.det_K, out.trace_K = ev.trace_K, out.lambda_max_K = ev.lambda_max_K, out.max_diag_K = ev.max_diag_K;
   out.information = ev.information;
   out.K = ev.K;
   out.K_eigenvalues = ev.K_eigenvalues;

@@ -97,6 +97,22 @@ inline std::string_view criterion_summary(CriterionKind c) {
   return visit_criterion(c, [](auto C) { return std::string_view(decltype(C)::summary); });
 }
 
+// Its normalised form for tables with P written out ("N^9 det K"), and its unnormalised value's name
+// and JSON key ("det K", "det_K").
+inline std::string criterion_label(CriterionKind c, int parameters) {
+  std::string s(visit_criterion(c, [](auto C) { return std::string_view(decltype(C)::label); }));
+  if (const auto at = s.find("^P"); at != std::string::npos) s.replace(at, 2, "^" + std::to_string(parameters));
+  return s;
+}
+
+inline std::string_view criterion_raw_name(CriterionKind c) {
+  return visit_criterion(c, [](auto C) { return std::string_view(decltype(C)::raw_name); });
+}
+
+inline std::string_view criterion_raw_key(CriterionKind c) {
+  return visit_criterion(c, [](auto C) { return std::string_view(decltype(C)::raw_key); });
+}
+
 inline std::optional<CriterionKind> parse_criterion(std::string_view s) {
   for (auto c : kCriteria)
     if (criterion_name(c) == s) return c;

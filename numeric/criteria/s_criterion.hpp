@@ -10,6 +10,9 @@ namespace scalcal {
 struct SCriterion {
   static constexpr std::string_view name = "S";
   static constexpr std::string_view summary = "N max_r K(r,r)";
+  static constexpr std::string_view label = "N max K(r,r)";
+  static constexpr std::string_view raw_name = "max K(r,r)";
+  static constexpr std::string_view raw_key = "max_diag_K";
   static constexpr ProgramSymmetry symmetry = ProgramSymmetry::SignedPermutations;
   using Form = MaxDiagonalForm;
 
@@ -23,6 +26,14 @@ struct SCriterion {
   template <class Model, InverseInformationView View, class Scalar>
   static Scalar value(const View& k, const Scalar& n) {
     return max_diagonal_value<SCriterion, Model>(k, n);
+  }
+
+  template <class Model, InverseInformationView View>
+  static auto raw(const View& k) {
+    auto out = k.diagonal(0);
+    for (int r : rows<Model>())
+      if (k.diagonal(r) > out) out = k.diagonal(r);
+    return out;
   }
 
   static constexpr int default_starts(int positions) { return grown_starts(32, positions); }

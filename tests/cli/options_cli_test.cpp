@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cctype>
 #include <sstream>
 
 #include "tests/common/run_cli.hpp"
@@ -39,6 +40,8 @@ TEST(OptionsCli, UnknownCommandsAndTopLevelOptionsExitTwo) {
   EXPECT_NE(r.err.find("nosuch"), std::string::npos) << r.err;
 }
 
+// Every option that takes a value states its unit and its default (or that it is required); a
+// switch only says what it does.
 TEST(OptionsCli, EveryOptionShowsItsUnitAndDefault) {
   for (const char* c : kCommands) {
     SCOPED_TRACE(c);
@@ -52,14 +55,32 @@ TEST(OptionsCli, EveryOptionShowsItsUnitAndDefault) {
       const auto first = line.find_first_not_of(' ');
       if (first == std::string::npos || first == 0 || line[first] != '-') continue;
       ++options;
-      std::string text = line;  // CLI11 may wrap a long description onto following lines
-      while (in.peek() == ' ' && text.find(')') == std::string::npos) {
+      std::string text = line;  // CLI11 may wrap a long description onto following indented lines
+      for (auto at = in.tellg(); true; at = in.tellg()) {
         std::string more;
-        std::getline(in, more);
+        if (!std::getline(in, more)) break;
+        const auto f = more.find_first_not_of(' ');
+        if (f == std::string::npos || f == 0 || more[f] == '-') {
+          in.seekg(at);
+          break;
+        }
         text += more;
       }
+      // The token after the name is a value name (N, FILE, A..B, KEY=VALUE, auto|ipopt) or the help text.
+      std::istringstream words(text.substr(first));
+      std::string name, token;
+      words >> name >> token;
+      const bool takes_value = token.find('|') != std::string::npos ||
+                               std::all_of(token.begin(), token.end(), [](char c) {
+                                 return std::isupper(static_cast<unsigned char>(c)) || std::isdigit(static_cast<unsigned char>(c)) ||
+                                        c == '.' || c == '_' || c == '=';
+                               });
+      if (!takes_value) {
+        EXPECT_EQ(text.find("unit: "), std::string::npos) << text;
+        continue;
+      }
       EXPECT_NE(text.find("unit: "), std::string::npos) << text;
-      EXPECT_NE(text.find("default: "), std::string::npos) << text;
+      EXPECT_TRUE(text.find("default: ") != std::string::npos || text.find("required)") != std::string::npos) << text;
     }
     EXPECT_GE(options, 2) << r.out;  // --help and at least one more
   }

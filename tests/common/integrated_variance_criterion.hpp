@@ -17,6 +17,9 @@ namespace scalcal::testing {
 struct IntegratedVarianceCriterion {
   static constexpr std::string_view name = "I";
   static constexpr std::string_view summary = "N tr(K W), W the sphere's mean of h h^T";
+  static constexpr std::string_view label = "N tr(K W)";
+  static constexpr std::string_view raw_name = "tr(K W)";
+  static constexpr std::string_view raw_key = "tr_KW";
   // W is invariant under every rotation and reflection, so tr(K W) is too.
   static constexpr ProgramSymmetry symmetry = ProgramSymmetry::Orthogonal;
   using Form = SmoothForm;
@@ -35,6 +38,12 @@ struct IntegratedVarianceCriterion {
     for (int r = 0; r < Model::kParameters; ++r)
       for (int c = 0; c < Model::kParameters; ++c) t += k.entry(r, c) * W(c, r);
     return n * t;
+  }
+
+  template <class Model, InverseInformationView View>
+  static auto raw(const View& k) {
+    using Scalar = decltype(k.det());
+    return value<Model>(k, Scalar(1));
   }
 
   static constexpr int default_starts(int positions) { return grown_starts(16, positions); }

@@ -84,18 +84,18 @@ TEST(ModelLimits, TheProgramsTheProofsNameHaveTheStatedValues) {
   const ModelKind axis6 = *parse_model("axis6"), cubic = *parse_model("cubic12");
   for (int k : {2, 3, 5}) {  // the six-position test, k times: N = 6k
     const auto ev = evaluate<Axis6Model>(Program::octahedral(k, 0, 0));
-    EXPECT_NEAR(ev.D / stated(axis6, "D"), 1.0, 1e-12);
-    EXPECT_NEAR(ev.A, stated(axis6, "A"), 1e-10);
-    EXPECT_NEAR(ev.E, stated(axis6, "E"), 1e-10);
-    EXPECT_NEAR(ev.S, stated(axis6, "S"), 1e-10);
+    EXPECT_NEAR(ev.value(CriterionKind::D) / stated(axis6, "D"), 1.0, 1e-12);
+    EXPECT_NEAR(ev.value(CriterionKind::A), stated(axis6, "A"), 1e-10);
+    EXPECT_NEAR(ev.value(CriterionKind::E), stated(axis6, "E"), 1e-10);
+    EXPECT_NEAR(ev.value(CriterionKind::S), stated(axis6, "S"), 1e-10);
   }
   // cubic12: 10 per axis direction and 9 per cube diagonal (N = 132) for D, 4 and 3 (N = 48) for S,
   // 44 and 45 (N = 624) for E.
-  EXPECT_NEAR(evaluate<Cubic12Model>(Program::octahedral(10, 0, 9)).D / stated(cubic, "D"), 1.0, 1e-11);
-  EXPECT_NEAR(evaluate<Cubic12Model>(Program::octahedral(4, 0, 3)).S, stated(cubic, "S"), 1e-9);
-  EXPECT_NEAR(evaluate<Cubic12Model>(Program::octahedral(44, 0, 45)).E, stated(cubic, "E"), 1e-9);
+  EXPECT_NEAR(evaluate<Cubic12Model>(Program::octahedral(10, 0, 9)).value(CriterionKind::D) / stated(cubic, "D"), 1.0, 1e-11);
+  EXPECT_NEAR(evaluate<Cubic12Model>(Program::octahedral(4, 0, 3)).value(CriterionKind::S), stated(cubic, "S"), 1e-9);
+  EXPECT_NEAR(evaluate<Cubic12Model>(Program::octahedral(44, 0, 45)).value(CriterionKind::E), stated(cubic, "E"), 1e-9);
   // Off the optimal weights the values are higher.
-  EXPECT_GT(evaluate<Cubic12Model>(Program::octahedral(1, 0, 1)).D, stated(cubic, "D") * 1.01);
+  EXPECT_GT(evaluate<Cubic12Model>(Program::octahedral(1, 0, 1)).value(CriterionKind::D), stated(cubic, "D") * 1.01);
   // A bias-only program on a tight frame: any N >= 3.
   for (int n : {3, 4, 7, 11}) {
     Program p;
@@ -104,8 +104,8 @@ TEST(ModelLimits, TheProgramsTheProofsNameHaveTheStatedValues) {
       p.positions.emplace_back(std::sqrt(2.0 / 3) * std::cos(t), std::sqrt(2.0 / 3) * std::sin(t), std::sqrt(1.0 / 3));
     }
     const auto ev = evaluate<Bias3Model>(p);
-    EXPECT_NEAR(ev.D, 27, 1e-9) << n;
-    EXPECT_NEAR(ev.E, 3, 1e-9) << n;
+    EXPECT_NEAR(ev.value(CriterionKind::D), 27, 1e-9) << n;
+    EXPECT_NEAR(ev.value(CriterionKind::E), 3, 1e-9) << n;
   }
 }
 

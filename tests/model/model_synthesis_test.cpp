@@ -48,7 +48,7 @@ TEST(ModelSynthesis, AugmentCompletesTheSixPositionTestForAxis6) {
   const AugmentedProgram a = augment_program(given, 3, CriterionKind::D, sphere_region(), model("axis6"));
   EXPECT_FALSE(std::isfinite(a.value_before));
   EXPECT_NEAR(a.value / 729.0, 1.0, 1e-6);
-  EXPECT_NEAR(evaluate(model("axis6"), a.program).D / 729.0, 1.0, 1e-6);
+  EXPECT_NEAR(evaluate(model("axis6"), a.program).value(CriterionKind::D) / 729.0, 1.0, 1e-6);
   for (int i = 0; i < 3; ++i) EXPECT_EQ(a.program.positions[i], given.positions[i]);
 }
 

@@ -62,9 +62,9 @@ TEST(MonomialModel, AModelInOneFileMatchesThePapersModel) {
   const Program p = Program::classic18();
   const auto a = evaluate<Paper9AsMonomials>(p);
   const auto b = evaluate(p);
-  EXPECT_NEAR(a.D / b.D, 1.0, 1e-12);
-  EXPECT_NEAR(a.A, b.A, 1e-10);
-  EXPECT_NEAR(a.S, b.S, 1e-10);
+  EXPECT_NEAR(a.value(CriterionKind::D) / b.value(CriterionKind::D), 1.0, 1e-12);
+  EXPECT_NEAR(a.value(CriterionKind::A), b.value(CriterionKind::A), 1e-10);
+  EXPECT_NEAR(a.value(CriterionKind::S), b.value(CriterionKind::S), 1e-10);
   for (int r = 0; r < 9; ++r)
     EXPECT_EQ(Paper9AsMonomials::row(p.positions[3]).coeff(r), Paper9Model::row(p.positions[3]).coeff(r));
   SynthesisOptions o;

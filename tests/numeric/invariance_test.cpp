@@ -29,7 +29,7 @@ TEST(Invariance, RotationLeavesDUnchanged) {
     const double angle = 2 * M_PI * s.uniform();
     const Mat3 R = Eigen::AngleAxisd(angle, axis).toRotationMatrix();
     const Evaluation a = evaluate(p), b = evaluate(transformed(p, R));
-    EXPECT_NEAR(b.D / a.D, 1.0, 1e-9) << "seed " << seed;
+    EXPECT_NEAR(b.value(CriterionKind::D) / a.value(CriterionKind::D), 1.0, 1e-9) << "seed " << seed;
   }
 }
 
@@ -37,7 +37,7 @@ TEST(Invariance, RotationChangesTheOtherCriteria) {
   // A guard that the invariance test above is not vacuous: A moves under a generic rotation.
   const Program p = Program::classic18();
   const Mat3 R = Eigen::AngleAxisd(0.3, Vec3(1, 2, 3).normalized()).toRotationMatrix();
-  EXPECT_GT(std::abs(evaluate(transformed(p, R)).A - evaluate(p).A), 1e-3);
+  EXPECT_GT(std::abs(evaluate(transformed(p, R)).value(CriterionKind::A) - evaluate(p).value(CriterionKind::A)), 1e-3);
 }
 
 TEST(Invariance, SignedPermutationsLeaveEveryCriterionUnchanged) {
@@ -49,10 +49,10 @@ TEST(Invariance, SignedPermutationsLeaveEveryCriterionUnchanged) {
       Mat3 P = Mat3::Zero();
       for (int i = 0; i < 3; ++i) P(i, perm[i]) = (signs >> i & 1) ? -1.0 : 1.0;
       const Evaluation ev = evaluate(transformed(p, P));
-      EXPECT_NEAR(ev.D / base.D, 1.0, 1e-10);
-      EXPECT_NEAR(ev.A / base.A, 1.0, 1e-10);
-      EXPECT_NEAR(ev.E / base.E, 1.0, 1e-10);
-      EXPECT_NEAR(ev.S / base.S, 1.0, 1e-10);
+      EXPECT_NEAR(ev.value(CriterionKind::D) / base.value(CriterionKind::D), 1.0, 1e-10);
+      EXPECT_NEAR(ev.value(CriterionKind::A) / base.value(CriterionKind::A), 1.0, 1e-10);
+      EXPECT_NEAR(ev.value(CriterionKind::E) / base.value(CriterionKind::E), 1.0, 1e-10);
+      EXPECT_NEAR(ev.value(CriterionKind::S) / base.value(CriterionKind::S), 1.0, 1e-10);
       EXPECT_NEAR(ev.theta_nonorth / base.theta_nonorth, 1.0, 1e-10);
     }
   } while (std::next_permutation(perm.begin(), perm.end()));
@@ -62,7 +62,7 @@ TEST(Invariance, OrderOfPositionsDoesNotMatter) {
   Program p = Program::random(12, 3);
   const Evaluation a = evaluate(p);
   std::reverse(p.positions.begin(), p.positions.end());
-  EXPECT_NEAR(evaluate(p).A / a.A, 1.0, 1e-12);
+  EXPECT_NEAR(evaluate(p).value(CriterionKind::A) / a.value(CriterionKind::A), 1.0, 1e-12);
 }
 
 }  // namespace

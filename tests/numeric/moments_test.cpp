@@ -34,10 +34,10 @@ void expect_matches(const Program& p, const HandMoments& hand) {
   ASSERT_EQ(ev.rank, 9);
   const Mat9 expected = hand.information_over_n() * p.size();
   EXPECT_LT((ev.information - expected).cwiseAbs().maxCoeff(), 1e-12 * p.size());
-  EXPECT_NEAR(ev.D / hand.D(), 1.0, 1e-12);
-  EXPECT_NEAR(ev.A / hand.A(), 1.0, 1e-12);
-  EXPECT_NEAR(ev.E / hand.E(), 1.0, 1e-12);
-  EXPECT_NEAR(ev.S / hand.S(), 1.0, 1e-12);
+  EXPECT_NEAR(ev.value(CriterionKind::D) / hand.D(), 1.0, 1e-12);
+  EXPECT_NEAR(ev.value(CriterionKind::A) / hand.A(), 1.0, 1e-12);
+  EXPECT_NEAR(ev.value(CriterionKind::E) / hand.E(), 1.0, 1e-12);
+  EXPECT_NEAR(ev.value(CriterionKind::S) / hand.S(), 1.0, 1e-12);
 }
 
 // Axes (6): x^4 = 1 on 2 of 6. Edges (12): x^4 = 1/4 on 8 of 12, x^2 y^2 = 1/4 on 4 of 12.
@@ -46,7 +46,7 @@ TEST(HandMoments, Classic18) {
   expect_matches(Program::classic18(), {2.0 / 9.0, 1.0 / 18.0});
   const Evaluation ev = evaluate(Program::classic18());
   // 81 / ((1/6)^2 (1/18)^3) = 81 * 36 * 5832, exactly.
-  EXPECT_NEAR(ev.D / 17006112.0, 1.0, 1e-14);
+  EXPECT_NEAR(ev.value(CriterionKind::D) / 17006112.0, 1.0, 1e-14);
   EXPECT_NEAR(ev.theta_bias, std::sqrt(3.0), 1e-14);
   EXPECT_NEAR(ev.theta_scale, std::sqrt(5.0), 1e-14);
   EXPECT_NEAR(ev.theta_nonorth, std::sqrt(18.0), 1e-14);
@@ -76,7 +76,7 @@ TEST(HandMoments, RotationProgramsFromFiveOn) {
 TEST(HandMoments, DodecahedralAndIcosahedralJigs) {
   expect_matches(Program::dodecahedral(), {0.2, 1.0 / 15.0});
   expect_matches(Program::icosahedral(), {0.2, 1.0 / 15.0});
-  EXPECT_NEAR(evaluate(Program::icosahedral()).D, 61509375.0 / 4.0, 1e-6);
+  EXPECT_NEAR(evaluate(Program::icosahedral()).value(CriterionKind::D), 61509375.0 / 4.0, 1e-6);
 }
 
 }  // namespace

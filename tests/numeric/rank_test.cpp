@@ -23,7 +23,7 @@ TEST(Rank, PlanarProgram) {
   const Evaluation ev = evaluate(p);
   EXPECT_EQ(ev.rank, 5);
   EXPECT_EQ(names(ev), (std::vector<std::string_view>{"bias_z", "scale_z", "nonorth_yz", "nonorth_zx"}));
-  EXPECT_TRUE(std::isinf(ev.D));
+  EXPECT_TRUE(std::isinf(ev.value(CriterionKind::D)));
 }
 
 // rotation-4 with phase 0 visits only the six axis positions (twice each): products vanish, and
@@ -64,10 +64,10 @@ TEST(Rank, NearlySingularProgramKeepsPositiveCriteria) {
     p.positions.push_back(Vec3(std::cos(0.5 * j), std::sin(0.5 * j), (j % 2 ? 1e-5 : -1e-5) * (1 + j % 3)).normalized());
   const Evaluation ev = evaluate(p);
   ASSERT_EQ(ev.rank, 9);
-  EXPECT_GT(ev.E, 1e15);
-  EXPECT_GT(ev.D, 0.0);
+  EXPECT_GT(ev.value(CriterionKind::E), 1e15);
+  EXPECT_GT(ev.value(CriterionKind::D), 0.0);
   EXPECT_GT(ev.condition, 1e15);
-  EXPECT_GE(ev.S, ev.E / 9.0);  // max diagonal >= trace/9 >= lambda_max/9
+  EXPECT_GE(ev.value(CriterionKind::S), ev.value(CriterionKind::E) / 9.0);  // max diagonal >= trace/9 >= lambda_max/9
 }
 
 }  // namespace

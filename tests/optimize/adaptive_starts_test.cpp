@@ -67,7 +67,7 @@ TEST(SphereLbfgs, ReachesTheDAndALimitsAtLargeN) {
     const LocalResult d = optimize_with_lbfgs<DCriterion>(start);
     EXPECT_TRUE(d.summary.converged()) << n;
     EXPECT_NEAR(d.value / d_limit, 1.0, 1e-12) << n;
-    EXPECT_NEAR(evaluate(d.program).D, d.value, 1e-12 * d.value);
+    EXPECT_NEAR(evaluate(d.program).value(CriterionKind::D), d.value, 1e-12 * d.value);
     const LocalResult a = optimize_with_lbfgs<ACriterion>(start);
     EXPECT_TRUE(a.summary.converged()) << n;
     EXPECT_NEAR(a.value / a_limit, 1.0, 1e-12) << n;

@@ -19,10 +19,10 @@ namespace {
 TEST(NewModel, EvaluationOfTheAxesMatchesTheHandLimits) {
   const auto ev = (evaluate<Bias3Model>)(Program::octahedral(1, 0, 0));  // M = 2 I, N = 6
   ASSERT_EQ(ev.rank, 3);
-  EXPECT_NEAR(ev.D, 27.0, 1e-12);
-  EXPECT_NEAR(ev.A, 9.0, 1e-12);
-  EXPECT_NEAR(ev.E, 3.0, 1e-12);
-  EXPECT_NEAR(ev.S, 3.0, 1e-12);
+  EXPECT_NEAR(ev.value(CriterionKind::D), 27.0, 1e-12);
+  EXPECT_NEAR(ev.value(CriterionKind::A), 9.0, 1e-12);
+  EXPECT_NEAR(ev.value(CriterionKind::E), 3.0, 1e-12);
+  EXPECT_NEAR(ev.value(CriterionKind::S), 3.0, 1e-12);
   EXPECT_NEAR(ev.theta_bias, std::sqrt(3.0), 1e-12);
   EXPECT_TRUE(std::isnan(ev.theta_scale));  // the model has no scale-factor group
 }

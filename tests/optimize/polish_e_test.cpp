@@ -49,7 +49,7 @@ Program perturbed_edges() {
 
 TEST(PolishE, PerturbedEdgeProgramReturnsToTheLimit) {
   const Program start = perturbed_edges();
-  ASSERT_GT(evaluate(start).E - 12.0, 1e-8);  // the perturbation really leaves the limit
+  ASSERT_GT(evaluate(start).value(CriterionKind::E) - 12.0, 1e-8);  // the perturbation really leaves the limit
   const PolishResult p = polish(start, CriterionKind::E, PolishOptions{50, 40});
   ASSERT_TRUE(p.converged());
   EXPECT_EQ(p.digits, 50);
@@ -59,7 +59,7 @@ TEST(PolishE, PerturbedEdgeProgramReturnsToTheLimit) {
   // A local correction: the polished program is the perturbed one moved by about the perturbation.
   for (int i = 0; i < start.size(); ++i)
     EXPECT_LT((p.program.positions[static_cast<std::size_t>(i)] - start.positions[static_cast<std::size_t>(i)]).norm(), 1e-4);
-  EXPECT_NEAR(evaluate(p.program).E, 12.0, 1e-12);
+  EXPECT_NEAR(evaluate(p.program).value(CriterionKind::E), 12.0, 1e-12);
 }
 
 TEST(PolishE, EighteenOptimumShowsTheLimit) {

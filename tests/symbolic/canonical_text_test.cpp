@@ -126,10 +126,10 @@ TEST(CanonicalText, RoundTripFamilyClosedForms) {
     const auto in = f.instance(p);
     const auto c = sym::exact_criteria(in.M, in.N);
     std::vector<ex> forms{in.N};
-    for (const auto* v : {&c.D, &c.A, &c.E, &c.S, &c.theta_bias, &c.theta_scale, &c.theta_nonorth})
+    for (const auto* v : {&c.at("D"), &c.at("A"), &c.at("E"), &c.at("S"), &c.theta_bias, &c.theta_scale, &c.theta_nonorth})
       if (v->exact) forms.insert(forms.end(), v->candidates.begin(), v->candidates.end());
     forms.insert(forms.end(), c.K_diagonal.begin(), c.K_diagonal.end());
-    if (c.E.exact) forms.insert(forms.end(), c.eigenvalues.begin(), c.eigenvalues.end());
+    if (c.at("E").exact) forms.insert(forms.end(), c.eigenvalues.begin(), c.eigenvalues.end());
     for (const auto& x : forms) {
       EXPECT_TRUE(round_trips(x, table)) << name << ": " << sym::canonical_text(x);
       ++checked;
@@ -154,7 +154,7 @@ TEST(CanonicalText, RoundTripDisplayedCriteria) {
   for (const auto& [key, v] : p) table[GiNaC::ex_to<GiNaC::symbol>(v).get_name()] = v;
   const auto in = f.instance(p);
   const auto c = sym::exact_criteria(in.M, in.N);
-  for (const auto* v : {&c.D, &c.A, &c.E, &c.S, &c.theta_bias, &c.theta_scale, &c.theta_nonorth}) {
+  for (const auto* v : {&c.at("D"), &c.at("A"), &c.at("E"), &c.at("S"), &c.theta_bias, &c.theta_scale, &c.theta_nonorth}) {
     std::string text = v->str();
     std::vector<std::string> pieces;
     if (text.rfind("max(", 0) == 0) {
@@ -183,7 +183,7 @@ TEST(CanonicalText, FamilyOutputIndependentOfSymbolOrder) {
     const auto in = f.instance(p);
     const auto c = sym::exact_criteria(in.M, in.N);
     std::vector<std::string> out{sym::canonical_text(in.N)};
-    for (const auto* v : {&c.D, &c.A, &c.E, &c.S, &c.theta_bias, &c.theta_scale, &c.theta_nonorth})
+    for (const auto* v : {&c.at("D"), &c.at("A"), &c.at("E"), &c.at("S"), &c.theta_bias, &c.theta_scale, &c.theta_nonorth})
       out.push_back(v->str());
     return out;
   };

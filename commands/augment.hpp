@@ -1,0 +1,44 @@
+// `scalcal augment` as a function: keeps the lab's positions and adds the K inside the bench's region
+// that improve the criterion of the model most (numeric/region/augment.hpp).
+#pragma once
+#include <string>
+#include <vector>
+
+#include "commands/common_options.hpp"
+#include "commands/json.hpp"
+#include "commands/progress.hpp"
+#include "commands/values.hpp"
+#include "commands/warning.hpp"
+#include "numeric/io/program_csv.hpp"
+#include "numeric/region/augment.hpp"
+
+namespace scalcal::commands {
+
+struct AugmentRequest {
+  std::string name;  // the given program's name in messages
+  Program given;
+  int add = 0;
+  CriterionKind criterion = CriterionKind::D;
+  ModelKind model = ModelKind::paper9;
+  std::vector<std::string> regions;
+};
+
+struct AugmentResult {
+  CriterionKind criterion = CriterionKind::D;
+  ModelKind model = ModelKind::paper9;
+  Region region;
+  int given = 0;  // positions given
+  AugmentedProgram augmented;
+  std::vector<ExtraColumn> columns;  // for the program file on a one-zone region
+  Warnings warnings;
+};
+
+// --program FILE --add K [--criterion C] [--model NAME] [--region SPEC]... [--out FILE] [--json]
+const CommandTable& augment_table();
+AugmentRequest augment_request(const Values& values);
+
+AugmentResult augment(const AugmentRequest& request, const Progress& progress = {});
+
+Json to_json(const AugmentResult& result);
+
+}  // namespace scalcal::commands

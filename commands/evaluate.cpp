@@ -1,0 +1,75 @@
+// `scalcal evaluate` (evaluate.hpp).
+#include "commands/evaluate.hpp"
+
+#include <stdexcept>
+
+#include "commands/common_options.hpp"
+#include "commands/evaluation_json.hpp"
+#include "commands/region_request.hpp"
+#include "commands/usage_error.hpp"
+#include "numeric/criteria/identifiability.hpp"
+#include "numeric/io/input_error.hpp"
+#include "numeric/region/region_limit.hpp"
+
+namespace scalcal::commands {
+
+const CommandTable& evaluate_table() {
+  static const CommandTable table{
+      "evaluate",
+      "the criteria (" + criterion_names_text() + "), the RMS errors theta and K of a catalogue program or CSV file",
+      10,
+      {program_argument(), model_option(), region_option(),
+       out_option("also write the program as CSV x,y,z,alpha1_deg,alpha2_deg"),
+       json_option("print one JSON object (the criteria, the program and K)")}};
+  return table;
+}
+
+EvaluateRequest evaluate_request(const Values& v) {
+  EvaluateRequest q;
+  q.name = v.text("PROGRAM");
+  q.program = program_of(v);
+  q.model = model_of(v);
+  q.regions = v.list("--region");
+  return q;
+}
+
+EvaluateResult evaluate(const EvaluateRequest& q, const Progress& progress) {
+  if (q.model != ModelKind::paper9 && !q.regions.empty())
+    throw UsageError("evaluate: --region has limits for the paper9 model only (got --model " +
+                     std::string(model_name(q.model)) + ")");
+  EvaluateResult r;
+  r.name = q.name;
+  r.program = q.program;
+  r.evaluation = scalcal::evaluate(q.model, q.program);
+  if (!r.evaluation.full_rank()) throw InputError(q.name, 0, rank_deficiency(r.evaluation));
+  if (r.evaluation.condition > kIllConditioned) r.warnings.push_back({q.name, ill_conditioning(r.evaluation)});
+  if (q.regions.empty()) return r;
+  r.region = resolve_region(q.regions, r.warnings);
+  refuse_outside(q.name, q.program, *r.region);
+  r.columns = region_columns(*r.region, q.program);
+  for (auto c : kCriteria) {
+    if (progress) progress("the " + std::string(criterion_name(c)) + " limit on " + r.region->text(), c.index(), kCriterionCount);
+    try {
+      r.efficiency[static_cast<std::size_t>(c.index())] =
+          efficiency(c, limit_value(c, *r.region), r.evaluation.value(c), r.evaluation.parameters);
+    } catch (const std::invalid_argument&) {  // no known limit for this criterion
+    }
+  }
+  return r;
+}
+
+Json to_json(const EvaluateResult& r) {
+  Json j = evaluation_json(r.evaluation, r.program);
+  if (r.region) {
+    j["region"] = r.region->text();
+    Json e = Json::object();
+    for (auto c : kCriteria) {
+      const auto& v = r.efficiency[static_cast<std::size_t>(c.index())];
+      e[std::string(criterion_name(c))] = v ? Json(*v) : Json(nullptr);
+    }
+    j["efficiency"] = e;
+  }
+  return j;
+}
+
+}  // namespace scalcal::commands

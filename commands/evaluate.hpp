@@ -1,0 +1,49 @@
+// `scalcal evaluate` as a function: the criteria of one program under a model, and with a region its
+// efficiency against the region's limits (positions outside the region are refused).
+#pragma once
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "commands/json.hpp"
+#include "commands/option_table.hpp"
+#include "commands/values.hpp"
+#include "commands/progress.hpp"
+#include "commands/warning.hpp"
+#include "numeric/criteria/model_evaluation.hpp"
+#include "numeric/io/program_csv.hpp"
+#include "numeric/region/region.hpp"
+
+namespace scalcal::commands {
+
+struct EvaluateRequest {
+  std::string name;  // the program's name in messages (a file, a catalogue name, "positions")
+  Program program;
+  ModelKind model = ModelKind::paper9;
+  std::vector<std::string> regions;  // --region specs; none: the sphere (no efficiencies)
+};
+
+struct EvaluateResult {
+  std::string name;
+  Program program;
+  ModelEvaluation evaluation;
+  std::optional<Region> region;  // with --region
+  // limit / value per criterion on the region (D as its P-th root); nullopt: no known limit there.
+  std::array<std::optional<double>, kCriterionCount> efficiency{};
+  std::vector<ExtraColumn> columns;  // tilt and azimuth for a program file, on a one-zone region
+  Warnings warnings;
+};
+
+// PROGRAM [--model NAME] [--region SPEC]... [--out FILE] [--json]
+const CommandTable& evaluate_table();
+EvaluateRequest evaluate_request(const Values& values);
+
+// Throws InputError for a rank-deficient program or one with positions outside the region, and
+// UsageError for regions under a model other than paper9.
+EvaluateResult evaluate(const EvaluateRequest& request, const Progress& progress = {});
+
+// The evaluation's JSON (evaluation_json.hpp) with `region` and `efficiency` when a region was given.
+Json to_json(const EvaluateResult& result);
+
+}  // namespace scalcal::commands

@@ -1,0 +1,83 @@
+// `scalcal limits` (limits.hpp): the paper's model on the sphere from the symbolic minimisation over
+// symmetric measures, another model from its own stated limits (each proven in the document it
+// names), a region from its optimal measure and certified dual bound.
+#include "commands/limits.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "commands/region_request.hpp"
+#include "commands/usage_error.hpp"
+#include "symbolic/exact.hpp"
+#include "symbolic/limits.hpp"
+
+namespace scalcal::commands {
+namespace {
+
+double number(const GiNaC::ex& e) { return GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(e)).to_double(); }
+
+std::optional<SphereLimit> paper9_limit(CriterionKind c) {
+  if (!symbolic::has_symbolic_limit(c)) return std::nullopt;
+  const auto l = symbolic::symbolic_limit(c);
+  SphereLimit s;
+  s.exact = symbolic::canonical_text(l.value);
+  s.value = number(l.value);
+  s.x4 = symbolic::canonical_text(l.x4);
+  s.x2y2 = symbolic::canonical_text(l.b);
+  s.b = number(l.b);
+  return s;
+}
+
+std::optional<SphereLimit> model_limit(ModelKind model, CriterionKind c) {
+  const auto l = stated_limit(model, criterion_name(c));
+  if (!l) return std::nullopt;
+  SphereLimit s;
+  s.exact = std::string(l->exact);
+  s.value = l->value;
+  s.x4 = std::string(l->x4);
+  s.x2y2 = std::string(l->x2y2);
+  s.x6 = std::string(l->x6);
+  if (!std::isnan(l->b)) s.b = l->b;
+  s.measure = std::string(l->measure);
+  s.attained = std::string(l->attained);
+  s.proof = std::string(visit_model(model, [](auto M) { return decltype(M)::proof; }));
+  return s;
+}
+
+}  // namespace
+
+const CommandTable& limits_table() {
+  static const CommandTable table{
+      "limits",
+      "N -> infinity limits of the normalised " + criterion_names_text() +
+          " criteria: exact on the sphere, certified bounds on a region",
+      61,
+      {model_option(), region_option(), json_option("print one JSON object keyed by criterion")}};
+  return table;
+}
+
+LimitsRequest limits_request(const Values& v) { return {model_of(v), v.list("--region")}; }
+
+LimitsResult limits(const LimitsRequest& q, const Progress& progress) {
+  const bool sphere = is_sphere(q.regions);
+  if (q.model != ModelKind::paper9 && !sphere)
+    throw UsageError("limits: --region has limits for the paper9 model only (got --model " +
+                     std::string(model_name(q.model)) + ")");
+  LimitsResult r;
+  r.model = q.model;
+  if (!sphere) r.region = resolve_region(q.regions, r.warnings);
+  for (auto c : kCriteria) {
+    CriterionLimits l;
+    l.criterion = c;
+    l.sphere = q.model == ModelKind::paper9 ? paper9_limit(c) : model_limit(q.model, c);
+    if (r.region && l.sphere) {  // a region's limit is judged against the sphere's, so both must exist
+      if (progress) progress(std::string(criterion_name(c)) + " on " + r.region->text(), c.index(), kCriterionCount);
+      l.region = region_limit(c, *r.region);
+      l.sphere_value = l.sphere->value;
+    }
+    r.criteria.push_back(std::move(l));
+  }
+  return r;
+}
+
+}  // namespace scalcal::commands

@@ -1,0 +1,65 @@
+// The JSON form of `scalcal limits` (limits.hpp): keyed by criterion; a criterion without a known
+// limit is null.
+#include <algorithm>
+#include <cmath>
+
+#include "commands/limits.hpp"
+
+namespace scalcal::commands {
+namespace {
+
+Json sphere_json(const SphereLimit& s, bool stated) {
+  Json moments{{"E[x^2]", "1/3"}};
+  if (!s.x4.empty()) moments["E[x^4]"] = s.x4;
+  if (!s.x2y2.empty()) moments["E[x^2 y^2]"] = s.x2y2;
+  if (!s.x6.empty()) moments["E[x^6]"] = s.x6;
+  moments["odd"] = "0";
+  Json j{{"exact", s.exact}, {"value", s.value}, {"moments", moments}, {"b", s.b ? Json(*s.b) : Json(nullptr)}};
+  if (stated) {
+    j["measure"] = s.measure;
+    j["attained"] = s.attained;
+    j["proof"] = s.proof;
+  }
+  return j;
+}
+
+Json region_json(const RegionLimit& l, double sphere) {
+  Json support = Json::array();
+  for (std::size_t i = 0; i < l.support.size(); ++i)
+    support.push_back(
+        Json{{"position", Json{l.support[i].x(), l.support[i].y(), l.support[i].z()}}, {"weight", l.weights[i]}});
+  Json entry{{"value", l.value}};
+  entry["lower_bound"] = l.lower_bound ? Json(*l.lower_bound) : Json(nullptr);
+  entry["relative_to_sphere"] = l.value / sphere;
+  entry["support"] = support;
+  entry["candidates"] = l.candidates;
+  entry["refinements"] = l.refinements;
+  entry["equivalence_gap"] = l.equivalence_gap;
+  // The optimal measure's RMS errors per group, theta_q = sqrt(max K(r,r)) (normalised as N = 1).
+  for (int g = 0; g < 3; ++g) {
+    double worst = 0;
+    for (int r : group_members<Paper9Model>(static_cast<ParameterGroup>(g))) worst = std::max(worst, l.K(r, r));
+    entry["theta_" + std::string(kGroupNames[static_cast<std::size_t>(g)])] = std::sqrt(worst);
+  }
+  return entry;
+}
+
+}  // namespace
+
+Json to_json(const LimitsResult& r) {
+  Json j = Json::object();
+  if (r.model != ModelKind::paper9) j["model"] = std::string(model_name(r.model));
+  if (r.region) j["region"] = r.region->text();
+  for (const auto& l : r.criteria) {
+    const std::string key(criterion_name(l.criterion));
+    if (r.region)
+      j[key] = l.region ? region_json(*l.region, *l.sphere_value) : Json(nullptr);
+    else if (l.sphere)
+      j[key] = sphere_json(*l.sphere, r.model != ModelKind::paper9);
+    else if (r.model == ModelKind::paper9)
+      j[key] = nullptr;  // no known limit (another model's JSON lists only what it states)
+  }
+  return j;
+}
+
+}  // namespace scalcal::commands

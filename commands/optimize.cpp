@@ -1,0 +1,162 @@
+// `scalcal optimize` (optimize.hpp).
+#include "commands/optimize.hpp"
+
+#include <stdexcept>
+
+#include "commands/region_request.hpp"
+#include "commands/usage_error.hpp"
+#include "numeric/io/input_error.hpp"
+#include "numeric/program/catalogue.hpp"
+#include "numeric/region/region_limit.hpp"
+#include "numeric/region/region_synthesis.hpp"
+
+namespace scalcal::commands {
+namespace {
+
+void check(const OptimizeRequest& q) {
+  const SynthesisOptions& o = q.synthesis;
+  if (o.positions < model_parameters(o.model))
+    throw UsageError("optimize: --positions " + std::to_string(o.positions) + " is below the " +
+                     std::to_string(model_parameters(o.model)) + " parameters of --model " +
+                     std::string(model_name(o.model)));
+  if (o.model != ModelKind::paper9 && (!q.regions.empty() || q.digits > 0))
+    throw UsageError("optimize: --region and --digits work with the paper9 model only (got --model " +
+                     std::string(model_name(o.model)) + ")");
+}
+
+// --from: start 0 is that program, and N its size.
+void start_from(const OptimizeRequest& q, SynthesisOptions& o) {
+  if (q.from.empty()) {
+    if (o.positions == 0) throw UsageError("--positions N is required (or --from PROGRAM, whose size it takes)");
+    return;
+  }
+  Program start = resolve_program(q.from);
+  if (o.positions != 0 && o.positions != start.size())
+    throw UsageError("--positions " + std::to_string(o.positions) + " but --from " + display_name(q.from) + " has " +
+                     std::to_string(start.size()) + " positions");
+  if (start.size() < kOptimizePositions.lo || start.size() > kOptimizePositions.hi)
+    throw UsageError("--from " + display_name(q.from) + " has " + std::to_string(start.size()) +
+                     " positions; optimize takes " + std::to_string(kOptimizePositions.lo) + ".." +
+                     std::to_string(kOptimizePositions.hi));
+  if (!q.regions.empty()) throw UsageError("--from starts the search on the sphere; it does not take --region");
+  o.positions = start.size();
+  o.first_start = std::move(start);
+}
+
+}  // namespace
+
+const CommandTable& optimize_table() {
+  static const CommandTable table{
+      "optimize",
+      "the optimal program for a criterion (Newton/Ipopt multistart, optional high-precision polish)",
+      40,
+      {named(integer_option("--positions", kOptimizePositions.lo, kOptimizePositions.hi,
+                      "number of positions N (at least the model's number of parameters)", "positions", "0",
+                      "required, unless --from gives it"), "N"),
+       text_option("--from", "PROGRAM",
+                   "start 0 of the multistart is this program (a catalogue name, a family member such as "
+                   "jig:cuboctahedron, or a CSV file); N is its size",
+                   "catalogue name or file path"),
+       criterion_option(), model_option(), region_option(), starts_option(), seed_option(), threads_option(),
+       named(integer_option("--digits", kPolishDigits.lo, kPolishDigits.hi, "polish the optimum to this many digits in MPFR",
+                      "significant digits", "0", "none (no polish)"), "P"),
+       local_option(),
+       out_option("write the program (the polished one with --digits) as CSV x,y,z,alpha1_deg,alpha2_deg"),
+       json_option("print one JSON object")}};
+  return table;
+}
+
+OptimizeRequest optimize_request(const Values& v) {
+  OptimizeRequest q;
+  q.synthesis.positions = static_cast<int>(v.integer("--positions"));
+  q.from = v.text("--from");
+  q.synthesis.criterion = criterion_of(v);
+  q.synthesis.model = model_of(v);
+  q.regions = v.list("--region");
+  q.synthesis.starts = static_cast<int>(v.integer("--starts"));
+  q.synthesis.seed = static_cast<std::uint64_t>(v.integer("--seed"));
+  q.synthesis.threads = static_cast<int>(v.integer("--threads"));
+  q.digits = static_cast<int>(v.integer("--digits"));
+  q.synthesis.local = local_solver_of(v);
+  return q;
+}
+
+OptimizeResult optimize(const OptimizeRequest& q, const Progress& progress) {
+  OptimizeResult r;
+  SynthesisOptions opt = q.synthesis;
+  start_from(q, opt);
+  OptimizeRequest checked = q;
+  checked.synthesis.positions = opt.positions;
+  check(checked);
+  r.criterion = opt.criterion;
+  r.model = opt.model;
+  r.positions = opt.positions;
+  if (progress) opt.progress = [&](int done, int total) { progress("starts", done, total); };
+  if (!q.regions.empty()) r.region = resolve_region(q.regions, r.warnings);
+  const bool restricted = r.region && !r.region->is_sphere();
+  if (restricted && q.digits > 0)
+    throw InputError("--digits", 0,
+                     "the polish solves the unconstrained optimality conditions; it cannot keep positions inside "
+                     "--region " + r.region->text());
+  r.synthesis = restricted ? synthesize_on_region(opt, *r.region) : synthesize(opt);
+  if (!r.synthesis.summary.converged())
+    r.warnings.push_back({"", r.synthesis.summary.message + " (" + r.synthesis.local_solver + " multistart)"});
+  if (q.digits > 0) {
+    if (progress) progress("polishing at " + std::to_string(q.digits) + " digits", 0, 0);
+    r.polished = polish(r.synthesis.program, opt.criterion, PolishOptions{q.digits, 40});
+    if (!r.polished->converged())
+      r.warnings.push_back({"", "the polish did not converge (residual " + std::to_string(r.polished->residual) +
+                                    "); value_digits keeps " + std::to_string(r.polished->digits) + " digits"});
+  }
+  // The polished program is the better one (its rounding to double is as close to the optimum as
+  // double allows): it is the one written and printed.
+  r.program = r.polished ? r.polished->program : r.synthesis.program;
+  if (r.region) r.columns = region_columns(*r.region, r.program);
+  const int P = model_parameters(opt.model);
+  try {
+    if (opt.model != ModelKind::paper9) {
+      if (const auto l = stated_limit(opt.model, criterion_name(opt.criterion))) r.limit = l->value;
+    } else if (r.region) {
+      if (progress) progress("the " + std::string(criterion_name(opt.criterion)) + " limit on " + r.region->text(), 0, 0);
+      r.limit = limit_value(opt.criterion, *r.region);
+    }
+  } catch (const std::invalid_argument&) {  // no known limit for this criterion
+  }
+  if (r.limit) r.efficiency = efficiency(opt.criterion, *r.limit, r.synthesis.value, P);
+  return r;
+}
+
+Json to_json(const OptimizeResult& r) {
+  const SynthesisResult& s = r.synthesis;
+  Json j{{"criterion", std::string(criterion_name(r.criterion))},
+         {"positions", r.positions},
+         {"value", s.value},
+         {"program", program_json(r.program)},
+         {"starts", s.starts},
+         {"stopping", s.stopping},
+         {"hits", s.hits},
+         {"distinct", s.distinct},
+         {"seconds", s.seconds},
+         {"local_solver", s.local_solver},
+         {"confirmed", s.summary.converged()}};
+  if (r.model != ModelKind::paper9) {
+    j["model"] = std::string(model_name(r.model));
+    if (r.limit) {
+      j["limit"] = *r.limit;
+      j["efficiency"] = *r.efficiency;
+    }
+  } else if (r.region && r.limit) {
+    j["region"] = r.region->text();
+    j["limit"] = *r.limit;
+    j["efficiency"] = *r.efficiency;
+  }
+  if (r.polished) {
+    j["value_digits"] = r.polished->value_digits;
+    j["residual"] = r.polished->residual;
+    j["converged"] = r.polished->converged();
+    j["iterations"] = r.polished->summary.iterations;
+  }
+  return j;
+}
+
+}  // namespace scalcal::commands

@@ -1,0 +1,53 @@
+// `scalcal optimize` as a function: the optimal program of N positions for one criterion, on the
+// sphere or a region, optionally polished in MPFR, with the limit it is judged against.
+#pragma once
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "commands/common_options.hpp"
+#include "commands/json.hpp"
+#include "commands/progress.hpp"
+#include "commands/warning.hpp"
+#include "numeric/io/program_csv.hpp"
+#include "numeric/polish/polish.hpp"
+#include "numeric/region/region.hpp"
+#include "numeric/synthesis/multistart.hpp"
+
+namespace scalcal::commands {
+
+struct OptimizeRequest {
+  SynthesisOptions synthesis;        // N (0: --from gives it), criterion, model, starts, seed, threads, local solver
+  std::string from;                  // start 0 is this program (a catalogue name or a file); "" none
+  std::vector<std::string> regions;  // --region specs; none: the sphere
+  int digits = 0;                    // polish to this many digits (0: no polish)
+};
+
+struct OptimizeResult {
+  CriterionKind criterion = CriterionKind::D;
+  ModelKind model = ModelKind::paper9;
+  int positions = 0;
+  SynthesisResult synthesis;
+  std::optional<PolishResult> polished;
+  Program program;               // the best: the polished one when there is a polish
+  std::optional<Region> region;  // with --region
+  std::optional<double> limit;   // the region's, or the model's stated limit; none when unknown
+  std::optional<double> efficiency;
+  std::vector<ExtraColumn> columns;  // for the program file on a one-zone region
+  Warnings warnings;
+};
+
+inline constexpr IntegerRange kOptimizePositions{3, 1000}, kPolishDigits{1, 1000};
+
+// --positions N|--from PROGRAM --criterion C [--model NAME] [--region SPEC]... [--starts K] [--seed S]
+// [--threads T] [--digits P] [--local auto|newton|lbfgs|ipopt] [--out FILE] [--json]
+const CommandTable& optimize_table();
+OptimizeRequest optimize_request(const Values& values);
+
+// Throws UsageError for N below the model's parameters or options the model does not take, and
+// InputError for a bad region or a polish asked on a restricted region.
+OptimizeResult optimize(const OptimizeRequest& request, const Progress& progress = {});
+
+Json to_json(const OptimizeResult& result);
+
+}  // namespace scalcal::commands

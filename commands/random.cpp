@@ -1,0 +1,63 @@
+// `scalcal random` (random.hpp).
+#include "commands/random.hpp"
+
+#include "commands/region_request.hpp"
+#include "commands/usage_error.hpp"
+#include "numeric/region/region_sampler.hpp"
+
+namespace scalcal::commands {
+
+const CommandTable& random_table() {
+  static const CommandTable table{
+      "random",
+      "the best of R uniform random programs (the paper's dashed line), on all cores",
+      41,
+      {named(integer_option("--positions", 3, 100000, "number of positions N (at least the model's number of parameters)",
+                      "positions", kRequired), "N"),
+       named(integer_option("--count", 1, 1000000000LL, "random programs drawn", "programs", kRequired), "R"), seed_option(),
+       criterion_option(), model_option(), region_option(), threads_option(), json_option("print one JSON object")}};
+  return table;
+}
+
+RandomRequest random_request(const Values& v) {
+  RandomRequest q;
+  q.positions = static_cast<int>(v.integer("--positions"));
+  q.count = v.integer("--count");
+  q.seed = static_cast<std::uint64_t>(v.integer("--seed"));
+  q.criterion = criterion_of(v);
+  q.model = model_of(v);
+  q.regions = v.list("--region");
+  q.threads = static_cast<int>(v.integer("--threads"));
+  return q;
+}
+
+RandomResult random_programs(const RandomRequest& q, const Progress&) {
+  if (q.positions < model_parameters(q.model))
+    throw UsageError("random: --positions " + std::to_string(q.positions) + " is below the " +
+                     std::to_string(model_parameters(q.model)) + " parameters of --model " +
+                     std::string(model_name(q.model)));
+  RandomResult r;
+  r.request = q;
+  PositionSampler sampler;
+  if (!q.regions.empty()) {
+    const Region region = resolve_region(q.regions, r.warnings);
+    if (!region.is_sphere()) {
+      sampler = region_sampler(region);
+      r.region = region.text();
+    }
+  }
+  r.search = random_search(q.positions, q.count, q.criterion, q.seed, q.threads, sampler, q.model);
+  return r;
+}
+
+Json to_json(const RandomResult& r) {
+  Json j{{"best", r.search.best},
+         {"count", r.search.count},
+         {"program", program_json(r.search.program)},
+         {"seconds", r.search.seconds}};
+  if (!r.region.empty()) j["region"] = r.region;
+  if (r.request.model != ModelKind::paper9) j["model"] = std::string(model_name(r.request.model));
+  return j;
+}
+
+}  // namespace scalcal::commands

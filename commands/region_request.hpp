@@ -1,0 +1,34 @@
+// The region of a request's --region specs, checked before any work starts: parsed, identifiable,
+// and within what double precision resolves. Shared by every command that designs or judges a
+// program for a restricted bench.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "commands/warning.hpp"
+#include "numeric/io/program_csv.hpp"
+#include "numeric/region/region.hpp"
+
+namespace scalcal::commands {
+
+// Above this condition number of the region's uniform measure, K is not resolved in double
+// precision (a cap of 3 degrees: 7.9e14; of 4 degrees: 7.9e13).
+inline constexpr double kBeyondDouble = 1e14;
+
+// The region of the specs (the sphere when there are none). Throws InputError (exit 2) for a bad
+// spec, a region on which no program is rank 9, or one whose conditioning is beyond double
+// precision; adds a warning when the region's best conditioning is poor.
+Region resolve_region(const std::vector<std::string>& specs, Warnings& warnings);
+
+// True when the specs name the whole sphere (none, or only "sphere").
+bool is_sphere(const std::vector<std::string>& specs);
+
+// For a region of one cap or band: the columns tilt_deg (from its axis) and azimuth_deg (in its
+// azimuth_frame) of each position, for a program file; none otherwise.
+std::vector<ExtraColumn> region_columns(const Region& region, const Program& program);
+
+// Throws InputError naming up to ten positions outside the region (1-based, with their tilt from the
+// nearest zone's axis when the region has zones).
+void refuse_outside(const std::string& name, const Program& program, const Region& region);
+
+}  // namespace scalcal::commands

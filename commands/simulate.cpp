@@ -1,0 +1,179 @@
+// `scalcal simulate` (simulate.hpp).
+#include "commands/simulate.hpp"
+
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+#include <stdexcept>
+
+#include "commands/usage_error.hpp"
+#include "numeric/calibration/model_calibration.hpp"
+#include "numeric/criteria/identifiability.hpp"
+#include "numeric/criteria/model_evaluation.hpp"
+#include "numeric/io/input_error.hpp"
+
+namespace scalcal::commands {
+namespace {
+
+// The range of --noise sigma (relative to |I|) where the Monte-Carlo answers the question it is
+// asked (docs: `simulate`):
+// - sigma >= 1 is refused: noise as large as the measured vector leaves no modulus to fit.
+// - sigma < 1e-15 is refused: below the resolution of a double near |I| (2.2e-16), the simulated
+//   noise is rounding; sigma^2 K underflows to 0 for sigma < 1e-154.
+// - sigma > 0.01 warns: the modulus' second-order terms (~sigma^2) exceed 1 % of the noise, so
+//   the empirical covariance departs from the linearised sigma^2 K.
+// - sigma < 1e-9 warns: the estimator stops at |dX| < 1e4 eps = 2.2e-12, more than 0.2 % of the
+//   spread of the estimates (~sigma), so the empirical std measures the stopping rule too.
+// - sigma sqrt(max K(r,r) / samples) > 0.05 warns (a near-degenerate program): the estimates
+//   spread beyond the linearised model's range and trials diverge.
+constexpr double kNoiseRefuseAbove = 1.0, kNoiseRefuseBelow = 1e-15;
+constexpr double kNoiseWarnAbove = 0.01, kNoiseWarnBelow = 1e-9, kSpreadWarnAbove = 0.05;
+
+void check_noise(const SimulateRequest& q, const ModelEvaluation& ev, Warnings& warnings) {
+  std::ostringstream s;
+  s << std::setprecision(3);
+  const double noise = q.noise;
+  if (noise >= kNoiseRefuseAbove) {
+    s << "option --noise: " << noise << " |I| is meaningless for the linearised model (noise as large as the "
+      << "measured vector; must be below " << kNoiseRefuseAbove << ")";
+    throw UsageError(s.str());
+  }
+  if (noise < kNoiseRefuseBelow) {
+    s << "option --noise: " << noise << " |I| is below the resolution of a double near |I| (must be at least "
+      << kNoiseRefuseBelow << ")";
+    throw UsageError(s.str());
+  }
+  if (noise > kNoiseWarnAbove) {
+    s << "--noise " << noise << " is above " << kNoiseWarnAbove << ": second-order terms of the modulus (~sigma^2) "
+      << "exceed 1% of the noise; the empirical covariance will depart from sigma^2 K";
+    warnings.push_back({"", s.str()});
+  } else if (noise < kNoiseWarnBelow) {
+    s << "--noise " << noise << " is below " << kNoiseWarnBelow << ": the estimator's stopping tolerance (2.2e-12) "
+      << "and rounding are no longer negligible against the noise; the empirical std will be off";
+    warnings.push_back({"", s.str()});
+  }
+  // One warning per cause; the spread is only worth a line of its own when the noise itself is sane.
+  const double spread = noise * std::sqrt(ev.raw(CriterionKind::S) / q.samples);
+  if (spread > kSpreadWarnAbove && noise <= kNoiseWarnAbove) {
+    std::ostringstream t;
+    t << std::setprecision(3) << "the estimates spread by sigma sqrt(max K(r,r)) = " << spread << ", above "
+      << kSpreadWarnAbove << ": outside the linearised model's range; trials may diverge";
+    warnings.push_back({q.name, t.str()});
+  }
+  if (ev.condition > kIllConditioned) warnings.push_back({q.name, ill_conditioning(ev)});
+}
+
+}  // namespace
+
+const char* modulus_name(Modulus m) { return m == Modulus::norm ? "norm" : "projection"; }
+
+const CommandTable& simulate_table() {
+  Option program = text_option("--program", "P", "a catalogue name or a CSV file", "none", kRequired);
+  Option modulus = choice_option("--modulus", {"norm", "projection"}, "the modulus the estimator fits", "");
+  modulus.fallback_text = "both, one after the other";
+  static const CommandTable table{
+      "simulate",
+      "Monte-Carlo calibration of simulated meters: empirical covariance against sigma^2 K, bias of the estimator, "
+      "effect of bench errors on each modulus",
+      41,
+      {program, named(integer_option("--trials", 2, 10000000, "simulated meters calibrated", "trials", kRequired), "T"),
+       positive_option("--noise", "noise RMS sigma of each axis of each sample",
+                       "|I| (the modulus of the measured vector)", kRequired),
+       number_option("--bench-error", 0, 30, "every true position is the nominal one tipped by this angle", "degrees",
+                     "0"),
+       modulus, model_option(), seed_option(),
+       named(integer_option("--samples", 1, 100000, "samples per position", "samples", "1"), "K"),
+       number_option("--size", 0, 0.2, "scale of the simulated meter's errors",
+                     "relative (bias in |I|, angles in radians)", "0.001"),
+       json_option("print one JSON object")}};
+  return table;
+}
+
+SimulateRequest simulate_request(const Values& v) {
+  SimulateRequest q;
+  q.name = v.text("--program");
+  q.program = program_of(v, "--program");
+  q.trials = static_cast<int>(v.integer("--trials"));
+  q.noise = v.number("--noise");
+  q.bench_error_deg = v.number("--bench-error");
+  if (v.given("--modulus")) q.moduli = {v.text("--modulus") == "norm" ? Modulus::norm : Modulus::projection};
+  q.model = model_of(v);
+  q.seed = static_cast<std::uint64_t>(v.integer("--seed"));
+  q.samples = static_cast<int>(v.integer("--samples"));
+  q.size = v.number("--size");
+  return q;
+}
+
+SimulateResult simulate(const SimulateRequest& q, const Progress& progress) {
+  SimulateResult r;
+  r.request = q;
+  const ModelEvaluation ev = evaluate(q.model, q.program);
+  try {
+    meter_indices(q.model);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string("simulate: ") + e.what());
+  }
+  if (!ev.full_rank()) throw InputError(q.name, 0, rank_deficiency(ev));
+  check_noise(q, ev, r.warnings);
+  for (const Modulus m : q.moduli) {
+    MonteCarloOptions mc;
+    mc.program = q.program;
+    mc.trials = q.trials;
+    mc.noise = q.noise;
+    mc.bench_error_deg = q.bench_error_deg;
+    mc.modulus = m;
+    mc.seed = q.seed;
+    mc.samples = q.samples;
+    mc.size = q.size;
+    std::function<void(int, int)> step;
+    if (progress)
+      step = [&](int done, int total) { progress(std::string("simulate ") + modulus_name(m), done, total); };
+    r.results.emplace_back(m, run_monte_carlo(mc, step, q.model));
+  }
+  return r;
+}
+
+Json to_json(const SimulateResult& result) {
+  const SimulateRequest& q = result.request;
+  Json all{{"program", q.name},   {"positions", q.program.size()}, {"trials", q.trials},   {"noise", q.noise},
+           {"bench_error_deg", q.bench_error_deg}, {"seed", q.seed},  {"samples", q.samples}, {"size", q.size}};
+  if (q.model != ModelKind::paper9) all["model"] = std::string(model_name(q.model));
+  Json results = Json::array();
+  for (const auto& [m, r] : result.results) {
+    Json params = Json::array();
+    for (int k = 0; k < static_cast<int>(r.truth.size()); ++k) {
+      const double th = std::sqrt(r.theoretical_cov(k, k));
+      const double se_mean = std::sqrt(r.empirical_cov(k, k) / std::max(1, r.converged));
+      params.push_back(Json{{"name", std::string(r.names[static_cast<std::size_t>(k)])},
+                            {"truth", r.truth(k)},
+                            {"mean", r.mean(k)},
+                            {"bias", r.mean(k) - r.truth(k)},
+                            {"bias_in_std_errors", (r.mean(k) - r.truth(k)) / se_mean},
+                            {"noise_free", r.noise_free(k)},
+                            {"linearisation_error", r.noise_free(k) - r.truth(k)},
+                            {"noise_bias_in_std_errors", (r.mean(k) - r.noise_free(k)) / se_mean},
+                            {"empirical_std", std::sqrt(r.empirical_cov(k, k))},
+                            {"theoretical_std", th},
+                            {"std_ratio", std::sqrt(r.empirical_cov(k, k)) / th}});
+    }
+    Json te = Json::object(), tt = Json::object();
+    for (int g = 0; g < 4; ++g) {
+      if (std::isnan(r.theta_theoretical(g))) continue;  // a group the model lacks
+      te[std::string(kGroupNames[static_cast<std::size_t>(g)])] = r.theta_empirical(g);
+      tt[std::string(kGroupNames[static_cast<std::size_t>(g)])] = r.theta_theoretical(g);
+    }
+    results.push_back(Json{{"modulus", modulus_name(m)},
+                           {"converged_trials", r.converged},
+                           {"mean_iterations", r.mean_iterations},
+                           {"parameters", params},
+                           {"theta_empirical", te},
+                           {"theta_theoretical", tt},
+                           {"std_sampling_error", r.std_sampling_error()},
+                           {"max_normalised_cov_difference", r.max_normalised_cov_difference()},
+                           {"mean_noise_ratio", r.mean_noise_ratio}});
+  }
+  all["results"] = results;
+  return all;
+}
+
+}  // namespace scalcal::commands

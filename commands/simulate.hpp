@@ -1,0 +1,47 @@
+// `scalcal simulate` as a function: Monte-Carlo calibration of simulated meters on a program, the
+// empirical covariance of the estimates against sigma^2 K, the estimator's bias, and the effect of
+// bench errors, for one or both moduli.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "commands/common_options.hpp"
+#include "commands/json.hpp"
+#include "commands/progress.hpp"
+#include "commands/values.hpp"
+#include "commands/warning.hpp"
+#include "numeric/calibration/monte_carlo.hpp"
+
+namespace scalcal::commands {
+
+struct SimulateRequest {
+  std::string name;  // the program's name in messages
+  Program program;
+  int trials = 0, samples = 1;
+  double noise = 0, bench_error_deg = 0, size = 1e-3;
+  std::vector<Modulus> moduli{Modulus::norm, Modulus::projection};
+  ModelKind model = ModelKind::paper9;
+  std::uint64_t seed = 1;
+};
+
+struct SimulateResult {
+  SimulateRequest request;
+  std::vector<std::pair<Modulus, MonteCarloResult>> results;  // one per modulus, in the request's order
+  Warnings warnings;
+};
+
+// --program P --trials T --noise SIGMA [--bench-error DEG] [--modulus norm|projection] [--model NAME]
+// [--seed S] [--samples K] [--size A] [--json]
+const CommandTable& simulate_table();
+SimulateRequest simulate_request(const Values& values);
+
+// Throws UsageError for a noise outside what the linearised model answers (>= 1 |I| or below a
+// double's resolution) or a model the simulator does not take, InputError for a rank-deficient
+// program; warns for noise where the answer degrades.
+SimulateResult simulate(const SimulateRequest& request, const Progress& progress = {});
+
+Json to_json(const SimulateResult& result);
+
+const char* modulus_name(Modulus m);  // "norm", "projection"
+
+}  // namespace scalcal::commands
