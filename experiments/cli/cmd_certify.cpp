@@ -32,7 +32,7 @@ int run(const Options& o) {
   } catch (const std::invalid_argument& e) {
     throw UsageError(o.program + ": " + e.what());
   }
-  const bool local = r.status == CertifiedStatus::missed_local_optimum;
+  const bool local = !r.enclosure_lo.empty();  // a certified local optimum, missed or holding the limit
   if (o.json) {
     Json j{{"criterion", std::string(criterion_name(c))},
            {"positions", program.size()},
