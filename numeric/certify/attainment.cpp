@@ -6,6 +6,7 @@
 
 #include <Eigen/QR>
 
+#include "numeric/certify/d3_match.hpp"
 #include "numeric/certify/moment_system.hpp"
 #include "numeric/certify/pentagonal_match.hpp"
 
@@ -38,6 +39,19 @@ bool pentagonal(const Program& program, AttainmentOutcome& a) {
   return true;
 }
 
+// D at N = 14: the exact D3-symmetric 4-design the program is near, if any.
+bool dihedral(const Program& program, AttainmentOutcome& a) {
+  auto exact = d3_design_near(program);
+  if (!exact) return false;
+  a.proven = true;
+  a.exact = std::move(*exact);
+  a.method = "fit of the D3-symmetric 14-point 4-design (closed form: poles and two D3-orbits at heights "
+             "z^2 = (10 +- sqrt 35)/45), enclosed in MPFI";
+  a.reason = "the exact design, a 4-design by proof.d3_design, lies within the radius, one point per position; "
+             "the moment equations lose rank on the 14-point designs (23 of 24)";
+  return true;
+}
+
 }  // namespace
 
 AttainmentOutcome attainment(const Program& program, const CertifyTarget& t, int digits) {
@@ -55,6 +69,7 @@ AttainmentOutcome attainment(const Program& program, const CertifyTarget& t, int
     a.reason = deviation_reason(t, a.deviation);
     return a;
   }
+  if (t.uniform_moments && t.rotations && n == 14 && dihedral(program, a)) return a;
   const bool overdetermined = all.size() < MomentSystem::kEquations;
   const bool twelve = t.uniform_moments && t.rotations && n == 12;
   if (overdetermined && twelve && pentagonal(program, a)) return a;
