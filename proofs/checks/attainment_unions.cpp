@@ -8,6 +8,8 @@
 // certified N: if every N in [a, 2a - 1] is certified, every N >= a is a sum of certified N (strong
 // induction: N >= 2a is a + (N - a)). Claimed: D at 12, 14 and every N >= 16; A and E at every
 // N >= 12; S at 12 and every N >= 14. The closure gives no other N >= 12 (13, 15 for D; 13 for S).
+#include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <map>
 #include <set>
@@ -76,14 +78,24 @@ bool interval_in(const std::set<int>& s, int a, int b) {
 int main() {
   const std::vector<Row> rows = read_rows(std::string(SCALCAL_SOURCE_DIR) + "/proofs/designs/base_programs.csv");
   std::map<std::string, std::set<int>> proven;
-  int failed = 0;
+  int failed = 0, close = 0;
   for (const Row& r : rows) {
     const scalcal::CertifyResult c = scalcal::certify(r.program, *scalcal::parse_criterion(r.criterion));
     const bool ok = r.program.size() == r.positions && c.status == scalcal::CertifiedStatus::attained_proven;
     if (ok) proven[r.criterion].insert(r.positions);
     else ++failed, std::cout << "  " << r.criterion << " N = " << r.positions << ": " << c.reason << "\n";
+    // Each exact position lies within sqrt 2 * radius of the computed one (chart coordinates u, v at
+    // most the radius; normalising w = e + u t1 + v t2 moves it no farther from e), so computed
+    // positions more than 2 sqrt 2 * radius apart stay distinct.
+    if (!ok) continue;
+    double nearest = 4;
+    for (int i = 0; i < r.program.size(); ++i)
+      for (int j = i + 1; j < r.program.size(); ++j)
+        nearest = std::min(nearest, (r.program.positions[i].normalized() - r.program.positions[j].normalized()).norm());
+    if (!(nearest > 2 * std::sqrt(2.0) * std::stod(c.radius) * (1 + 1e-9))) ++close;
   }
   check(rows.size() == 57 && failed == 0, "all 57 base programs certified: limit attained, proven");
+  check(close == 0, "every exact base program has distinct positions (nearest pair > 2 sqrt 2 * radius apart)");
 
   // The claimed base ranges [a, 2a - 1] and the extra N.
   check(interval_in(proven["D"], 16, 31) && proven["D"].count(12) && proven["D"].count(14),
