@@ -24,6 +24,7 @@ Program optimum(int n, CriterionKind c) {
   o.positions = n;
   o.criterion = c;
   o.seed = 1;
+  o.starts = 16;  // finds the sweep's optima at these N (E at N = 9: 2 of 16 starts) in a tenth of the default's time
   return synthesize(o).program;
 }
 
