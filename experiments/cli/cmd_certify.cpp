@@ -29,6 +29,8 @@ int run(const Options& o) {
   CertifyResult r;
   try {
     r = certify(program, c, CertifyOptions{o.digits});
+  } catch (const NoKnownLimit& e) {
+    throw UsageError(std::string("certify: --criterion ") + o.criterion + ": " + e.what());
   } catch (const std::invalid_argument& e) {
     throw UsageError(o.program + ": " + e.what());
   }

@@ -39,9 +39,15 @@ struct CertifyResult {
   double seconds = 0;
 };
 
+// No known limit: nothing to certify attainment against. The CLI reports it as bad input (exit 2).
+class NoKnownLimit : public std::invalid_argument {
+ public:
+  explicit NoKnownLimit(std::string_view criterion)
+      : std::invalid_argument("no known limit for criterion " + std::string(criterion)) {}
+};
+
 // Throws std::invalid_argument for a program with fewer than 9 positions or a singular one, and
-// certify_detail::NoKnownLimit (an std::invalid_argument, "no known limit for criterion X") for a
-// criterion without a known limit.
+// NoKnownLimit ("no known limit for criterion X") for a criterion without a known limit.
 CertifyResult certify(const Program& program, CriterionKind criterion, const CertifyOptions& options = {});
 
 }  // namespace scalcal

@@ -19,7 +19,7 @@ CertifyResult certify_target(const Program& program, double value, const Certify
 
 template <Criterion C>
 CertifyResult certify(const Program& program, const CertifyOptions& options = {}) {
-  if (!C::template limit<Paper9Model, double>()) throw certify_detail::NoKnownLimit(C::name);
+  if (!C::template limit<Paper9Model, double>()) throw NoKnownLimit(C::name);
   if (program.size() < 9) throw std::invalid_argument("certify: a program needs at least 9 positions");
   const double value = criterion_value<C>(program);
   if (!std::isfinite(value)) throw std::invalid_argument("certify: the program is singular (rank < 9)");

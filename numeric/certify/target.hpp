@@ -8,6 +8,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "numeric/certify/certify.hpp"
 #include "numeric/certify/interval.hpp"
 #include "numeric/criteria/a_criterion.hpp"
 #include "numeric/criteria/criterion.hpp"
@@ -39,13 +40,6 @@ constexpr LocalCertificate local_certificate_of() {
   else if constexpr (std::is_same_v<C, ACriterion>) return LocalCertificate::trace;  // N tr K: tr M^-1
   else return LocalCertificate::none;
 }
-
-// No known limit: nothing to certify attainment against. The CLI reports it as bad input (exit 2).
-class NoKnownLimit : public std::invalid_argument {
- public:
-  explicit NoKnownLimit(std::string_view criterion)
-      : std::invalid_argument("no known limit for criterion " + std::string(criterion)) {}
-};
 
 // The target of criterion C for the paper's model, at the current MPFI precision.
 template <Criterion C>

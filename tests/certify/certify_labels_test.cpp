@@ -138,7 +138,7 @@ TEST(CertifyLabels, ACriterionWithoutAKnownLimitGetsAClearAnswer) {
   try {
     certify<testing::IntegratedVarianceCriterion>(Program::classic18());
     FAIL() << "certify accepted a criterion without a limit";
-  } catch (const std::invalid_argument& e) {
+  } catch (const NoKnownLimit& e) {  // an std::invalid_argument: the CLI's exit 2
     EXPECT_EQ(std::string(e.what()), "no known limit for criterion I");
   }
 }
