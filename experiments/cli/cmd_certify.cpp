@@ -29,10 +29,12 @@ int run(const Options& o) {
   CertifyResult r;
   try {
     r = certify(program, c, CertifyOptions{o.digits});
+  } catch (const NoKnownLimit& e) {
+    throw UsageError(std::string("certify: --criterion ") + o.criterion + ": " + e.what());
   } catch (const std::invalid_argument& e) {
     throw UsageError(o.program + ": " + e.what());
   }
-  const bool local = r.status == CertifiedStatus::missed_local_optimum;
+  const bool local = !r.enclosure_lo.empty();  // a certified local optimum, missed or holding the limit
   if (o.json) {
     Json j{{"criterion", std::string(criterion_name(c))},
            {"positions", program.size()},

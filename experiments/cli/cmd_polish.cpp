@@ -10,7 +10,7 @@
 #include "experiments/cli/options.hpp"
 #include "experiments/cli/output_file.hpp"
 #include "experiments/cli/synthesis_cli.hpp"
-#include "numeric/certify/certify.hpp"
+#include "numeric/certify/second_order.hpp"
 #include "numeric/criteria/identifiability.hpp"
 #include "numeric/io/input_error.hpp"
 #include "numeric/polish/polish.hpp"
@@ -41,19 +41,7 @@ int run(const Options& o) {
     std::cerr << "scalcal polish: " << o.program << ": warning: the polish did not converge (residual " << p.residual
               << "); value_digits keeps " << p.digits << " digits\n";
   if (!o.out.empty()) write_program_file(o.out, p.program);
-  // First-order conditions cannot tell a minimum from a saddle: the interval certificate can (D, A, E, S),
-  // or proves the limit attained; otherwise the polished point stays a first-order point.
-  std::string second_order = p.converged() ? "not checked (fewer than 9 positions)" : "not checked (not converged)";
-  std::string second_reason;
-  if (program.size() >= 9 && p.converged()) {
-    try {
-      const CertifyResult cert = certify(p.program, c);
-      second_order = std::string(status_text(cert.status));
-      second_reason = cert.reason;
-    } catch (const std::invalid_argument& e) {
-      second_reason = e.what();
-    }
-  }
+  const SecondOrder second = second_order(p, c);  // numeric/certify/second_order.hpp
   if (o.json) {
     print_json(Json{{"criterion", std::string(criterion_name(c))},
                     {"positions", program.size()},
@@ -62,14 +50,14 @@ int run(const Options& o) {
                     {"digits", p.digits},
                     {"iterations", p.summary.iterations},
                     {"converged", p.converged()},
-                    {"second_order", second_order},
-                    {"second_order_reason", second_reason},
+                    {"second_order", second.text},
+                    {"second_order_reason", second.reason},
                     {"program", program_json(p.program)}});
   } else {
     std::cout << criterion_name(c) << " = " << p.value_digits << "  (" << p.digits << " digits, residual "
               << std::setprecision(3) << p.residual << ", " << p.summary.iterations << " Newton steps, N = "
               << program.size() << (p.converged() ? "" : ", not converged") << ")\n"
-              << "second order: " << second_order << (second_reason.empty() ? "" : " (" + second_reason + ")") << "\n";
+              << "second order: " << second.text << (second.reason.empty() ? "" : " (" + second.reason + ")") << "\n";
   }
   // Not converged: the digits printed are fewer than asked, and a script must notice.
   return p.converged() ? 0 : 1;

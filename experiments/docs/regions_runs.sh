@@ -57,3 +57,25 @@ echo "| --- | --- | --- | --- | --- |"
 for r in cap:30 cap:60 cap:90 band:60:120 faces:10 faces:20; do
   "$S" sweep --positions 9..32 --criteria D,A,E,S --region "$r" --starts 4 --json --no-timing | smallest_row "$r"
 done
+
+# E and S on caps: the closed forms of proofs/cap_es_limits.md (E up to 110.38 degrees, S up to 99.88;
+# lower bounds beyond) against the solver's value and proven lower bound.
+closed_row() { python3 -c '
+import json, math, sys
+d = json.load(sys.stdin)
+c = math.cos(math.radians(float(sys.argv[1])))
+exact = {"E": (3*c**4 + 36*c**3 + 194*c**2 + 260*c + 147) / (1 - c)**4, "S": ((3 + c) / (1 - c))**4}
+reach = {"E": float(sys.argv[1]) <= 110.3755, "S": float(sys.argv[1]) <= 99.8793}
+cells = []
+for k in "ES":
+    e = d[k]
+    cells.append("%.9g%s | %+.2g | %+.2g" % (exact[k], "" if reach[k] else " (bound)",
+                 e["value"] / exact[k] - 1, e["lower_bound"] / exact[k] - 1))
+print("| `%s` | %s |" % (d["region"], " | ".join(cells)))
+' "$1"; }
+
+echo
+echo "## E and S on caps: closed form against the solver (relative differences)"
+echo "| region | E closed form | solver value | solver bound | S closed form | solver value | solver bound |"
+echo "| --- | --- | --- | --- | --- | --- | --- |"
+for a in 10 20 30 45 60 90 100 110 120; do "$S" limits --region "cap:$a" --json | closed_row "$a"; done

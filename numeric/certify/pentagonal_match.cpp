@@ -56,7 +56,7 @@ std::optional<Fit> fit(const std::vector<Eigen::Vector3d>& p, int north, int sou
 
 }  // namespace
 
-std::optional<Real> radius_to_pentagonal_design(const Program& program, const SphereChart& chart) {
+std::optional<std::vector<IPoint>> pentagonal_design_near(const Program& program) {
   if (program.size() != 12) return std::nullopt;
   std::vector<Eigen::Vector3d> p;
   for (const auto& e : program.positions) p.push_back(e.normalized());
@@ -92,28 +92,12 @@ std::optional<Real> radius_to_pentagonal_design(const Program& program, const Sp
     for (int k = 0; k < 5; ++k)
       local[2 + 5 * j + k] = {r * (ct * ck[k] - st * sk[k]), r * (st * ck[k] + ct * sk[k]), j == 0 ? h : Interval(-h)};
   }
-  Real radius(0);
-  for (int slot = 0; slot < 12; ++slot) {
-    const int i = f->position[slot];
-    std::array<Interval, 3> target;
+  std::vector<IPoint> exact(12);
+  for (int slot = 0; slot < 12; ++slot)
     for (int a = 0; a < 3; ++a)
-      target[a] = (R[a][0] * local[slot][0] + R[a][1] * local[slot][1] + R[a][2] * local[slot][2]) / n;
-    // eta(u, v) = target iff e + u t1 + v t2 = s target (s > 0): by Cramer's rule, the determinant
-    // cancelling, u = (t2 x e).target / (t1 x t2).target and v = (e x t1).target / (t1 x t2).target.
-    auto triple = [&target](const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
-      Interval acc(0);
-      for (int k = 0; k < 3; ++k) {
-        const int k1 = (k + 1) % 3, k2 = (k + 2) % 3;
-        acc += (Interval(a(k1)) * Interval(b(k2)) - Interval(a(k2)) * Interval(b(k1))) * target[k];
-      }
-      return acc;
-    };
-    const Interval along_e = triple(chart.t1[i], chart.t2[i]);
-    if (!(lo(along_e) > 0)) return std::nullopt;
-    const Interval u = triple(chart.t2[i], chart.e[i]) / along_e, v = triple(chart.e[i], chart.t1[i]) / along_e;
-    radius = std::max({radius, mag(u), mag(v)});
-  }
-  return radius;
+      exact[f->position[slot]][a] =
+          (R[a][0] * local[slot][0] + R[a][1] * local[slot][1] + R[a][2] * local[slot][2]) / n;
+  return exact;
 }
 
 }  // namespace scalcal::certify_detail
