@@ -74,6 +74,11 @@ Option named(Option option, std::string value_name) {
   return option;
 }
 
+Option positions_option(Option option) {
+  option.takes_positions = true;
+  return option;
+}
+
 Option flag_option(std::string name, std::string what) {
   Option o;
   o.name = std::move(name);
@@ -147,6 +152,7 @@ Option program_argument(const std::string& what) {
   Option o;
   o.name = "PROGRAM";
   o.kind = OptionKind::positional;
+  o.takes_positions = true;
   o.what = what.empty() ? "a catalogue name (scalcal catalogue) or a CSV file (x,y,z or alpha1_deg,alpha2_deg)" : what;
   return o;
 }

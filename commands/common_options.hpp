@@ -43,7 +43,8 @@ Option text_option(std::string name, std::string value_name, std::string what, s
                    std::string fallback = "");
 Option choice_option(std::string name, std::vector<std::string> choices, std::string what, std::string fallback);
 Option flag_option(std::string name, std::string what);
-Option named(Option option, std::string value_name);  // the option shown as `--name VALUE_NAME` in usage lines
+Option named(Option option, std::string value_name);
+Option positions_option(Option option);  // a program option: Python may give an (N, 3) array too  // the option shown as `--name VALUE_NAME` in usage lines
 
 CriterionKind criterion_of(const Values& values, const std::string& option = "--criterion");
 ModelKind model_of(const Values& values);

@@ -69,6 +69,7 @@ const char* modulus_name(Modulus m) { return m == Modulus::norm ? "norm" : "proj
 
 const CommandTable& simulate_table() {
   Option program = text_option("--program", "P", "a catalogue name or a CSV file", "none", kRequired);
+  program.takes_positions = true;
   Option modulus = choice_option("--modulus", {"norm", "projection"}, "the modulus the estimator fits", "");
   modulus.fallback_text = "both, one after the other";
   static const CommandTable table{
