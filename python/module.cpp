@@ -12,7 +12,8 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
-#include "experiments/cli/calibration_report.hpp"
+#include "commands/calibrate.hpp"
+#include "commands/calibrate_json.hpp"
 #include "experiments/cli/command.hpp"
 #include "experiments/cli/evaluate_report.hpp"
 #include "experiments/cli/limits_report.hpp"
@@ -119,40 +120,51 @@ py::object calibrate(const py::object& samples, const py::object& magnitude, con
                      const py::object& nominal, const py::object& time, const std::string& modulus,
                      const std::string& weights, bool keep_outliers, long long suggest, const std::string& criterion,
                      const py::object& region, const std::string& model, const IntervalArguments& iv) {
-  cli::CalibrationRequest q;
+  commands::CalibrateRequest q;
   q.file = "samples";
   q.magnitude = magnitude_of(magnitude);
   q.modulus = choice("modulus", modulus, {"norm", "projection"}) == "norm" ? Modulus::norm : Modulus::projection;
   q.weights = choice("weights", weights, {"auto", "samples", "positions"});
   q.keep_outliers = keep_outliers;
-  q.suggest = static_cast<int>(in_range("suggest", suggest, cli::kSuggestions));
+  q.suggest = static_cast<int>(in_range("suggest", suggest, {0, commands::kMaxSuggestions}));
   q.criterion = criterion_of(criterion);
   q.regions = regions_of(region);
-  q.model = model_of(model);
-  for (const auto& [argument, value] : {std::pair{"still", iv.still}, std::pair{"window", iv.window},
-                                        std::pair{"threshold_factor", iv.threshold_factor},
+  if (model != "auto") q.model = model_of(model);
+  for (const auto& [argument, value] : {std::pair{"window", iv.window}, std::pair{"threshold_factor", iv.threshold_factor},
                                         std::pair{"min_interval", iv.min_interval}})
     if (!(value > 0) || !std::isfinite(value))
       throw cli::UsageError(std::string(argument) + ": must be a positive number, got " + std::to_string(value));
+  if (!(iv.still >= 0) || !std::isfinite(iv.still))
+    throw cli::UsageError("still: must be 0 (the noise floor from the quiet windows) or positive, got " +
+                          std::to_string(iv.still));
   q.intervals = {iv.still, iv.window, iv.threshold_factor, iv.min_interval};
-  cli::check_calibration_request(q);
+  commands::check_calibrate_request(q);
 
   std::vector<Column> columns = columns_of("samples", samples, {"ix", "iy", "iz"});
   const py::ssize_t rows = columns.front().second.shape(0);
-  cli::CalibrationInput input;
+  commands::CalibrationInput input;
   if (!time.is_none()) {
     if (!position.is_none() || !nominal.is_none())
       throw cli::UsageError("time makes samples a raw log, whose positions are its static intervals: give no "
                             "position or nominal with it");
     columns.insert(columns.begin(), column_of("time", time, "t", rows));
-    input = cli::calibration_input(raw_log_from_table(table_of(q.file, columns, true)), q);
+    input = commands::calibration_input(raw_log_from_table(table_of(q.file, columns, true)), q);
   } else {
     if (!position.is_none()) columns.push_back(column_of("position", position, "position", rows));
     if (!nominal.is_none())
       for (auto& c : columns_of("nominal", nominal, {"x", "y", "z"})) columns.push_back(std::move(c));
     input.data = measurements_from_table(table_of(q.file, columns, false), q.modulus == Modulus::projection);
   }
-  return computed([&] { return cli::calibrate_report(q, std::move(input)); });
+  std::optional<commands::CalibrateResult> r;
+  {
+    py::gil_scoped_release free;
+    r = commands::calibrate(q, std::move(input));
+  }
+  // Warnings reach Python as warnings.warn (UserWarning), as the CLI prints them on stderr.
+  for (const auto& w : r->warnings)
+    if (PyErr_WarnEx(PyExc_UserWarning, ((w.subject.empty() ? "" : w.subject + ": ") + w.message).c_str(), 1) != 0)
+      throw py::error_already_set();
+  return to_python(commands::to_json(*r));
 }
 
 }  // namespace
@@ -208,12 +220,13 @@ PYBIND11_MODULE(scalcal, m) {
       py::arg("samples"), py::arg("magnitude"), py::kw_only(), py::arg("position") = py::none(),
       py::arg("nominal") = py::none(), py::arg("time") = py::none(), py::arg("modulus") = "norm",
       py::arg("weights") = "auto", py::arg("keep_outliers") = false, py::arg("suggest") = 3,
-      py::arg("criterion") = "D", py::arg("region") = py::none(), py::arg("model") = "paper9",
+      py::arg("criterion") = "D", py::arg("region") = py::none(), py::arg("model") = "auto",
       py::arg("still") = StaticIntervalOptions{}.still_seconds, py::arg("window") = StaticIntervalOptions{}.window_seconds,
       py::arg("threshold_factor") = StaticIntervalOptions{}.threshold_factor,
       py::arg("min_interval") = StaticIntervalOptions{}.min_seconds,
       "Scalar calibration (`scalcal calibrate --json`). samples: (M, 3) raw outputs; position: (M,) integer "
       "labels grouping them (none: one position per row); nominal: (M, 3) nominal directions (the projection "
       "modulus needs them); time: (M,) seconds, which makes samples a raw log whose static intervals are the "
-      "positions. magnitude: |I| in the samples' units, or 'auto'.");
+      "positions. magnitude: |I| in the samples' units, or 'auto'. model 'auto' fits the richest model the "
+      "positions identify; still 0 takes the noise floor from the log's quiet windows.");
 }

@@ -50,6 +50,30 @@ std::vector<char> saturated_samples(const RawLog& log) {
   return out;
 }
 
+// The noise floor from the log itself: the median of the quiet windows, those below 3 times the 5 %
+// quantile of all windows' variance norms. A quantised quiet output can make most quiet windows
+// exactly zero: the positive ones set the floor then.
+double quiet_floor(std::vector<double> v) {
+  const auto quantile = [](std::vector<double>& x, double q) {
+    const auto k = static_cast<std::size_t>(q * static_cast<double>(x.size() - 1));
+    std::nth_element(x.begin(), x.begin() + static_cast<std::ptrdiff_t>(k), x.end());
+    return x[k];
+  };
+  double low = quantile(v, 0.05);
+  if (!(low > 0)) {
+    std::vector<double> positive;
+    for (double x : v)
+      if (x > 0) positive.push_back(x);
+    if (positive.empty()) return 0;
+    v = positive;
+    low = quantile(v, 0.05);
+  }
+  std::vector<double> quiet;
+  for (double x : v)
+    if (x <= 3 * low) quiet.push_back(x);
+  return quantile(quiet, 0.5);
+}
+
 }  // namespace
 
 IntervalDetection detect_static_intervals(const RawLog& log, const StaticIntervalOptions& options) {
@@ -82,49 +106,72 @@ IntervalDetection detect_static_intervals(const RawLog& log, const StaticInterva
   d.window = std::max(11, static_cast<int>(std::lround(window)) | 1);
   const int h = d.window / 2;
 
-  // The still period: the usable samples within still_seconds of the first one.
+  // Moving variance by prefix sums over the samples (an unusable sample makes its windows unusable).
+  // Shifted by the first usable sample: raw sums of counts near 32768 would cancel badly.
   int first = 0;
   while (first < n && !usable[static_cast<std::size_t>(first)]) ++first;
-  Vec3 sum = Vec3::Zero(), sum2 = Vec3::Zero();
-  int count = 0;
-  for (int i = first; i < n && log.t[static_cast<std::size_t>(i)] <= log.t[static_cast<std::size_t>(first)] + options.still_seconds; ++i)
-    if (usable[static_cast<std::size_t>(i)]) {
-      const Vec3& s = log.samples[static_cast<std::size_t>(i)];
-      sum += s;
-      sum2 += s.cwiseProduct(s);
-      ++count;
-    }
-  if (count < d.window)
-    throw InputError(log.file, 0,
-                     "the initial still period (" + std::to_string(options.still_seconds) + " s) holds " +
-                         std::to_string(count) + " usable samples, fewer than one variance window (" +
-                         std::to_string(d.window) + "); lengthen --still or shorten --window");
-  const Vec3 mean = sum / count;
-  d.still_variance = (sum2 / count - mean.cwiseProduct(mean)).cwiseMax(0.0).norm();
-  if (!(d.still_variance > 0))
-    throw InputError(log.file, 0,
-                     "the initial still period has no noise at all (a constant or clipped output): nothing to set the "
-                     "static threshold by");
-  d.threshold = options.threshold_factor * d.still_variance;
-
-  // Moving variance by prefix sums over the samples (an unusable sample makes its windows unusable).
+  if (first == n) throw InputError(log.file, 0, "no usable sample (every row is non-finite or saturated)");
+  const Vec3 shift = log.samples[static_cast<std::size_t>(first)];
   std::vector<Vec3> ps(static_cast<std::size_t>(n) + 1, Vec3::Zero()), ps2(static_cast<std::size_t>(n) + 1, Vec3::Zero());
   std::vector<int> bad(static_cast<std::size_t>(n) + 1, 0);
   for (int i = 0; i < n; ++i) {
     const auto k = static_cast<std::size_t>(i);
-    const Vec3 s = usable[k] ? log.samples[k] : Vec3::Zero();
+    const Vec3 s = usable[k] ? Vec3(log.samples[k] - shift) : Vec3::Zero();
     ps[k + 1] = ps[k] + s;
     ps2[k + 1] = ps2[k] + s.cwiseProduct(s);
     bad[k + 1] = bad[k] + (usable[k] ? 0 : 1);
   }
-  const auto is_static = [&](int i) {
-    if (i - h < 0 || i + h >= n) return false;
+  // The variance norm of the window centred on i; NaN where the window is incomplete or unusable.
+  const auto window_variance = [&](int i) -> double {
+    if (i - h < 0 || i + h >= n) return NAN;
     const auto a = static_cast<std::size_t>(i - h), b = static_cast<std::size_t>(i + h + 1);
-    if (bad[b] - bad[a] > 0) return false;
+    if (bad[b] - bad[a] > 0) return NAN;
     const Vec3 m = (ps[b] - ps[a]) / d.window;
-    // Shifted by the window's mean: the raw sums of counts near 32768 would cancel badly.
-    Vec3 var = (ps2[b] - ps2[a]) / d.window - m.cwiseProduct(m);
-    return var.cwiseMax(0.0).norm() < d.threshold;
+    const Vec3 var = (ps2[b] - ps2[a]) / d.window - m.cwiseProduct(m);
+    return var.cwiseMax(0.0).norm();
+  };
+  std::vector<double> variance(static_cast<std::size_t>(n));
+  std::vector<double> finite;
+  for (int i = 0; i < n; ++i) {
+    variance[static_cast<std::size_t>(i)] = window_variance(i);
+    if (std::isfinite(variance[static_cast<std::size_t>(i)])) finite.push_back(variance[static_cast<std::size_t>(i)]);
+  }
+  if (finite.empty())
+    throw InputError(log.file, 0,
+                     "the log holds no complete window of " + std::to_string(d.window) +
+                         " usable samples; shorten --window");
+
+  if (options.still_seconds > 0) {
+    // The still period: the usable samples within still_seconds of the first one.
+    Vec3 sum = Vec3::Zero(), sum2 = Vec3::Zero();
+    int count = 0;
+    for (int i = first; i < n && log.t[static_cast<std::size_t>(i)] <= log.t[static_cast<std::size_t>(first)] + options.still_seconds; ++i)
+      if (usable[static_cast<std::size_t>(i)]) {
+        const Vec3 s = log.samples[static_cast<std::size_t>(i)] - shift;
+        sum += s;
+        sum2 += s.cwiseProduct(s);
+        ++count;
+      }
+    if (count < d.window)
+      throw InputError(log.file, 0,
+                       "the initial still period (--still " + std::to_string(options.still_seconds) + " s) holds " +
+                           std::to_string(count) + " usable samples, fewer than one variance window (" +
+                           std::to_string(d.window) + "); lengthen --still, shorten --window, or drop --still (the "
+                           "noise floor then comes from the log's quiet windows)");
+    const Vec3 mean = sum / count;
+    d.still_variance = (sum2 / count - mean.cwiseProduct(mean)).cwiseMax(0.0).norm();
+    d.floor_from_still = true;
+  } else {
+    d.still_variance = quiet_floor(finite);
+  }
+  if (!(d.still_variance > 0))
+    throw InputError(log.file, 0,
+                     std::string(d.floor_from_still ? "the initial still period" : "the log") +
+                         " has no noise at all (a constant or clipped output): nothing to set the static threshold by");
+  d.threshold = options.threshold_factor * d.still_variance;
+  const auto is_static = [&](int i) {
+    const double v = variance[static_cast<std::size_t>(i)];
+    return std::isfinite(v) && v < d.threshold;
   };
   const int min_samples =
       static_cast<int>(std::clamp(std::ceil(options.min_seconds / d.sample_period), 1.0, static_cast<double>(n) + 1));
@@ -135,8 +182,12 @@ IntervalDetection detect_static_intervals(const RawLog& log, const StaticInterva
     }
     int j = i;
     while (j + 1 < n && is_static(j + 1)) ++j;
-    if (j - i + 1 >= min_samples)
+    if (j - i + 1 >= min_samples) {
       d.intervals.push_back({i, j, log.t[static_cast<std::size_t>(i)], log.t[static_cast<std::size_t>(j)]});
+      d.longest_fraction = std::max(d.longest_fraction, static_cast<double>(j - i + 1) / n);
+    } else {
+      ++d.short_runs;
+    }
     i = j + 1;
   }
   return d;

@@ -138,7 +138,7 @@ TEST(CalibrateCli, BadInputIsOneLineAndExitTwo) {
   const Case cases[] = {
       {"missing_column.csv", "position,ix,iy\n1,2,3\n", "", "missing column 'iz'"},
       {"bad_number.csv", bad_number, "", ":5: 'abc' in column ix is not a number"},
-      {"eight.csv", eight, "", "8 distinct positions"},
+      {"eight.csv", eight, "--model paper9", "cannot be identified by these positions (8 positions"},
       {"wrong_units.csv", good, "--modulus projection", "the projection modulus needs data in the field's units"},
       {"planar.csv", planar, "--modulus projection", "not identifiable: bias_z"},
       {"no_nominal.csv", "ix,iy,iz\n1,0,0\n", "--modulus projection", "nominal direction"},
