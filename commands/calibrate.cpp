@@ -122,12 +122,29 @@ void collect_warnings(const CalibrateResult& r, Warnings& w) {
     w.push_back({r.file, "only " + std::to_string(a.dof) +
                              " degrees of freedom (positions minus parameters): the standard errors are themselves "
                              "uncertain; 95 % intervals are +- " + number(r.t95, 4) + " standard errors (Student's t)"});
-  if (a.chi_square && a.chi_square_p < 1e-3)
-    w.push_back({r.file, "the residuals between positions are " + number(std::sqrt(*a.chi_square / a.dof), 3) +
-                             " times what the noise within positions predicts (chi-square " + number(*a.chi_square, 4) +
-                             " for " + std::to_string(a.dof) +
-                             " degrees of freedom): systematic errors dominate; the standard errors given are the "
-                             "residual-based ones"});
+  if (a.chi_square && a.chi_square_p < 1e-3) {
+    // Which positions disagree: |z| > 3 standard errors of their mean by the noise within positions.
+    std::vector<std::pair<double, int>> worst;
+    const double noise = a.estimate.noise / a.magnitude;
+    for (const auto& p : r.positions) {
+      const double z = std::abs(p.residual / a.magnitude) * std::sqrt(static_cast<double>(p.samples)) / noise;
+      if (z > 3) worst.emplace_back(z, p.line);
+    }
+    std::sort(worst.rbegin(), worst.rend());
+    std::string list;
+    for (std::size_t k = 0; k < worst.size() && k < 8; ++k)
+      list += std::string(k ? "," : "") + " line " + std::to_string(worst[k].second) + " (" + number(worst[k].first) + ")";
+    if (worst.size() > 8) list += " and " + std::to_string(worst.size() - 8) + " more";
+    w.push_back({r.file, "the fit contradicts its own noise estimate: chi-square " + number(*a.chi_square, 4) + " for " +
+                             std::to_string(a.dof) + " degrees of freedom (p = " + number(a.chi_square_p, 2) +
+                             "), the residuals between positions " + number(std::sqrt(*a.chi_square / a.dof)) +
+                             " times what the noise within positions predicts; " +
+                             (worst.empty() ? std::string("no single position stands out (systematic errors the model "
+                                                          "lacks?)")
+                                            : "positions that disagree (first line, |residual| in standard errors):" +
+                                                  list + " (mislabelled positions or outliers?)") +
+                             "; the standard errors given are the residual-based ones"});
+  }
   if (!r.outliers.empty()) {
     std::string list;
     for (std::size_t k = 0; k < r.outliers.size() && k < 5; ++k) {
@@ -157,6 +174,8 @@ CalibrateResult calibrate(const CalibrateRequest& q, CalibrationInput in, const 
   if (!out.excluded.empty()) out.warnings.push_back({q.file, outlier_warning(out.excluded)});
   if (progress) progress("model", 0, 3);
   choose(q, in.data, magnitude, out);
+  if (!q.model && out.model != ModelKind::paper9)
+    out.warnings.push_back({q.file, "model " + std::string(model_name(out.model)) + " (auto): " + out.model_reason});
   out.not_estimated = not_estimated_text(out.model);
   if (magnitude_auto)
     out.not_identifiable.emplace_back("the field's strength and the mean scale factor: one unknown, so the correction "

@@ -56,8 +56,7 @@ Json std_from(const CalibrateResult& r) {
 Json intervals_json(const CalibrateResult& r) {
   Json list = Json::array();
   for (const auto& p : r.positions)
-    list.push_back(Json{{"line", p.line},
-                        {"start", number_or_null(p.start)},
+    list.push_back(Json{{"start", number_or_null(p.start)},
                         {"end", number_or_null(p.end)},
                         {"samples", p.samples},
                         {"mean", triple(p.mean)},

@@ -1,6 +1,7 @@
 // The measured program of `calibrate` under the chosen model: its criteria and efficiency, and the
 // positions worth adding, never one twice.
 #include <cmath>
+#include <optional>
 #include <iomanip>
 #include <sstream>
 
@@ -45,31 +46,45 @@ std::vector<double> group_errors(const ModelEvaluation& ev) {
   return out;
 }
 
-// Drops a suggestion that repeats an earlier one (the greedy design may place two at one point).
-void drop_repeats(std::vector<SuggestedAddition>& s) {
-  std::vector<SuggestedAddition> kept;
-  for (const auto& x : s) {
-    bool repeated = false;
-    for (const auto& k : kept) repeated = repeated || (k.position - x.position).norm() < 1e-6;
-    if (!repeated) kept.push_back(x);
-  }
-  s = std::move(kept);
-}
-
 }  // namespace
 
-// The positions to add: the region's augmentation (a greedy exchange on its grid, then Ipopt
-// moving the added positions with the measured ones held fixed) up to kPolishedAdvice measured
-// positions; above, the greedy exchange on the grid alone, whose cost is linear in N (Ipopt's
-// grows as N^2.4 with the fixed positions among its variables: 10,000 took over 300 s).
+// The positions to add, one at a time so that none repeats an earlier one: up to kPolishedAdvice
+// measured positions the region's augmentation (a greedy exchange on its grid, then Ipopt moving
+// the added position with the others held fixed); above, and whenever that lands on an earlier
+// suggestion, the best point of the region's grid not yet suggested (a greedy step whose cost is
+// linear in N; Ipopt's grows as N^2.4 with the fixed positions among its variables: 10,000 measured
+// positions took over 300 s).
 constexpr int kPolishedAdvice = 200;
 
 std::vector<Vec3> positions_to_add(const Program& measured, int add, CriterionKind criterion, const Region& region,
                                    ModelKind model) {
-  if (measured.size() <= kPolishedAdvice) return augment_program(measured, add, criterion, region, model).added;
-  const std::vector<Vec3> candidates = region.grid(region.grid_step_for(kRegionGridCandidates));
-  const ExchangeResult ex = greedy_exchange(criterion, candidates, measured.positions, add, model);
-  return {ex.positions.begin() + measured.size(), ex.positions.end()};
+  const std::vector<Vec3> grid = region.grid(region.grid_step_for(kRegionGridCandidates));
+  Program given = measured;
+  std::vector<Vec3> out;
+  const auto repeats = [&](const Vec3& x) {
+    for (const Vec3& y : out)
+      if ((x - y).norm() < 1e-6) return true;
+    return false;
+  };
+  for (int k = 0; k < add; ++k) {
+    std::optional<Vec3> x;
+    if (measured.size() <= kPolishedAdvice) {
+      const AugmentedProgram a = augment_program(given, 1, criterion, region, model);
+      if (!a.added.empty() && !repeats(a.added.front())) x = a.added.front();
+    }
+    if (!x) {
+      std::vector<Vec3> candidates;
+      for (const Vec3& c : grid)
+        if (!repeats(c)) candidates.push_back(c);
+      if (candidates.empty()) break;
+      const ExchangeResult ex = greedy_exchange(criterion, candidates, given.positions, 1, model);
+      if (static_cast<int>(ex.positions.size()) <= given.size()) break;
+      x = ex.positions.back();
+    }
+    out.push_back(*x);
+    given.positions.push_back(*x);
+  }
+  return out;
 }
 
 ProgramQuality program_quality(const CalibrateRequest& q, CalibrateResult& r, const Progress&) {
@@ -101,7 +116,6 @@ ProgramQuality program_quality(const CalibrateRequest& q, CalibrateResult& r, co
       out.suggested.push_back({x, ev.value(q.criterion), group_errors(ev)});
     }
   }
-  drop_repeats(out.suggested);
   return out;
 }
 

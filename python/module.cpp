@@ -192,7 +192,7 @@ PYBIND11_MODULE(scalcal, m) {
       "program", [](const std::string& name) { return to_python(cli::program_json(resolve_program(name))); },
       py::arg("name"), "The (N, 3) positions of a catalogue program (see `scalcal catalogue`) or a CSV file.");
 
-  m.def("evaluate", &evaluate, py::arg("positions"), py::kw_only(), py::arg("model") = "paper9",
+  m.def("evaluate", &scalcal::python::evaluate, py::arg("positions"), py::kw_only(), py::arg("model") = "paper9",
         py::arg("region") = py::none(), py::arg("name") = "positions",
         "The criteria D, A, E, S, the RMS errors theta, the program and K of a program: an (N, 3) array of "
         "directions, a catalogue name or a CSV file (`scalcal evaluate --json`). With region (a spec or a list "

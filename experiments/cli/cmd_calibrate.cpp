@@ -51,7 +51,6 @@ int run(const Options& o) {
   if (o.model != "auto") q.model = model_of(o.model);
   commands::check_calibrate_request(q);
   const commands::CalibrateResult r = commands::calibrate(q);
-  if (!q.model) std::cerr << "scalcal calibrate: " << o.file << ": model " << model_name(r.model) << " (auto): " << r.model_reason << "\n";
   print_warnings("calibrate", r.warnings);
   const Json j = commands::to_json(r);
   if (!o.out.empty()) write_output_file(o.out, [&](std::ostream& f) { write_json(f, commands::calibration_file_json(r)); });

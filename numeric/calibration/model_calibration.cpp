@@ -121,6 +121,18 @@ struct ModelResiduals {
     }
     return D;
   }
+  // The paper's step (eq. 6): J ~ h.(X_true - X), fitted by weighted least squares.
+  Eigen::VectorXd paper_step(const Eigen::VectorXd& X, const Eigen::VectorXd& J) const {
+    const ModelMeter meter = meter_of(X);
+    Eigen::MatrixXd info = Eigen::MatrixXd::Zero(parameters(), parameters());
+    Eigen::VectorXd rhs = Eigen::VectorXd::Zero(parameters());
+    for (std::size_t i = 0; i < means.size(); ++i) {
+      const Eigen::VectorXd h = row(direction(meter.compensate(means[i]), i));
+      info += weights[i] * h * h.transpose();
+      rhs += weights[i] * J(static_cast<Eigen::Index>(i)) * h;
+    }
+    return info.ldlt().solve(rhs);
+  }
   // sum w h h^T at the estimate with the model's rows: the paper's information matrix, whose
   // inverse every criterion judges.
   Eigen::MatrixXd information(const ModelMeter& meter, bool by_samples) const {
@@ -133,9 +145,17 @@ struct ModelResiduals {
   }
 };
 
-// Gauss-Newton on sum w J^2 with a backtracking line search: a step that does not lower the
-// residual is halved, so the iteration cannot run away from a poor start; none that lowers it
-// ends the iteration, converged only when the step is already at the precision's floor.
+// Within this of zero every parameter stays (bias over |I|, scale deviation, gamma, c |I|): the
+// start has brought the data near the field's units, and beyond it the linearised model of eq. (2)
+// is not a meter any more (an axis tilted by 30 degrees, a gain off by half).
+constexpr double kModelEdge = 0.5;
+
+// The paper's iteration (eq. 6) with a backtracking line search on sum w J^2: a step that does not
+// lower the residual is halved, so the iteration cannot run away. Where the paper's step (its rows
+// h are dJ/dX to first order only) no longer lowers the residual, Gauss-Newton with the exact
+// derivative takes over from there, to the least-squares minimum itself. A step that would leave
+// |X| < kModelEdge is refused; none that lowers the residual ends the iteration, converged only
+// when the step is already at the precision's floor.
 Eigen::VectorXd damped_gauss_newton(const ModelResiduals& f, int max_iterations, double tolerance, Summary& summary) {
   Eigen::VectorXd X = Eigen::VectorXd::Zero(f.parameters());
   Eigen::VectorXd J = f.at(X);
@@ -143,19 +163,30 @@ Eigen::VectorXd damped_gauss_newton(const ModelResiduals& f, int max_iterations,
   summary.termination = Termination::not_converged;
   summary.message = "the iteration limit was reached";
   const Eigen::VectorXd w = Eigen::Map<const Eigen::VectorXd>(f.weights.data(), static_cast<Eigen::Index>(f.weights.size()));
+  bool exact = false;
   for (summary.iterations = 1; summary.iterations <= max_iterations; ++summary.iterations) {
     if (!std::isfinite(cost)) {
       summary.termination = Termination::failed;
       summary.message = "the residuals are not finite at the start (a position the model cannot invert)";
       break;
     }
-    const Eigen::MatrixXd D = f.jacobian(X);
-    const Eigen::MatrixXd WD = w.asDiagonal() * D;
-    const Eigen::VectorXd dX = -(D.transpose() * WD).ldlt().solve(WD.transpose() * J);
+    Eigen::VectorXd dX;
+    if (exact) {
+      const Eigen::MatrixXd D = f.jacobian(X);
+      const Eigen::MatrixXd WD = w.asDiagonal() * D;
+      dX = -(D.transpose() * WD).ldlt().solve(WD.transpose() * J);
+    } else {
+      dX = f.paper_step(X, J);
+    }
     double t = 1;
     bool accepted = false;
+    bool edge = false;
     for (int halvings = 0; halvings < 30 && dX.allFinite(); ++halvings, t /= 2) {
       const Eigen::VectorXd next = X + t * dX;
+      if (next.cwiseAbs().maxCoeff() >= kModelEdge) {
+        edge = true;
+        continue;
+      }
       const Eigen::VectorXd Jn = f.at(next);
       const double c = f.cost(Jn);
       if (std::isfinite(c) && c <= cost) {
@@ -172,9 +203,16 @@ Eigen::VectorXd damped_gauss_newton(const ModelResiduals& f, int max_iterations,
       summary.message = "converged";
       break;
     }
+    if (!accepted && !exact) {
+      exact = true;  // the paper's step has done what it can: the exact derivative from here
+      continue;
+    }
     if (!accepted) {
-      summary.message = "no step along the Gauss-Newton direction lowers the residual (the model does not fit these "
-                        "data, or the start is too far)";
+      summary.message = edge ? "the estimate runs to the edge of the linearised model (a parameter at " +
+                                   std::to_string(kModelEdge) +
+                                   "): these data are far from the model (a mislabelled or wrong position?)"
+                             : "no step along the Gauss-Newton direction lowers the residual (the model does not fit "
+                               "these data)";
       break;
     }
   }

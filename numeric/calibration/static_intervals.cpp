@@ -110,6 +110,10 @@ IntervalDetection detect_static_intervals(const RawLog& log, const StaticInterva
   // Shifted by the first usable sample: raw sums of counts near 32768 would cancel badly.
   int first = 0;
   while (first < n && !usable[static_cast<std::size_t>(first)]) ++first;
+  if (first == n && options.still_seconds > 0)
+    throw InputError(log.file, 0,
+                     "the initial still period (--still " + std::to_string(options.still_seconds) +
+                         " s) holds no usable sample (every row is non-finite or saturated)");
   if (first == n) throw InputError(log.file, 0, "no usable sample (every row is non-finite or saturated)");
   const Vec3 shift = log.samples[static_cast<std::size_t>(first)];
   std::vector<Vec3> ps(static_cast<std::size_t>(n) + 1, Vec3::Zero()), ps2(static_cast<std::size_t>(n) + 1, Vec3::Zero());

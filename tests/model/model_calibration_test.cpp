@@ -56,7 +56,10 @@ TEST(ModelCalibration, NoiseFreeDataGiveBackTheMetersParameters) {
   }
 }
 
-TEST(ModelCalibration, TheGenericEstimatorIsThePapersOnPaper9) {
+// The generic estimator steps with the exact derivative of J, the paper's with its first-order
+// rows h (eq. 6): their fixed points differ at second order in the meter's errors and residuals
+// (here 5e-11), far below the standard errors.
+TEST(ModelCalibration, TheGenericEstimatorAgreesWithThePapersOnPaper9) {
   const Program program = Program::octahedral(1, 1, 0);
   const Meter meter = reference_meter(2e-3);
   GaussianSource rng(5);
@@ -67,8 +70,8 @@ TEST(ModelCalibration, TheGenericEstimatorIsThePapersOnPaper9) {
     const CalibrationResult paper = calibrate(data, co);
     const ModelCalibration generic = calibrate_model(ModelKind::paper9, data, co);
     for (int k = 0; k < 9; ++k) {
-      EXPECT_NEAR(generic.X(k), paper.X(k), 1e-12) << k;
-      EXPECT_NEAR(generic.X_std(k), paper.X_std(k), 1e-9 * paper.X_std(k)) << k;
+      EXPECT_NEAR(generic.X(k), paper.X(k), 1e-3 * paper.X_std(k)) << k;
+      EXPECT_NEAR(generic.X_std(k), paper.X_std(k), 1e-6 * paper.X_std(k)) << k;
     }
     EXPECT_NEAR(generic.noise, paper.noise, 1e-12);
   }
