@@ -78,15 +78,20 @@ TEST(CalibrateCommand, ALogWithoutAStillStartCalibrates) {
   }
 }
 
-// Six faces (each twice) cannot identify non-orthogonality: auto fits axis6 and says why; an
+// Six faces (each twice, tipped by about a degree as a box on a table is) cannot identify
+// non-orthogonality: full rank, but condition far above 1e4. Auto fits axis6 and says why; an
 // explicit paper9 is refused, naming the parameters and the model that would work.
 TEST(CalibrateCommand, FacesOnlyFitAxis6) {
   LogSpec spec;
   spec.meter = example_meter(0.01, spec.magnitude);
   for (auto& row : spec.meter.phi)
     for (double& v : row) v = 0;  // a meter axis6 describes exactly
-  std::vector<V3> d = faces();
-  for (const V3& f : faces()) d.push_back(f);
+  std::vector<V3> d;
+  for (int rep = 0; rep < 2; ++rep)
+    for (const V3& f : faces()) {
+      const double k = d.size() + 1.0, tip = 0.02;  // radians
+      d.push_back(unit({f[0] + tip * std::sin(1.7 * k), f[1] + tip * std::cos(2.3 * k), f[2] + tip * std::sin(0.9 * k + 1)}));
+    }
   const CalibrateResult r = run(spec, d, request("9.81"));
   EXPECT_EQ(model_name(r.model), "axis6");
   EXPECT_NE(r.model_reason.find("nonorth"), std::string::npos) << r.model_reason;
@@ -103,7 +108,7 @@ TEST(CalibrateCommand, FacesOnlyFitAxis6) {
     FAIL() << "paper9 on six faces must be refused";
   } catch (const InputError& e) {
     const std::string m = e.what();
-    EXPECT_NE(m.find("nonorth_xy"), std::string::npos) << m;
+    EXPECT_NE(m.find("nonorth_"), std::string::npos) << m;
     EXPECT_NE(m.find("--model axis6"), std::string::npos) << m;
   }
 }
