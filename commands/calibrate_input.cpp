@@ -18,12 +18,18 @@ std::string lines_text(const std::vector<int>& lines, int total) {
   return s + (total > static_cast<int>(lines.size()) ? ", ..." : "");
 }
 
+std::string shortest(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
 // Too few intervals: what the detector did, and what would actually help for this log.
 std::string too_few_message(const IntervalDetection& d, const StaticIntervalOptions& o, const std::string& need) {
   std::ostringstream s;
   s << std::setprecision(4) << "found " << d.intervals.size() << " static intervals; " << need << ". A window of " << d.window << " samples is static when its variance norm stays below "
     << d.threshold << " = --threshold-factor " << o.threshold_factor << " x the noise floor " << d.still_variance << " ("
-    << (d.floor_from_still ? "the variance of the first --still " + std::to_string(o.still_seconds) + " s"
+    << (d.floor_from_still ? "the variance of the first --still " + shortest(o.still_seconds) + " s"
                            : std::string("the median of the log's quiet windows"))
     << "), for at least --min-interval " << o.min_seconds << " s. ";
   if (d.longest_fraction > 0.5) {

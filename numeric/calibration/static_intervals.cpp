@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 #include "numeric/io/input_error.hpp"
 
@@ -9,6 +10,12 @@ namespace scalcal {
 namespace {
 
 constexpr std::size_t kLinesKept = 5;
+
+std::string seconds(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
 
 // An ADC's rail: zero, or an integer next to a power of two from 2^7 to 2^32 (full scale of an
 // 8- to 32-bit converter, signed or unsigned). Only at a rail is a plateau clipping: a quiet output
@@ -112,7 +119,7 @@ IntervalDetection detect_static_intervals(const RawLog& log, const StaticInterva
   while (first < n && !usable[static_cast<std::size_t>(first)]) ++first;
   if (first == n && options.still_seconds > 0)
     throw InputError(log.file, 0,
-                     "the initial still period (--still " + std::to_string(options.still_seconds) +
+                     "the initial still period (--still " + seconds(options.still_seconds) +
                          " s) holds no usable sample (every row is non-finite or saturated)");
   if (first == n) throw InputError(log.file, 0, "no usable sample (every row is non-finite or saturated)");
   const Vec3 shift = log.samples[static_cast<std::size_t>(first)];
@@ -158,7 +165,7 @@ IntervalDetection detect_static_intervals(const RawLog& log, const StaticInterva
       }
     if (count < d.window)
       throw InputError(log.file, 0,
-                       "the initial still period (--still " + std::to_string(options.still_seconds) + " s) holds " +
+                       "the initial still period (--still " + seconds(options.still_seconds) + " s) holds " +
                            std::to_string(count) + " usable samples, fewer than one variance window (" +
                            std::to_string(d.window) + "); lengthen --still, shorten --window, or drop --still (the "
                            "noise floor then comes from the log's quiet windows)");
