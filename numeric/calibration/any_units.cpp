@@ -131,6 +131,35 @@ void compose(const std::string& file, AnyUnitsCalibration& out) {
   out.scale_deviation = out.correction.scale / out.nominal_gain - Vec3::Ones();
 }
 
+// The larger of the noise-based and the residual-based standard error (either may be NaN: not
+// estimable).
+double larger(double p, double a) { return std::isnan(p) ? a : std::isnan(a) ? p : std::max(p, a); }
+
+// The gains' standard errors: the scale deviations' with their common part when |I| is known (it
+// fixes the gain), relative to their geometric mean otherwise; and the nominal gain's (the field's
+// strength in file units with magnitude auto), which moves with the mean scale deviation:
+// var = 1^T C 1 / 9. Each the larger of the two covariances given (empty: not estimable).
+void gain_errors(AnyUnitsCalibration& out, const std::vector<int>& index, bool magnitude_auto,
+                 const Eigen::MatrixXd& predicted, const Eigen::MatrixXd& achieved) {
+  const auto sb = block_of(index, 3);
+  if (sb.empty()) return;
+  const auto gain_std = [&](const Eigen::MatrixXd& cov) {
+    if (cov.size() == 0) return Vec3(Vec3::Constant(NAN));
+    Mat3 c = block(cov, sb);
+    if (magnitude_auto) {
+      const Mat3 Pr = Mat3::Identity() - Mat3::Constant(1.0 / 3);
+      c = Pr * c * Pr.transpose();
+    }
+    return Vec3(out.gain.cwiseProduct(c.diagonal().cwiseMax(0.0).cwiseSqrt()));
+  };
+  const auto mean_std = [&](const Eigen::MatrixXd& cov) {
+    return cov.size() == 0 ? NAN : out.nominal_gain * std::sqrt(std::max(block(cov, sb).sum(), 0.0)) / 3;
+  };
+  out.nominal_gain_std = larger(mean_std(predicted), mean_std(achieved));
+  const Vec3 p = gain_std(predicted), a = gain_std(achieved);
+  for (int i = 0; i < 3; ++i) out.gain_std(i) = larger(p(i), a(i));
+}
+
 }  // namespace
 
 AnyUnitsCalibration calibrate_any_units(const std::string& file, const std::vector<PositionSamples>& data,
@@ -162,6 +191,7 @@ AnyUnitsCalibration calibrate_any_units(const std::string& file, const std::vect
   // The program measured, each position's residual, and the information at the estimate.
   const RowFunction row = visit_model(options.model, [](auto m) -> RowFunction { return &dynamic_row<decltype(m)>; });
   std::vector<double> J, w;
+  std::vector<Eigen::VectorXd> rows;
   Eigen::MatrixXd info = Eigen::MatrixXd::Zero(P, P);
   double weighted = 0, chi = 0;
   for (const auto& p : y) {
@@ -169,7 +199,8 @@ AnyUnitsCalibration calibrate_any_units(const std::string& file, const std::vect
     out.directions.push_back(c.normalized());
     J.push_back((options.modulus == Modulus::norm ? c.norm() : c.dot(*p.nominal)) / M - 1);
     w.push_back(options.weight_by_samples ? static_cast<double>(p.samples.size()) : 1.0);
-    const Eigen::VectorXd h = row(options.modulus == Modulus::norm ? out.directions.back() : Vec3(p.nominal->normalized()));
+    rows.push_back(row(options.modulus == Modulus::norm ? out.directions.back() : Vec3(p.nominal->normalized())));
+    const Eigen::VectorXd& h = rows.back();
     info += w.back() * h * h.transpose();
     weighted += w.back() * J.back() * J.back();
     if (r.noise > 0) {
@@ -183,9 +214,7 @@ AnyUnitsCalibration calibrate_any_units(const std::string& file, const std::vect
   const Eigen::VectorXd nan = Eigen::VectorXd::Constant(P, NAN);
   out.predicted_std = r.noise_source != NoiseSource::none ? reported_std((r.noise / M) * (r.noise / M) * r.K, index, out) : nan;
   out.achieved_std = out.dof > 0 ? reported_std(s * s * K, index, out) : nan;
-  out.standard_error = out.predicted_std.binaryExpr(out.achieved_std, [](double p, double a) {
-    return std::isnan(p) ? a : std::isnan(a) ? p : std::max(p, a);
-  });
+  out.standard_error = out.predicted_std.binaryExpr(out.achieved_std, [](double p, double a) { return larger(p, a); });
   if (r.noise_source == NoiseSource::scatter && r.noise > 0 && out.dof > 0) {
     out.chi_square = chi;
     out.chi_square_p = boost::math::cdf(boost::math::complement(boost::math::chi_squared(out.dof), chi));
@@ -196,34 +225,13 @@ AnyUnitsCalibration calibrate_any_units(const std::string& file, const std::vect
     else if (m < 6) out.scale_deviation_std(m - 3) = out.standard_error(k);
     else if (m < 9) out.nonorthogonality_std(m - 6) = out.standard_error(k);
   }
-  // The gain's standard error: the scale deviations' with their common part when |I| is known (it
-  // fixes the gain), relative to their geometric mean otherwise.
-  if (const auto sb = block_of(index, 3); !sb.empty()) {
-    const auto gain_std = [&](const Eigen::MatrixXd& cov) {
-      Mat3 c = block(cov, sb);
-      if (options.magnitude_auto) {
-        const Mat3 Pr = Mat3::Identity() - Mat3::Constant(1.0 / 3);
-        c = Pr * c * Pr.transpose();
-      }
-      return Vec3(out.gain.cwiseProduct(c.diagonal().cwiseMax(0.0).cwiseSqrt()));
-    };
-    // The geometric mean of the gains moves with the mean of the scale deviations: var = 1^T C 1 / 9.
-    const auto mean_std = [&](const Eigen::MatrixXd& cov) {
-      return out.nominal_gain * std::sqrt(std::max(block(cov, sb).sum(), 0.0)) / 3;
-    };
-    const double p = r.noise_source != NoiseSource::none ? mean_std((r.noise / M) * (r.noise / M) * r.K) : NAN;
-    const double q = out.dof > 0 ? mean_std(s * s * K) : NAN;
-    out.nominal_gain_std = std::isnan(p) ? q : std::isnan(q) ? p : std::max(p, q);
-    const Vec3 none = Vec3::Constant(NAN);
-    const Vec3 predicted = r.noise_source != NoiseSource::none ? gain_std((r.noise / M) * (r.noise / M) * r.K) : none;
-    const Vec3 achieved = out.dof > 0 ? gain_std(s * s * K) : none;
-    for (int i = 0; i < 3; ++i)
-      out.gain_std(i) = std::isnan(predicted(i)) ? achieved(i) : std::isnan(achieved(i)) ? predicted(i)
-                                                                                           : std::max(predicted(i), achieved(i));
-  }
+  const Eigen::MatrixXd none;
+  gain_errors(out, index, options.magnitude_auto,
+              r.noise_source != NoiseSource::none ? Eigen::MatrixXd((r.noise / M) * (r.noise / M) * r.K) : none,
+              out.dof > 0 ? Eigen::MatrixXd(s * s * K) : none);
   for (int i = 0; i < n; ++i) {
     const auto k = static_cast<std::size_t>(i);
-    const Eigen::VectorXd h = row(out.directions[k]);
+    const Eigen::VectorXd& h = rows[k];
     const double leverage = std::min(w[k] * h.dot(K * h), 1.0 - 1e-12);
     PositionResidual pr{data[k].line, J[k], 0.0};
     if (s > 0) pr.standardised = J[k] * std::sqrt(w[k]) / (s * std::sqrt(1 - leverage));
