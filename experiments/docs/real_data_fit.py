@@ -151,6 +151,9 @@ def main():
     ap.add_argument("logs", nargs="*", default=list(LOGS), help="which logs (default: all)")
     a = ap.parse_args()
     out = {"logs": {name: run(name, LOGS[name]) for name in a.logs}}
+    missing = [r["file"] for r in out["logs"].values() if r.get("missing")]
+    if a.json and missing:  # real_data_fit.json holds every log: never write it with one left out
+        sys.exit(f"not found in {DATA_DIRS} (set SCALCAL_REAL_DATA to their folder): {', '.join(missing)}")
     if a.json:
         print(json.dumps(out, indent=1))
         return
