@@ -131,6 +131,26 @@ TEST(CalibrateCommand, OneDegreeOfFreedomWarnsAndGivesStudentsT) {
   expect_truth_within(r, spec, true, r.t95);
 }
 
+// Positions on one great circle (the meter turned about its z axis only) identify no model: z and
+// z^2 never vary (beyond the noise). Refused, naming what is not identifiable.
+TEST(CalibrateCommand, OneGreatCircleIsRefused) {
+  LogSpec spec;
+  spec.zero = 0;
+  spec.counts_per_unit = 1;
+  spec.noise = 0.002;
+  spec.quantum = 1e-6;
+  std::vector<V3> d;
+  for (int k = 0; k < 12; ++k) d.push_back({std::cos(0.5236 * k), std::sin(0.5236 * k), 0});
+  try {
+    run(spec, d, request("9.81"));
+    FAIL() << "one great circle must be refused";
+  } catch (const InputError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("carry none of the models"), std::string::npos) << m;
+    EXPECT_NE(m.find("bias_z"), std::string::npos) << m;
+  }
+}
+
 // No time column: the rate gives the time; a CSV with ix,iy,iz and --rate is a raw log.
 TEST(CalibrateCommand, ALogWithoutTimeTakesTheRate) {
   LogSpec spec;
