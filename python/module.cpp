@@ -13,7 +13,8 @@
 #include <pybind11/stl.h>
 
 #include "commands/usage_error.hpp"
-#include "experiments/cli/calibration_report.hpp"
+#include "commands/calibrate.hpp"
+#include "commands/calibrate_json.hpp"
 #include "numeric/io/input_error.hpp"
 #include "numeric/io/measurements_csv.hpp"
 #include "numeric/program/catalogue.hpp"
@@ -97,12 +98,12 @@ std::string magnitude_of(const py::object& magnitude) {
   return std::string(buffer, end);
 }
 
-// The calibration from arrays (until calibrate is a command of commands/ with a table).
+// The calibration from arrays (until calibrate takes its table's arguments here too).
 py::tuple calibrate(const py::object& samples, const py::object& magnitude, const py::object& position,
                     const py::object& nominal, const py::object& time, const std::string& modulus,
                     const std::string& weights, bool keep_outliers, int suggest, const std::string& criterion,
-                    const std::vector<std::string>& regions, const std::string& model) {
-  cli::CalibrationRequest q;
+                    const std::vector<std::string>& regions, const std::string& model, double rate) {
+  commands::CalibrateRequest q;
   q.file = "samples";
   q.magnitude = magnitude_of(magnitude);
   q.modulus = modulus == "projection" ? Modulus::projection : Modulus::norm;
@@ -111,29 +112,32 @@ py::tuple calibrate(const py::object& samples, const py::object& magnitude, cons
   q.suggest = suggest;
   q.criterion = *parse_criterion(criterion);
   q.regions = regions;
-  q.model = *parse_model(model);
-  cli::check_calibration_request(q);
+  if (model != "auto") q.model = *parse_model(model);
+  q.rate = rate;
+  commands::check_calibrate_request(q);
   std::vector<Column> columns = columns_of("samples", samples, {"ix", "iy", "iz"});
   const py::ssize_t rows = columns.front().second.shape(0);
-  cli::CalibrationInput input;
+  commands::CalibrationInput input;
   if (!time.is_none()) {
     if (!position.is_none() || !nominal.is_none())
       throw UsageError("time makes samples a raw log, whose positions are its static intervals: give no "
                        "position or nominal with it");
     columns.insert(columns.begin(), column_of("time", time, "t", rows));
-    input = cli::calibration_input(raw_log_from_table(table_of(q.file, columns, true)), q);
+    input = commands::calibration_input(raw_log_from_table(table_of(q.file, columns, true)), q);
   } else {
     if (!position.is_none()) columns.push_back(column_of("position", position, "position", rows));
     if (!nominal.is_none())
       for (auto& c : columns_of("nominal", nominal, {"x", "y", "z"})) columns.push_back(std::move(c));
     input.data = measurements_from_table(table_of(q.file, columns, false), q.modulus == Modulus::projection);
   }
-  cli::Report r;
+  std::optional<commands::CalibrateResult> r;
   {
     py::gil_scoped_release free;
-    r = cli::calibrate_report(q, std::move(input));
+    r = commands::calibrate(q, std::move(input));
   }
-  return py::make_tuple(to_python(r.json), py::list(), r.status);
+  py::list warnings;
+  for (const auto& w : r->warnings) warnings.append(py::make_tuple(w.subject, w.message));
+  return py::make_tuple(to_python(commands::to_json(*r)), warnings, r->status());
 }
 
 }  // namespace
