@@ -8,7 +8,9 @@
 #include <string>
 #include <vector>
 
+#include "commands/option_table.hpp"
 #include "commands/progress.hpp"
+#include "commands/values.hpp"
 #include "commands/warning.hpp"
 #include "numeric/calibration/any_units.hpp"
 #include "numeric/calibration/outlier_samples.hpp"
@@ -36,6 +38,7 @@ struct CalibrateRequest {
   CriterionKind criterion = CriterionKind::D;
   std::vector<std::string> regions;  // where positions may be added; none: the sphere
   std::optional<ModelKind> model;    // empty: auto, the richest linear model the layout carries
+  std::optional<CsvTable> table;     // the data given as columns (Python), instead of reading `file`
 };
 
 // What the data held: positions, and for a raw log how they were found.
@@ -105,6 +108,12 @@ CalibrationInput read_calibration_input(const CalibrateRequest& request);
 // From a raw log: its static intervals become positions; InputError when too few are found (the
 // message says what would help for this log), warnings for dropouts and saturation.
 CalibrationInput calibration_input(RawLog log, const CalibrateRequest& request);
+
+// --measurements FILE --magnitude M|auto [--model auto|NAME] [--modulus ...] [--format ...] [--rate HZ] [--still S]
+// [--window W] [--threshold-factor K] [--min-interval T] [--weights ...] [--keep-outliers] [--suggest K]
+// [--criterion C] [--region SPEC]... [--out FILE] [--json]
+const CommandTable& calibrate_table();
+CalibrateRequest calibrate_request(const Values& values);
 
 // UsageError: an explicit model the layout cannot carry (naming the parameters and the model that
 // would work). InputError: data that cannot be calibrated, or a fit that is not finite.

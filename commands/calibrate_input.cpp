@@ -48,7 +48,28 @@ std::string too_few_message(const IntervalDetection& d, const StaticIntervalOpti
 
 }  // namespace
 
+namespace {
+
+// Bench data or a raw log given as columns (Python): the same checks as a file's.
+CalibrationInput input_from_table(const CalibrateRequest& o, const CsvTable& table) {
+  if (o.rate > 0 || is_raw_log(table)) {
+    if (table.has("position"))
+      throw InputError(o.file, 1, "a 'position' column makes this bench data, which --rate does not apply to");
+    return calibration_input(raw_log_from_table(table, o.rate), o);
+  }
+  for (const auto& row : table.rows)
+    for (std::size_t c = 0; c < row.values.size(); ++c)
+      if (!std::isfinite(row.values[c]))
+        throw InputError(o.file, row.line, "value in column " + table.columns[c] + " is not finite");
+  CalibrationInput in;
+  in.data = measurements_from_table(table, o.modulus == Modulus::projection);
+  return in;
+}
+
+}  // namespace
+
 CalibrationInput read_calibration_input(const CalibrateRequest& o) {
+  if (o.table) return input_from_table(o, *o.table);
   const bool need_nominal = o.modulus == Modulus::projection;
   const std::string text = read_text_file(o.file);
   if (o.format == "text" || (o.format == "auto" && looks_like_text_log(text)))

@@ -1,6 +1,7 @@
 // Shared options (common_options.hpp).
 #include "commands/common_options.hpp"
 
+#include <charconv>
 #include <stdexcept>
 
 #include "numeric/program/catalogue.hpp"
@@ -20,6 +21,12 @@ std::vector<std::string> model_names() {
 }
 
 std::vector<std::string> local_solver_names() { return {"auto", "newton", "lbfgs", "ipopt"}; }
+
+std::string shortest_text(double x) {
+  char buffer[32];
+  const auto end = std::to_chars(buffer, buffer + sizeof buffer, x).ptr;
+  return std::string(buffer, end);
+}
 
 std::string criterion_names_text() { return scalcal::criterion_names(", "); }
 

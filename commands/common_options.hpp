@@ -21,6 +21,7 @@ std::vector<std::string> criterion_names();  // the registry's, in its order
 std::vector<std::string> model_names();
 std::vector<std::string> local_solver_names();  // auto, newton, lbfgs, ipopt
 std::string criterion_names_text();              // "D, A, E, S"
+std::string shortest_text(double x);             // the shortest text that reads back to x ("0.5")
 
 // --criterion: every registered criterion, with its normalised form in the help ("D = N^9 det K").
 Option criterion_option(const std::string& fallback = "D");

@@ -8,6 +8,7 @@
 #include <Eigen/SVD>
 #include <nlohmann/json.hpp>
 
+#include "commands/common_options.hpp"
 #include "numeric/io/csv_table.hpp"
 #include "numeric/io/input_error.hpp"
 #include "numeric/io/raw_log.hpp"
@@ -53,6 +54,11 @@ FullCorrection read_calibration(const std::string& file, bool force, Warnings& w
   } catch (const nlohmann::json::parse_error& e) {
     throw InputError(file, 0, std::string("not a JSON object written by `calibrate --out`: ") + e.what());
   }
+  return calibration_of(Json(j), file, force, warnings);
+}
+
+FullCorrection calibration_of(const Json& document, const std::string& file, bool force, Warnings& warnings) {
+  const nlohmann::json j = nlohmann::json::parse(document.dump(-1, ' ', false, Json::error_handler_t::replace));
   if (j.is_object() && j.contains("model") && j.contains("offset") && (!j.contains("matrix") || j["matrix"].is_null()))
     throw InputError(file, 0, "the " + j["model"].dump() + " calibration has no linear correction (its cubic term "
                               "makes the correction nonlinear); `correct` applies linear ones only");
@@ -77,9 +83,10 @@ FullCorrection read_calibration(const std::string& file, bool force, Warnings& w
   return c;
 }
 
-CorrectResult correct(const CorrectRequest& q) {
-  CorrectResult out;
-  out.correction = read_calibration(q.calibration, q.force, out.warnings);
+namespace {
+
+CsvTable read_data(const CorrectRequest& q) {
+  if (q.table) return *q.table;
   const std::string text = read_text_file(q.file);
   TableFormat f;
   f.nonfinite_allowed = true;
@@ -87,7 +94,63 @@ CorrectResult correct(const CorrectRequest& q) {
     f.whitespace = true;
     f.columns = {"t", "ix", "iy", "iz"};
   }
-  const CsvTable table = parse_table(text, q.file, f);
+  return parse_table(text, q.file, f);
+}
+
+}  // namespace
+
+const CommandTable& correct_table() {
+  Option calibration = text_option("--calibration", "CAL.json", "a calibration written by `scalcal calibrate ... --out CAL.json`",
+                                   "file path", kRequired);
+  calibration.takes_document = true;
+  Option measurements = text_option("--measurements", "FILE",
+                                    "raw data: CSV with ix,iy,iz (and a time column or position, kept), or text t ix iy iz",
+                                    "file path", kRequired);
+  measurements.takes_columns = true;
+  static const CommandTable table{
+      "correct",
+      "apply a calibration to raw data: corrected x, y, z and modulus (refuses one that did not converge)",
+      21,
+      {calibration, measurements,
+       choice_option("--format", {"auto", "csv", "text"},
+                     "the file: auto (text when the first line starts with a number), csv, or text (t ix iy iz)", "auto"),
+       flag_option("--force",
+                   "apply a calibration that would be refused (its fit did not converge, or its matrix is ill-conditioned)"),
+       out_option("write the corrected CSV there instead of to standard output")}};
+  return table;
+}
+
+CorrectRequest correct_request(const Values& v) {
+  CorrectRequest q;
+  q.calibration = v.text("--calibration");
+  q.file = v.text("--measurements");
+  q.format = v.text("--format");
+  q.force = v.flag("--force");
+  if (const auto it = v.documents.find("--calibration"); it != v.documents.end()) q.calibration_document = it->second;
+  if (const auto it = v.tables.find("--measurements"); it != v.tables.end()) q.table = it->second;
+  return q;
+}
+
+Json to_json(const CorrectResult& r) {
+  Json t = Json::array(), position = Json::array(), x = Json::array(), y = Json::array(), z = Json::array(),
+       modulus = Json::array();
+  for (const auto& row : r.rows) {
+    t.push_back(row.t), position.push_back(row.position);
+    x.push_back(row.corrected(0)), y.push_back(row.corrected(1)), z.push_back(row.corrected(2));
+    modulus.push_back(row.modulus);
+  }
+  Json j = Json::object();
+  if (r.has_t) j["t"] = t;
+  if (r.has_position) j["position"] = position;
+  j["x"] = x, j["y"] = y, j["z"] = z, j["modulus"] = modulus;
+  return j;
+}
+
+CorrectResult correct(const CorrectRequest& q) {
+  CorrectResult out;
+  out.correction = q.calibration_document ? calibration_of(*q.calibration_document, q.calibration, q.force, out.warnings)
+                                          : read_calibration(q.calibration, q.force, out.warnings);
+  const CsvTable table = read_data(q);
   for (const char* col : {"ix", "iy", "iz"})
     if (!table.has(col)) throw InputError(q.file, 1, std::string("missing column '") + col + "' (need ix,iy,iz)");
   const int ct = time_column(table), cp = table.column("position");

@@ -6,7 +6,13 @@
 #include <string>
 #include <vector>
 
+#include <optional>
+
+#include "commands/json.hpp"
+#include "commands/option_table.hpp"
+#include "commands/values.hpp"
 #include "commands/warning.hpp"
+#include "numeric/io/csv_table.hpp"
 #include "numeric/calibration/full_correction.hpp"
 
 namespace scalcal::commands {
@@ -20,6 +26,8 @@ struct CorrectRequest {
   std::string file;          // the raw data
   std::string format = "auto";  // auto, csv or text
   bool force = false;        // apply a calibration that would be refused, with a warning
+  std::optional<Json> calibration_document;  // the calibration given as an object (Python), not read
+  std::optional<CsvTable> table;             // the raw data given as columns (Python), not read
 };
 
 struct CorrectedRow {
@@ -37,7 +45,16 @@ struct CorrectResult {
 
 // Reads and checks a calibration file. InputError for a file that is not one, or that is refused.
 FullCorrection read_calibration(const std::string& file, bool force, Warnings& warnings);
+// The same checks on the calibration as an object (`name` in messages).
+FullCorrection calibration_of(const Json& document, const std::string& name, bool force, Warnings& warnings);
+
+// --calibration CAL.json --measurements FILE [--format auto|csv|text] [--force] [--out FILE]
+const CommandTable& correct_table();
+CorrectRequest correct_request(const Values& values);
 
 CorrectResult correct(const CorrectRequest& request);
+
+// The corrected columns: t and position when the data had them, x, y, z, modulus.
+Json to_json(const CorrectResult& result);
 
 }  // namespace scalcal::commands

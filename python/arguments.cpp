@@ -4,6 +4,7 @@
 #include <charconv>
 
 #include "commands/usage_error.hpp"
+#include "numeric/io/csv_table.hpp"
 #include "python/from_numpy.hpp"
 
 namespace py = pybind11;
@@ -43,8 +44,25 @@ std::string value_text(const Option& o, py::handle v) {
         wrong_type(o, "a number", v);
       return shortest(v.cast<double>());
     default:
+      // A number where the option takes text (--magnitude 9.81|auto) is written as the CLI would read it.
+      if (!py::isinstance<py::bool_>(v) && (py::isinstance<py::int_>(v) || py::isinstance<py::float_>(v)))
+        return py::isinstance<py::int_>(v) ? py::str(v).cast<std::string>() : shortest(v.cast<double>());
       return text_of(o, v);
   }
+}
+
+// A data file given as a mapping column name -> 1-D array, as a CSV file would give it (rows from 1);
+// dropouts (NaN) are kept for the reader to count, as a raw log's are.
+CsvTable table_of_columns(const std::string& argument, const py::dict& columns) {
+  std::vector<Column> cols;
+  py::ssize_t rows = -1;
+  for (const auto& [key, value] : columns) {
+    const std::string name = py::str(key).cast<std::string>();
+    if (rows < 0) rows = py::len(value);
+    cols.push_back(column_of(argument + "[" + name + "]", value, name, rows));
+  }
+  if (cols.empty()) throw UsageError(argument + ": must name at least one column");
+  return table_of(argument, cols, true);
 }
 
 void set(commands::Values& values, const Option& o, py::handle v) {
@@ -54,6 +72,19 @@ void set(commands::Values& values, const Option& o, py::handle v) {
       values.set_flag(o.name, v.cast<bool>());
     } else if (o.kind == OptionKind::repeated && !py::isinstance<py::str>(v) && py::isinstance<py::sequence>(v)) {
       for (const auto& item : v.cast<py::sequence>()) values.set(o.name, value_text(o, item));
+    } else if (o.takes_columns && py::isinstance<py::dict>(v)) {
+      values.tables[o.name] = table_of_columns(o.python_name(), v.cast<py::dict>());
+      values.set(o.name, o.python_name());
+    } else if (o.takes_document && py::isinstance<py::dict>(v)) {
+      // NumPy arrays and scalars as JSON lists and numbers (a calibration straight from calibrate()).
+      const py::cpp_function plain([](py::handle x) -> py::object {
+        if (py::hasattr(x, "tolist")) return x.attr("tolist")();
+        throw py::type_error("not a JSON value: " + type_name(x));
+      });
+      const std::string text =
+          py::str(py::module_::import("json").attr("dumps")(v, py::arg("default") = plain)).cast<std::string>();
+      values.documents[o.name] = commands::Json::parse(text);
+      values.set(o.name, o.python_name());
     } else if (o.takes_positions && !py::isinstance<py::str>(v) && !py::hasattr(v, "__fspath__")) {
       values.program = program_of(v, o.python_name());  // an (N, 3) array of directions
       values.set(o.name, "positions");

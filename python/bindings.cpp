@@ -5,6 +5,9 @@
 #include <type_traits>
 
 #include "commands/augment.hpp"
+#include "commands/calibrate.hpp"
+#include "commands/calibrate_json.hpp"
+#include "commands/correct.hpp"
 #include "commands/catalogue.hpp"
 #include "commands/certify.hpp"
 #include "commands/evaluate.hpp"
@@ -16,6 +19,9 @@
 #include "commands/random.hpp"
 #include "commands/simulate.hpp"
 #include "commands/sweep.hpp"
+#ifdef SCALCAL_PYTHON_REPRODUCE
+#include "experiments/reproduce/command.hpp"
+#endif
 
 namespace scalcal::python {
 namespace {
@@ -60,12 +66,23 @@ Binding sweep_binding() {
           }};
 }
 
+// A calibration's status is the CLI's: 1 when the fit did not converge.
+Binding calibrate_binding() {
+  return {&commands::calibrate_table(), [](const Values& v, const Progress& p) {
+            const auto r = commands::calibrate(commands::calibrate_request(v), p);
+            return Output{commands::to_json(r), r.warnings, r.status()};
+          }};
+}
+
 }  // namespace
 
 const std::vector<Binding>& bindings() {
   static const std::vector<Binding> all = {
       bind(commands::catalogue_table(), [](const Values&) { return 0; }, [](int) { return commands::catalogue(); }),
       bind(commands::evaluate_table(), commands::evaluate_request, commands::evaluate),
+      calibrate_binding(),
+      bind(commands::correct_table(), commands::correct_request,
+           [](const commands::CorrectRequest& q) { return commands::correct(q); }),
       bind(commands::optimize_table(), commands::optimize_request, commands::optimize),
       bind(commands::random_table(), commands::random_request, commands::random_programs),
       bind(commands::simulate_table(), commands::simulate_request, commands::simulate),
@@ -77,6 +94,13 @@ const std::vector<Binding>& bindings() {
            [](const commands::FamilyRequest& q) { return commands::family(q); }),
       bind(commands::limits_table(), commands::limits_request, commands::limits),
       bind(commands::jig_table(), commands::jig_request, commands::jig),
+#ifdef SCALCAL_PYTHON_REPRODUCE
+      {&reproduce::reproduce_table(),
+       [](const Values& v, const Progress&) {
+         return Output{reproduce::to_json(reproduce::run(reproduce::reproduce_options(v), reproduce::ProgressMode::off)),
+                       {}, 0};
+       }},
+#endif
   };
   return all;
 }

@@ -13,8 +13,6 @@
 #include <pybind11/stl.h>
 
 #include "commands/usage_error.hpp"
-#include "commands/calibrate.hpp"
-#include "commands/calibrate_json.hpp"
 #include "numeric/io/input_error.hpp"
 #include "numeric/io/measurements_csv.hpp"
 #include "numeric/program/catalogue.hpp"
@@ -60,6 +58,8 @@ py::list tables() {
       d["default_text"] = o.fallback_text;  // a default stated in words ("0 = all cores")
       d["choices"] = o.choices;
       d["positions"] = o.takes_positions;
+      d["columns"] = o.takes_columns;
+      d["document"] = o.takes_document;
       options.append(d);
     }
     py::dict d;
@@ -90,56 +90,6 @@ py::tuple run(const std::string& name, const py::tuple& args, const py::dict& kw
   return py::make_tuple(to_python(out->json), warnings, out->status);
 }
 
-// |I| as the CLI reads it: "auto", or a number in its shortest round-trip text.
-std::string magnitude_of(const py::object& magnitude) {
-  if (py::isinstance<py::str>(magnitude)) return magnitude.cast<std::string>();
-  char buffer[32];
-  const auto end = std::to_chars(buffer, buffer + sizeof buffer, magnitude.cast<double>()).ptr;
-  return std::string(buffer, end);
-}
-
-// The calibration from arrays (until calibrate takes its table's arguments here too).
-py::tuple calibrate(const py::object& samples, const py::object& magnitude, const py::object& position,
-                    const py::object& nominal, const py::object& time, const std::string& modulus,
-                    const std::string& weights, bool keep_outliers, int suggest, const std::string& criterion,
-                    const std::vector<std::string>& regions, const std::string& model, double rate) {
-  commands::CalibrateRequest q;
-  q.file = "samples";
-  q.magnitude = magnitude_of(magnitude);
-  q.modulus = modulus == "projection" ? Modulus::projection : Modulus::norm;
-  q.weights = weights;
-  q.keep_outliers = keep_outliers;
-  q.suggest = suggest;
-  q.criterion = *parse_criterion(criterion);
-  q.regions = regions;
-  if (model != "auto") q.model = *parse_model(model);
-  q.rate = rate;
-  commands::check_calibrate_request(q);
-  std::vector<Column> columns = columns_of("samples", samples, {"ix", "iy", "iz"});
-  const py::ssize_t rows = columns.front().second.shape(0);
-  commands::CalibrationInput input;
-  if (!time.is_none()) {
-    if (!position.is_none() || !nominal.is_none())
-      throw UsageError("time makes samples a raw log, whose positions are its static intervals: give no "
-                       "position or nominal with it");
-    columns.insert(columns.begin(), column_of("time", time, "t", rows));
-    input = commands::calibration_input(raw_log_from_table(table_of(q.file, columns, true)), q);
-  } else {
-    if (!position.is_none()) columns.push_back(column_of("position", position, "position", rows));
-    if (!nominal.is_none())
-      for (auto& c : columns_of("nominal", nominal, {"x", "y", "z"})) columns.push_back(std::move(c));
-    input.data = measurements_from_table(table_of(q.file, columns, false), q.modulus == Modulus::projection);
-  }
-  std::optional<commands::CalibrateResult> r;
-  {
-    py::gil_scoped_release free;
-    r = commands::calibrate(q, std::move(input));
-  }
-  py::list warnings;
-  for (const auto& w : r->warnings) warnings.append(py::make_tuple(w.subject, w.message));
-  return py::make_tuple(to_python(commands::to_json(*r)), warnings, r->status());
-}
-
 }  // namespace
 }  // namespace scalcal::python
 
@@ -163,5 +113,4 @@ PYBIND11_MODULE(_scalcal, m) {
   m.def("run", &sp::run, py::arg("name"), py::arg("args"), py::arg("kwargs"));
   m.def("program", [](const std::string& name) { return sp::to_python(scalcal::commands::program_json(scalcal::resolve_program(name))); },
         py::arg("name"));
-  m.def("calibrate", &sp::calibrate);
 }

@@ -80,7 +80,9 @@ def _make(table):
         default = inspect.Parameter.empty if o["required"] else _default(o)
         params.append(inspect.Parameter(o["name"], kind, default=default,
                                         annotation=_KIND_TYPES.get(o["kind"], str)))
-        extra = " Also an (N, 3) array of directions." if o["positions"] else ""
+        extra = (" Also an (N, 3) array of directions." if o["positions"] else
+                 " Also a mapping column name -> 1-D array (the file's columns)." if o["columns"] else
+                 " Also the object itself (a dict)." if o["document"] else "")
         choices = f" One of {', '.join(o['choices'])}." if o["choices"] else ""
         lines.append(f"    {o['name']} ({o['option']}): {o['help']}{choices}{extra}")
     # Required keyword-only parameters may follow optional ones; positional ones come first.
@@ -107,29 +109,3 @@ def program(name):
         return _scalcal.program(name)
     except _scalcal.InputError as e:
         raise InputError(str(e)) from None
-
-
-def calibrate(samples, magnitude, *, position=None, nominal=None, time=None, rate=None, modulus="norm",
-              weights="auto", keep_outliers=False, suggest=3, criterion="D", region=None, model="auto"):
-    """Scalar calibration (``scalcal calibrate --json``) from arrays: samples (M, 3) raw outputs; position (M,)
-    labels grouping them; nominal (M, 3) nominal directions; time (M,) seconds, which makes samples a raw log
-    (or rate, in Hz, for a log without times); magnitude |I| in the field's units, or "auto"."""
-    regions = [] if region is None else [region] if isinstance(region, str) else list(region)
-    if rate is not None and time is None:
-        import numpy as np
-        time = np.arange(len(samples)) / float(rate)
-    try:
-        result, warned, status = _scalcal.calibrate(samples, magnitude, position, nominal, time, modulus, weights,
-                                                    keep_outliers, suggest, criterion, regions, model, 0.0)
-    except _scalcal.InputError as e:
-        raise InputError(str(e)) from None
-    except _scalcal.UsageError as e:
-        raise UsageError(str(e)) from None
-    for subject, message in warned:
-        _warnings.warn(f"{subject}: {message}" if subject else message, ScalcalWarning, stacklevel=2)
-    if status == 1:
-        raise ConvergenceError("calibrate: the fit did not converge", result)
-    return result
-
-
-__all__.append("calibrate")

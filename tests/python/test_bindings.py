@@ -130,15 +130,17 @@ def test_calibrate_grouped_samples(tmp_path):
         f.write("ix,iy,iz,position,x,y,z\n")
         for s, p, n in zip(samples, labels, nominal):
             f.write(",".join(repr(float(v)) for v in (*s, p, *n)) + "\n")
-    r = scalcal.calibrate(samples, 9.81, position=labels)
+    columns = {"ix": samples[:, 0], "iy": samples[:, 1], "iz": samples[:, 2], "position": labels}
+    with_nominal = dict(columns, x=nominal[:, 0], y=nominal[:, 1], z=nominal[:, 2])
+    r = scalcal.calibrate(measurements=columns, magnitude=9.81)
     same(r, cli_json("calibrate", "--measurements", str(path), "--magnitude", "9.81"))
-    assert r["excluded_samples"] == [] and r["converged"]
-    same(scalcal.calibrate(samples, "auto", position=labels),
+    assert len(r["excluded_samples"]) == 0 and r["converged"]
+    same(scalcal.calibrate(measurements=path, magnitude="auto"),
          cli_json("calibrate", "--measurements", str(path), "--magnitude", "auto"))
-    same(scalcal.calibrate(samples, 9.81, position=labels, nominal=nominal, modulus="projection", suggest=1),
+    same(scalcal.calibrate(measurements=with_nominal, magnitude=9.81, modulus="projection", suggest=1),
          cli_json("calibrate", "--measurements", str(path), "--magnitude", "9.81", "--modulus", "projection",
                   "--suggest", "1"))
-    same(scalcal.calibrate(samples, 9.81, position=labels, model="axis6"),
+    same(scalcal.calibrate(measurements=columns, magnitude=9.81, model="axis6"),
          cli_json("calibrate", "--measurements", str(path), "--magnitude", "9.81", "--model", "axis6"))
 
 
@@ -146,7 +148,8 @@ def test_calibrate_raw_log():
     # The real log of the README, read by NumPy: a text log has no header, so its lines are the rows.
     path = os.path.join(DATA, "xsens_acc.txt")
     log = np.loadtxt(path)
-    r = scalcal.calibrate(log[:, 1:], 9.81744, time=log[:, 0])
+    r = scalcal.calibrate(measurements={"t": log[:, 0], "ix": log[:, 1], "iy": log[:, 2], "iz": log[:, 3]},
+                          magnitude=9.81744)
     same(r, cli_json("calibrate", "--measurements", path, "--magnitude", "9.81744"))
     assert len(r["intervals"]) >= 9
 
