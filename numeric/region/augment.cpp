@@ -1,3 +1,5 @@
+// Augmenting a lab's program: greedy and exchange on the region's grid, then Ipopt inside the zones;
+// one body per model (the criterion comes in as a CriterionOps).
 #include "numeric/region/augment.hpp"
 
 #include <cmath>
@@ -6,29 +8,31 @@
 #include "numeric/synthesis/exchange.hpp"
 #include "numeric/region/region_synthesis.hpp"
 #include "numeric/synthesis/ipopt_local.hpp"
+#include "numeric/synthesis/synthesis_models.hpp"
 #include "numeric/synthesis/workers.hpp"
 
 namespace scalcal {
 namespace {
 
-template <Criterion C, class Model>
-AugmentedProgram augment_with(const Program& given, int add, const Region& region, ModelKind model) {
+template <class Model>
+AugmentedProgram augment_with(const CriterionOps<Model>& criterion, const Program& given, int add, const Region& region,
+                              ModelKind model) {
   AugmentedProgram out;
-  out.value_before = given.size() > 0 ? criterion_value<C, Model>(given) : INFINITY;
+  out.value_before = given.size() > 0 ? criterion_value(criterion, given) : INFINITY;
   if (!std::isfinite(out.value_before)) out.value_before = INFINITY;
   // Greedy on the grid (ranked through a ridge while the program is rank-deficient, so that what a
   // candidate makes identifiable decides), then exchanges among the added positions.
   const std::vector<Vec3> candidates = region.grid(region.grid_step_for(kRegionGridCandidates));
-  const ExchangeResult ex = greedy_exchange(CriterionKind::of<C>(), candidates, given.positions, add, model);
+  const ExchangeResult ex = greedy_exchange(*criterion.kind, candidates, given.positions, add, model);
   Program best{ex.positions};
-  double value = criterion_value<C, Model>(best);
+  double value = criterion_value(criterion, best);
   // Then the added positions move continuously inside their zones, the given ones held fixed
   // (in a worker process: Ipopt's MUMPS state must not be inherited by later forks).
   if (!region.zones.empty() && std::isfinite(value)) {
     PositionBounds bounds = position_bounds(region, ex.positions);
     for (int i = 0; i < given.size(); ++i) bounds[static_cast<std::size_t>(i)].kind = PositionBound::Kind::Fixed;
     LocalResult polished = run_in_workers(1, 1, best.size(), [&](int) {
-      return optimize_with_ipopt<C, Model>(best, {}, &bounds);
+      return ipopt_local<Model>(criterion, best, {}, &bounds);
     })[0];
     for (std::size_t i = 0; i < bounds.size(); ++i) {
       Vec3& x = polished.program.positions[i];
@@ -36,7 +40,7 @@ AugmentedProgram augment_with(const Program& given, int add, const Region& regio
       if (bounds[i].kind == PositionBound::Kind::Zone)
         x = clamp_to_zone(region.zones[static_cast<std::size_t>(region.deepest_zone(ex.positions[i]))], x);
     }
-    const double v = criterion_value<C, Model>(polished.program);
+    const double v = criterion_value(criterion, polished.program);
     if (v < value) {
       best = polished.program;
       value = v;
@@ -53,10 +57,15 @@ AugmentedProgram augment_with(const Program& given, int add, const Region& regio
 
 AugmentedProgram augment_program(const Program& given, int add, CriterionKind criterion, const Region& region,
                                  ModelKind model) {
-  return visit_model(model, [&](auto M) {
-    return visit_criterion(criterion, [&](auto C) {
-      return augment_with<decltype(C), decltype(M)>(given, add, region, model);
-    });
+  return visit_model(model, [&](auto M) -> AugmentedProgram {
+    using Model = decltype(M);
+    if constexpr (kSynthesisBuilt<Model>) {
+      return visit_criterion(criterion, [&](auto C) {
+        return augment_with<Model>(criterion_ops<decltype(C), Model>(), given, add, region, model);
+      });
+    } else {
+      throw_no_synthesis(Model::name);
+    }
   });
 }
 
