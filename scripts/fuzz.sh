@@ -1,22 +1,28 @@
 #!/usr/bin/env bash
 # libFuzzer on every reader (tests/fuzz/), built with clang, AddressSanitizer and
-# UndefinedBehaviorSanitizer into build-fuzz/, each run for SECONDS (default 60) from a seed corpus
-# of the CSV files the repository already has. A crash, a sanitizer report, an input that takes
-# over 10 s or a failed round trip stops the run and exits non-zero; the input is kept in
-# build-fuzz/findings/.
+# UndefinedBehaviorSanitizer, each run for SECONDS (default 60) from a seed corpus of the CSV files
+# the repository already has. The fuzzers are built in build-asan/ when scripts/sanitize.sh has
+# configured it (its objects carry the fuzzer's instrumentation), else in build-fuzz/. A crash, a
+# sanitizer report, an input that takes over 10 s or a failed round trip stops the run and exits
+# non-zero; the input is kept in BUILD/findings/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds="${1:-60}"
 bash scripts/install-deps.sh
-flags="-O1 -g1 -fno-omit-frame-pointer -fsanitize=address,undefined -fno-sanitize-recover=all -fsanitize=fuzzer-no-link"
-cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=None -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_CXX_FLAGS="$flags" \
-  -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" -DSCALCAL_FUZZ=ON -DSCALCAL_MPI=OFF -DSCALCAL_PYTHON=OFF >/dev/null
+build=build-fuzz
+if grep -qs '^SCALCAL_FUZZ:BOOL=ON' build-asan/CMakeCache.txt; then
+  build=build-asan
+else
+  flags="-O1 -g1 -fno-omit-frame-pointer -fsanitize=address,undefined -fno-sanitize-recover=all -fsanitize=fuzzer-no-link"
+  cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=None -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_CXX_FLAGS="$flags" \
+    -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" -DSCALCAL_FUZZ=ON -DSCALCAL_MPI=OFF -DSCALCAL_PYTHON=OFF >/dev/null
+fi
 targets=(fuzz_program_csv fuzz_measurements_csv fuzz_catalogue_name fuzz_region_spec)
-cmake --build build-fuzz -j"$(nproc)" $(printf -- '--target %s ' "${targets[@]}")
+cmake --build "$build" -j"$(nproc)" $(printf -- '--target %s ' "${targets[@]}")
 
 # Seeds: the programs and bench files in the repository, and a few catalogue names.
-corpus=build-fuzz/corpus
-rm -rf "$corpus" && mkdir -p "$corpus"/{fuzz_program_csv,fuzz_measurements_csv,fuzz_catalogue_name,fuzz_region_spec} build-fuzz/findings
+corpus="$build"/corpus
+rm -rf "$corpus" && mkdir -p "$corpus"/{fuzz_program_csv,fuzz_measurements_csv,fuzz_catalogue_name,fuzz_region_spec} "$build"/findings
 find data experiments/docs -name '*.csv' | while read -r f; do
   if head -c 4096 "$f" | grep -q 'ix'; then
     for m in 0 1; do { printf "\\x3$m"; cat "$f"; } >"$corpus/fuzz_measurements_csv/$m-$(basename "$f")"; done
@@ -41,12 +47,12 @@ export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 total=0
 for t in "${targets[@]}"; do
-  log=build-fuzz/$t.log
-  build-fuzz/tests/fuzz/"$t" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=4096 -max_len=65536 \
-    -print_final_stats=1 -artifact_prefix=build-fuzz/findings/"$t"- "$corpus/$t" >"$log" 2>&1 || true
+  log="$build"/$t.log
+  "$build"/tests/fuzz/"$t" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=4096 -max_len=65536 \
+    -print_final_stats=1 -artifact_prefix="$build"/findings/"$t"- "$corpus/$t" >"$log" 2>&1 || true
   runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log")
   echo "scalcal fuzz: $t: ${runs:-0} inputs in $seconds s, corpus $(ls "$corpus/$t" | wc -l) files" >&2
-  if [ -n "$(ls build-fuzz/findings/"$t"-* 2>/dev/null)" ] || [ -z "$runs" ]; then
+  if [ -n "$(ls "$build"/findings/"$t"-* 2>/dev/null)" ] || [ -z "$runs" ]; then
     grep -E 'ERROR|SUMMARY|Test unit written|==[0-9]+==' "$log" | head -20 >&2 || true
     echo "scalcal fuzz: $t failed (log: $log)" >&2
     exit 1

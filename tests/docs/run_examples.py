@@ -1,0 +1,88 @@
+"""Runs every example of a Markdown page and compares what it prints with what the page shows.
+
+An example is a line starting with "$ " inside a ```text or ```console block; the lines after it, up
+to the next "$ " line or the end of the block, are what it prints (stdout and stderr as a terminal
+shows them). In the expected text a line "..." stands for any number of lines, and "…" inside a line
+for any text (a timing, a path). Commands run in bash in a scratch folder that holds links to the
+repository's data/ and experiments/, with the build's `scalcal` first on PATH, so a page reads as a
+user types. Usage: run_examples.py SOURCE_DIR BUILD_DIR PAGE.md... (exit 1 on the first mismatch
+of each page, with both texts).
+"""
+import os
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+
+
+def examples(path):
+    """(line number, command, expected lines) for every example of the page."""
+    out, block, current = [], False, None
+    with open(path, encoding="utf-8") as f:
+        for number, line in enumerate(f, 1):
+            line = line.rstrip("\n")
+            if line.startswith("```"):
+                if block and current:
+                    out.append(current)
+                block = line.strip() in ("```text", "```console") and not block
+                current = None
+                continue
+            if not block:
+                continue
+            if line.startswith("$ "):
+                if current:
+                    out.append(current)
+                current = (number, line[2:], [])
+            elif current:
+                current[2].append(line)
+    return out
+
+
+def matches(expected, actual):
+    """True when the actual lines fit the expected ones ("..." lines, "…" inside lines)."""
+    def line_fits(pattern, text):
+        parts = [re.escape(p) for p in pattern.rstrip().split("…")]
+        return re.fullmatch(".*".join(parts), text.rstrip()) is not None
+
+    def fits(i, j):
+        if i == len(expected):
+            return j == len(actual)
+        if expected[i].strip() == "...":
+            return any(fits(i + 1, k) for k in range(j, len(actual) + 1))
+        return j < len(actual) and line_fits(expected[i], actual[j]) and fits(i + 1, j + 1)
+
+    return fits(0, 0)
+
+
+def main(source, build, pages):
+    work = tempfile.mkdtemp(prefix="scalcal_docs_")
+    for name in ("data", "experiments", "python"):
+        os.symlink(os.path.join(source, name), os.path.join(work, name))
+    env = dict(os.environ)
+    env["PATH"] = os.path.join(build, "experiments") + os.pathsep + env.get("PATH", "")
+    env["PYTHONPATH"] = os.path.join(build, "python")
+    env["SCALCAL_DATA"] = os.path.join(source, "data")
+    env["COLUMNS"] = "120"
+    failed = 0
+    try:
+        for page in pages:
+            for number, command, expected in examples(page):
+                run = subprocess.run(["bash", "-c", command], cwd=work, env=env, stdout=subprocess.PIPE,
+                                     stderr=subprocess.STDOUT, text=True, timeout=600)
+                actual = run.stdout.rstrip("\n").split("\n") if run.stdout.strip() else []
+                while expected and not expected[-1].strip():
+                    expected = expected[:-1]
+                if not matches(expected, actual):
+                    failed += 1
+                    print(f"{page}:{number}: $ {command}\n--- the page shows\n" + "\n".join(expected) +
+                          "\n--- the command printed\n" + "\n".join(actual) + "\n")
+                    break
+    finally:
+        shutil.rmtree(work, ignore_errors=True)
+    print(f"{len(pages)} page(s), {failed} mismatch(es)")
+    return 1 if failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1], sys.argv[2], sys.argv[3:]))
