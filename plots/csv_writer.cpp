@@ -1,3 +1,4 @@
+// The CSV file behind a figure (csv_writer.hpp).
 #include "plots/csv_writer.hpp"
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// A figure's gnuplot script, and gnuplot run on it without a shell (figure.hpp).
 #include "plots/figure.hpp"
 
 #include <fcntl.h>

@@ -1,3 +1,4 @@
+// NumPy arrays as the tables scalcal's readers check (from_numpy.hpp).
 #include "python/from_numpy.hpp"
 
 #include <cmath>

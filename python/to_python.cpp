@@ -1,3 +1,4 @@
+// A result's JSON object as Python values (to_python.hpp).
 #include "python/to_python.hpp"
 
 #include <cstdint>

@@ -1,3 +1,4 @@
+// Which limits a jig reaches, decided exactly from its face normals (jig_limits.hpp).
 #include "symbolic/jig_limits.hpp"
 
 #include <stdexcept>

@@ -1,3 +1,4 @@
+// The three orbits of the octahedral group with uniform projections, exactly (octahedral_orbits.hpp).
 #include "symbolic/octahedral_orbits.hpp"
 
 namespace scalcal::symbolic {

@@ -1,3 +1,4 @@
+// The subcommand registry, progress on a terminal and warnings on stderr (command.hpp).
 #include "experiments/cli/command.hpp"
 
 #include "experiments/cli/table_options.hpp"

@@ -1,3 +1,4 @@
+// The process group of a command: one process, or the ranks of an MPI job (mpi_ranks.hpp).
 #include "experiments/cli/mpi_ranks.hpp"
 
 #include <cstdlib>

@@ -1,3 +1,4 @@
+// Writing the CLI's files and stdout, each checked after closing (output_file.hpp).
 #include "experiments/cli/output_file.hpp"
 
 #include <cerrno>

@@ -1,3 +1,4 @@
+// The shared state of one `scalcal reproduce` run (context.hpp).
 #include "experiments/reproduce/context.hpp"
 
 #include <thread>

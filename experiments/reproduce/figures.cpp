@@ -1,3 +1,4 @@
+// What every figure stage shares: its CSV, its script and its REPORT.md section (figures.hpp).
 #include "experiments/reproduce/figures.hpp"
 
 #include "experiments/reproduce/format.hpp"

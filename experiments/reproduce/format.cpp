@@ -1,3 +1,4 @@
+// Numbers as REPORT.md and the pipeline's CSVs print them (format.hpp).
 #include "experiments/reproduce/format.hpp"
 
 #include <algorithm>

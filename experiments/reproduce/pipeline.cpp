@@ -1,3 +1,4 @@
+// The stages of `scalcal reproduce` in order, then REPORT.md (pipeline.hpp).
 #include "experiments/reproduce/pipeline.hpp"
 
 #include <chrono>

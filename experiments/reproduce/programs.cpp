@@ -1,3 +1,4 @@
+// The programs every figure draws from, computed once per run (programs.hpp).
 #include "experiments/reproduce/programs.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// A reproduce run's progress on stderr with the time left (progress.hpp).
 #include "experiments/reproduce/progress.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// REPORT.md, section by section (report.hpp).
 #include "experiments/reproduce/report.hpp"
 
 #include <fstream>

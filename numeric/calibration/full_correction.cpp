@@ -1,3 +1,4 @@
+// A calibration as a user applies it: physical = matrix (raw - offset) (full_correction.hpp).
 #include "numeric/calibration/full_correction.hpp"
 
 #include <cmath>

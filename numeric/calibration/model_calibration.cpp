@@ -1,3 +1,4 @@
+// Scalar calibration under any registered model (model_calibration.hpp).
 #include "numeric/calibration/model_calibration.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// Monte-Carlo validation of the estimator on simulated meters (monte_carlo.hpp).
 #include "numeric/calibration/monte_carlo.hpp"
 
 #include <algorithm>

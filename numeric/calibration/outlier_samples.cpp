@@ -1,3 +1,4 @@
+// Single bad samples inside otherwise good positions (outlier_samples.hpp).
 #include "numeric/calibration/outlier_samples.hpp"
 
 #include <algorithm>

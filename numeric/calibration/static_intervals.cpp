@@ -1,3 +1,4 @@
+// Static positions in a raw log, found from the log's own noise floor (static_intervals.hpp).
 #include "numeric/calibration/static_intervals.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// The fit of a 12-point program to the pentagonal 4-designs (pentagonal_match.hpp).
 #include "numeric/certify/pentagonal_match.hpp"
 
 #include <array>

@@ -1,3 +1,4 @@
+// The sentences that explain a rank-deficient or ill-conditioned program (identifiability.hpp).
 #include "numeric/criteria/identifiability.hpp"
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// Evaluation under a model chosen at run time (model_evaluation.hpp).
 #include "numeric/criteria/model_evaluation.hpp"
 
 namespace scalcal {

@@ -1,3 +1,4 @@
+// The strict CSV reader every file of scalcal goes through (csv_table.hpp).
 #include "numeric/io/csv_table.hpp"
 
 #include <algorithm>

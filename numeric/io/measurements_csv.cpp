@@ -1,3 +1,4 @@
+// Bench measurements from CSV: samples grouped by position (measurements_csv.hpp).
 #include "numeric/io/measurements_csv.hpp"
 
 #include <cmath>

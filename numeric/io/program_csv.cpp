@@ -1,3 +1,4 @@
+// Programs as CSV files, read and written (program_csv.hpp).
 #include "numeric/io/program_csv.hpp"
 
 #include <array>

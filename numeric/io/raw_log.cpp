@@ -1,3 +1,4 @@
+// A raw instrument log: time and the three raw outputs, sample by sample (raw_log.hpp).
 #include "numeric/io/raw_log.hpp"
 
 #include <cctype>

@@ -1,3 +1,4 @@
+// Newton's method on first-order conditions in MPFR, for every form of the polish (newton_least_squares.hpp).
 #include "numeric/polish/newton_least_squares.hpp"
 
 #include <algorithm>

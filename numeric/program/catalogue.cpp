@@ -1,3 +1,4 @@
+// The named programs and the resolution of a PROGRAM argument (catalogue.hpp).
 #include "numeric/program/catalogue.hpp"
 
 #include <charconv>

@@ -1,3 +1,4 @@
+// When two programs are the same program up to a criterion's symmetry (program_equivalence.hpp).
 #include "numeric/program/program_equivalence.hpp"
 
 #include <algorithm>

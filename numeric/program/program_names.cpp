@@ -1,3 +1,4 @@
+// The one registry of program names (program_names.hpp).
 #include "numeric/program/program_names.hpp"
 
 #include <mutex>

@@ -1,3 +1,4 @@
+// Optimal weights of a criterion on a finite candidate set (measure_weights.hpp).
 #include "numeric/region/measure_weights.hpp"
 
 #include <algorithm>

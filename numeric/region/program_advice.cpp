@@ -1,3 +1,4 @@
+// What a measured program is worth and what to add to it (program_advice.hpp).
 #include "numeric/region/program_advice.hpp"
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// The directions a bench can reach, parsed from --region specs (region.hpp).
 #include "numeric/region/region.hpp"
 
 #include <algorithm>

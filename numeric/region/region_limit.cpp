@@ -1,3 +1,4 @@
+// A criterion's limit on a region with its certified lower bound (region_limit.hpp).
 #include "numeric/region/region_limit.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// Random positions uniform on a restricted bench (region_sampler.hpp).
 #include "numeric/region/region_sampler.hpp"
 
 #include <cmath>

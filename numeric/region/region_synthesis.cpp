@@ -1,3 +1,4 @@
+// The best N-position program a restricted bench can do (region_synthesis.hpp).
 #include "numeric/region/region_synthesis.hpp"
 
 #include <chrono>

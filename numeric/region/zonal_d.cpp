@@ -1,3 +1,4 @@
+// The D limit on one cap or band, as a one-dimensional problem (zonal_d.hpp).
 #include "numeric/region/zonal_d.hpp"
 
 #include "numeric/region/region.hpp"

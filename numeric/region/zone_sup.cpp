@@ -1,3 +1,4 @@
+// A proven upper bound on sup |C h(x)|^2 over a zone (zone_sup.hpp).
 #include "numeric/region/zone_sup.hpp"
 
 #include <algorithm>

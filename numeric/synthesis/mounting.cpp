@@ -1,3 +1,4 @@
+// The best mounting of a meter in a jig, by Nelder-Mead over rotations (mounting.hpp).
 #include "numeric/synthesis/mounting.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// The seeds of every random choice, from splitmix64 (seeds.hpp).
 #include "numeric/synthesis/seeds.hpp"
 
 #include <thread>

@@ -1,3 +1,4 @@
+// Local optimisations in forked worker processes (workers.hpp).
 #include "numeric/synthesis/workers.hpp"
 
 #include <csignal>
