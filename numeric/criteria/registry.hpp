@@ -15,24 +15,23 @@
 #include "numeric/criteria/d_criterion.hpp"
 #include "numeric/criteria/e_criterion.hpp"
 #include "numeric/criteria/s_criterion.hpp"
+#ifdef SCALCAL_FIFTH_CRITERION
+#include "numeric/criteria/integrated_variance.hpp"
+#endif
+#include "numeric/model/type_list.hpp"
 
 namespace scalcal {
 
+// Every entry must be a Criterion (criterion.hpp): a missing piece is a compile error here.
 template <Criterion... Cs>
-struct CriterionList {
-  static constexpr int size = sizeof...(Cs);
-};
+using CriterionList = TypeList<Cs...>;
 
+#ifdef SCALCAL_FIFTH_CRITERION  // the test build of scripts/fifth_criterion.sh: I as a fifth criterion
+using RegisteredCriteria = CriterionList<DCriterion, ACriterion, ECriterion, SCriterion, IntegratedVarianceCriterion>;
+#else
 using RegisteredCriteria = CriterionList<DCriterion, ACriterion, ECriterion, SCriterion>;
+#endif
 
-namespace detail {
-template <class C, class... Cs>
-constexpr int index_in(CriterionList<Cs...>) {
-  int i = 0, found = -1;
-  ((std::is_same_v<C, Cs> ? (found = i, ++i) : ++i), ...);
-  return found;
-}
-}  // namespace detail
 
 class CriterionKind {
  public:
@@ -64,20 +63,6 @@ template <class... Cs>
 constexpr auto all_kinds(CriterionList<Cs...>) {
   return std::array<CriterionKind, sizeof...(Cs)>{CriterionKind::of<Cs>()...};
 }
-template <class F, class... Cs>
-auto visit(CriterionKind c, F&& f, CriterionList<Cs...>) {
-  using R = decltype(f(DCriterion{}));
-  if (c.index() < 0 || c.index() >= static_cast<int>(sizeof...(Cs))) throw std::out_of_range("visit_criterion: no such criterion");
-  if constexpr (std::is_void_v<R>) {
-    int i = 0;
-    ((i++ == c.index() ? (void)f(Cs{}) : (void)0), ...);
-  } else {
-    std::optional<R> out;
-    int i = 0;
-    ((i++ == c.index() ? (void)out.emplace(f(Cs{})) : (void)0), ...);
-    return R(std::move(*out));
-  }
-}
 }  // namespace detail
 
 inline constexpr auto kCriteria = detail::all_kinds(RegisteredCriteria{});
@@ -86,7 +71,7 @@ inline constexpr int kCriterionCount = RegisteredCriteria::size;
 // f(C{}) for the criterion type C behind c; every registered criterion must give the same type.
 template <class F>
 auto visit_criterion(CriterionKind c, F&& f) {
-  return detail::visit(c, std::forward<F>(f), RegisteredCriteria{});
+  return detail::visit_index(c.index(), std::forward<F>(f), "visit_criterion", RegisteredCriteria{});
 }
 
 inline std::string_view criterion_name(CriterionKind c) {

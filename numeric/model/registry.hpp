@@ -13,13 +13,13 @@
 #include "numeric/model/bias3.hpp"
 #include "numeric/model/cubic12.hpp"
 #include "numeric/model/paper9.hpp"
+#include "numeric/model/type_list.hpp"
 
 namespace scalcal {
 
+// Every entry must be a CalibrationModel (model.hpp): a missing piece is a compile error here.
 template <CalibrationModel... Ms>
-struct ModelList {
-  static constexpr int size = sizeof...(Ms);
-};
+using ModelList = TypeList<Ms...>;
 
 using RegisteredModels = ModelList<Paper9Model, Axis6Model, Bias3Model, Cubic12Model>;
 
@@ -35,42 +35,30 @@ class ModelKind {
 };
 inline constexpr ModelKind ModelKind::paper9 = ModelKind(0);
 
-namespace detail {
-template <class F, class... Ms>
-decltype(auto) visit_model(ModelKind m, F&& f, ModelList<Ms...>) {
-  using R = decltype(f(Paper9Model{}));
-  if (m.index() < 0 || m.index() >= static_cast<int>(sizeof...(Ms))) throw std::out_of_range("visit_model: no such model");
-  if constexpr (std::is_void_v<R>) {
-    int i = 0;
-    ((i++ == m.index() ? (void)f(Ms{}) : (void)0), ...);
-  } else {
-    std::optional<R> out;
-    int i = 0;
-    ((i++ == m.index() ? (void)out.emplace(f(Ms{})) : (void)0), ...);
-    return R(std::move(*out));
-  }
-}
-}  // namespace detail
 
 inline constexpr int kModelCount = RegisteredModels::size;
 
-namespace detail {
-template <class M, class... Ms>
-constexpr int index_in(ModelList<Ms...>) {
-  int i = 0, found = -1;
-  ((std::is_same_v<M, Ms> ? (found = i, ++i) : ++i), ...);
-  return found;
-}
-}  // namespace detail
 
 // The ModelKind index of a model type; -1 for a model that is not registered (one a test defines).
 template <class M>
 inline constexpr int kModelIndex = detail::index_in<M>(RegisteredModels{});
 
+namespace detail {
+template <int P, class First, class... Ms>
+auto model_with_parameters(TypeList<First, Ms...>) {
+  if constexpr (First::kParameters == P) return First{};
+  else return model_with_parameters<P>(TypeList<Ms...>{});
+}
+}  // namespace detail
+
+// The registered model with P parameters (each registered model has its own P).
+template <int P>
+using ModelWithParameters = decltype(detail::model_with_parameters<P>(RegisteredModels{}));
+
 // f(M{}) for the model type M behind m; every registered model must give the same type.
 template <class F>
 auto visit_model(ModelKind m, F&& f) {
-  return detail::visit_model(m, std::forward<F>(f), RegisteredModels{});
+  return detail::visit_index(m.index(), std::forward<F>(f), "visit_model", RegisteredModels{});
 }
 
 inline std::string_view model_name(ModelKind m) {
