@@ -35,8 +35,15 @@ struct Case {
       : name(std::move(n)), args(std::move(a)), expect(e), needles(std::move(words)), reference(std::move(clean)) {}
 };
 
+// gcc defines __SANITIZE_ADDRESS__; clang (scripts/sanitize.sh builds with it) answers __has_feature.
 #if defined(__SANITIZE_ADDRESS__)
-constexpr bool kAddressSanitizer = true;  // gcc -fsanitize=address (scripts/sanitize.sh)
+constexpr bool kAddressSanitizer = true;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+constexpr bool kAddressSanitizer = true;
+#else
+constexpr bool kAddressSanitizer = false;
+#endif
 #else
 constexpr bool kAddressSanitizer = false;
 #endif
