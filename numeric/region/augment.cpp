@@ -12,7 +12,8 @@ namespace scalcal {
 namespace {
 
 template <Criterion C, class Model>
-AugmentedProgram augment_with(const Program& given, int add, const Region& region, ModelKind model) {
+AugmentedProgram augment_with(const Program& given, int add, const Region& region, ModelKind model,
+                              const AugmentPolishOptions& options) {
   AugmentedProgram out;
   out.value_before = given.size() > 0 ? criterion_value<C, Model>(given) : INFINITY;
   if (!std::isfinite(out.value_before)) out.value_before = INFINITY;
@@ -20,42 +21,30 @@ AugmentedProgram augment_with(const Program& given, int add, const Region& regio
   // candidate makes identifiable decides), then exchanges among the added positions.
   const std::vector<Vec3> candidates = region.grid(region.grid_step_for(kRegionGridCandidates));
   const ExchangeResult ex = greedy_exchange(CriterionKind::of<C>(), candidates, given.positions, add, model);
-  Program best{ex.positions};
-  double value = criterion_value<C, Model>(best);
-  // Then the added positions move continuously inside their zones, the given ones held fixed
-  // (in a worker process: Ipopt's MUMPS state must not be inherited by later forks).
-  if (!region.zones.empty() && std::isfinite(value)) {
-    PositionBounds bounds = position_bounds(region, ex.positions);
-    for (int i = 0; i < given.size(); ++i) bounds[static_cast<std::size_t>(i)].kind = PositionBound::Kind::Fixed;
-    LocalResult polished = run_in_workers(1, 1, best.size(), [&](int) {
-      return optimize_with_ipopt<C, Model>(best, {}, &bounds);
-    })[0];
-    for (std::size_t i = 0; i < bounds.size(); ++i) {
-      Vec3& x = polished.program.positions[i];
-      if (bounds[i].kind == PositionBound::Kind::Fixed) x = ex.positions[i];  // bit for bit
-      if (bounds[i].kind == PositionBound::Kind::Zone)
-        x = clamp_to_zone(region.zones[static_cast<std::size_t>(region.deepest_zone(ex.positions[i]))], x);
-    }
-    const double v = criterion_value<C, Model>(polished.program);
-    if (v < value) {
-      best = polished.program;
-      value = v;
-    }
-  }
+  // Then the added positions move jointly inside their zones, the given ones held fixed, from the
+  // exchange and from random starts (in worker processes: Ipopt's MUMPS state must not be inherited
+  // by later forks).
+  const auto value_of = [](const Program& p) { return criterion_value<C, Model>(p); };
+  const PolishedAddition best = polish_added(
+      CriterionKind::of<C>(), model, region, given.positions, ex, candidates, options, value_of,
+      [](const Program& start, const PositionBounds& bounds) { return optimize_with_ipopt<C, Model>(start, {}, &bounds); });
   out.program = given;
-  out.added.assign(best.positions.begin() + given.size(), best.positions.end());
+  out.added = best.added;
   out.program.positions.insert(out.program.positions.end(), out.added.begin(), out.added.end());
-  out.value = value;
+  out.value = best.value;
+  out.starts = best.starts;
+  out.best_start = best.best_start;
+  out.value_greedy = best.value_greedy;
   return out;
 }
 
 }  // namespace
 
 AugmentedProgram augment_program(const Program& given, int add, CriterionKind criterion, const Region& region,
-                                 ModelKind model) {
+                                 ModelKind model, const AugmentPolishOptions& polish) {
   return visit_model(model, [&](auto M) {
     return visit_criterion(criterion, [&](auto C) {
-      return augment_with<decltype(C), decltype(M)>(given, add, region, model);
+      return augment_with<decltype(C), decltype(M)>(given, add, region, model, polish);
     });
   });
 }
