@@ -13,6 +13,7 @@ namespace scalcal::commands {
 const CommandTable& augment_table() {
   Option program = text_option("--program", "FILE", "the program the lab has: a catalogue name or a CSV file",
                                "file path", kRequired);
+  program.takes_positions = true;
   static const CommandTable table{
       "augment",
       "add the K positions that improve a program most, inside the bench's region",

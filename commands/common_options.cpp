@@ -1,6 +1,7 @@
 // Shared options (common_options.hpp).
 #include "commands/common_options.hpp"
 
+#include <charconv>
 #include <stdexcept>
 
 #include "numeric/program/catalogue.hpp"
@@ -20,6 +21,12 @@ std::vector<std::string> model_names() {
 }
 
 std::vector<std::string> local_solver_names() { return {"auto", "newton", "lbfgs", "ipopt"}; }
+
+std::string shortest_text(double x) {
+  char buffer[32];
+  const auto end = std::to_chars(buffer, buffer + sizeof buffer, x).ptr;
+  return std::string(buffer, end);
+}
 
 std::string criterion_names_text() { return scalcal::criterion_names(", "); }
 
@@ -71,6 +78,11 @@ Option choice_option(std::string name, std::vector<std::string> choices, std::st
 
 Option named(Option option, std::string value_name) {
   option.value_name = std::move(value_name);
+  return option;
+}
+
+Option positions_option(Option option) {
+  option.takes_positions = true;
   return option;
 }
 
@@ -155,6 +167,7 @@ Option program_argument(const std::string& what) {
   Option o;
   o.name = "PROGRAM";
   o.kind = OptionKind::positional;
+  o.takes_positions = true;
   o.what = what.empty() ? "a catalogue name (scalcal catalogue) or a CSV file (x,y,z or alpha1_deg,alpha2_deg)" : what;
   return o;
 }

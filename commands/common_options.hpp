@@ -21,6 +21,7 @@ std::vector<std::string> criterion_names();  // the registry's, in its order
 std::vector<std::string> model_names();
 std::vector<std::string> local_solver_names();  // auto, newton, lbfgs, ipopt
 std::string criterion_names_text();              // "D, A, E, S"
+std::string shortest_text(double x);             // the shortest text that reads back to x ("0.5")
 
 // --criterion: every registered criterion, with its normalised form in the help ("D = N^9 det K").
 Option criterion_option(const std::string& fallback = "D");
@@ -44,7 +45,8 @@ Option text_option(std::string name, std::string value_name, std::string what, s
                    std::string fallback = "");
 Option choice_option(std::string name, std::vector<std::string> choices, std::string what, std::string fallback);
 Option flag_option(std::string name, std::string what);
-Option named(Option option, std::string value_name);  // the option shown as `--name VALUE_NAME` in usage lines
+Option named(Option option, std::string value_name);
+Option positions_option(Option option);  // a program option: Python may give an (N, 3) array too  // the option shown as `--name VALUE_NAME` in usage lines
 
 CriterionKind criterion_of(const Values& values, const std::string& option = "--criterion");
 ModelKind model_of(const Values& values);

@@ -30,7 +30,7 @@ void start_from(const OptimizeRequest& q, SynthesisOptions& o) {
     if (o.positions == 0) throw UsageError("--positions N is required (or --from PROGRAM, whose size it takes)");
     return;
   }
-  Program start = resolve_program(q.from);
+  Program start = q.start ? *q.start : resolve_program(q.from);
   if (o.positions != 0 && o.positions != start.size())
     throw UsageError("--positions " + std::to_string(o.positions) + " but --from " + display_name(q.from) + " has " +
                      std::to_string(start.size()) + " positions");
@@ -53,10 +53,10 @@ const CommandTable& optimize_table() {
       {named(integer_option("--positions", kOptimizePositions.lo, kOptimizePositions.hi,
                       "number of positions N (at least the model's number of parameters)", "positions", "0",
                       "required, unless --from gives it"), "N"),
-       text_option("--from", "PROGRAM",
-                   "start 0 of the multistart is this program (a catalogue name, a family member such as "
-                   "jig:cuboctahedron, or a CSV file); N is its size",
-                   "catalogue name or file path"),
+       positions_option(text_option("--from", "PROGRAM",
+                                    "start 0 of the multistart is this program (a catalogue name, a family member "
+                                    "such as jig:cuboctahedron, or a CSV file); N is its size",
+                                    "catalogue name or file path")),
        criterion_option(), model_option(), region_option(),
        named(number_option("--margin", 0, 10,
                            "design every position this far inside the region's boundaries (the efficiency stays "
@@ -77,6 +77,7 @@ OptimizeRequest optimize_request(const Values& v) {
   OptimizeRequest q;
   q.synthesis.positions = static_cast<int>(v.integer("--positions"));
   q.from = v.text("--from");
+  if (v.given("--from")) q.start = program_of(v, "--from");
   q.synthesis.criterion = criterion_of(v);
   q.synthesis.model = model_of(v);
   q.regions = v.list("--region");

@@ -19,6 +19,7 @@ namespace scalcal::commands {
 struct OptimizeRequest {
   SynthesisOptions synthesis;        // N (0: --from gives it), criterion, model, starts, seed, threads, local solver
   std::string from;                  // start 0 is this program (a catalogue name or a file); "" none
+  std::optional<Program> start;      // that program, when given as data (else read from `from`)
   std::vector<std::string> regions;  // --region specs; none: the sphere
   double margin_deg = 0;             // design this far inside the region's boundaries
   int digits = 0;                    // polish to this many digits (0: no polish)

@@ -50,6 +50,13 @@ std::string Option::python_name() const {
     if (c == '-' && out.empty()) continue;  // the leading dashes
     out += c == '-' ? '_' : static_cast<char>(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
   }
+  // A Python keyword takes a trailing underscore, as PEP 8 has it: --from is from_.
+  static const char* const keywords[] = {"and", "as", "assert", "async", "await", "break", "class", "continue",
+                                         "def", "del", "elif", "else", "except", "finally", "for", "from",
+                                         "global", "if", "import", "in", "is", "lambda", "nonlocal", "not", "or",
+                                         "pass", "raise", "return", "try", "while", "with", "yield"};
+  for (const char* k : keywords)
+    if (out == k) return out + "_";
   return out;
 }
 

@@ -36,9 +36,12 @@ struct Option {
   std::vector<std::string> choices;
   std::function<std::string(const std::string&)> why_bad;  // text: the reason to refuse it, or ""
   bool cli_only = false;  // how the CLI presents a result (--json, --out): not a Python argument
+  bool takes_positions = false;  // a program: Python may also give an (N, 3) array of directions
+  bool takes_columns = false;    // a data file: Python may also give its columns (a mapping name -> array)
+  bool takes_document = false;   // a JSON file: Python may also give the object itself (a dict)
 
   bool required() const { return kind == OptionKind::positional || fallback == kRequired; }
-  // The Python keyword: "--threshold-factor" -> "threshold_factor", "PROGRAM" -> "program".
+  // The Python keyword: "--threshold-factor" -> "threshold_factor", "PROGRAM" -> "program", "--from" -> "from_".
   std::string python_name() const;
   // "what (unit: U; default: V)"
   std::string help() const;

@@ -70,6 +70,7 @@ const char* modulus_name(Modulus m) { return m == Modulus::norm ? "norm" : "proj
 
 const CommandTable& simulate_table() {
   Option program = text_option("--program", "P", "a catalogue name or a CSV file", "none", kRequired);
+  program.takes_positions = true;
   Option modulus = choice_option("--modulus", {"norm", "projection"}, "the modulus the estimator fits", "");
   modulus.fallback_text = "both, one after the other";
   Option log = out_option("rehearsal: write the raw log (t,ix,iy,iz) a meter would give on the program run in its "

@@ -7,7 +7,9 @@
 #include <string>
 #include <vector>
 
+#include "commands/json.hpp"
 #include "commands/option_table.hpp"
+#include "numeric/io/csv_table.hpp"
 #include "numeric/program/program.hpp"
 
 namespace scalcal::commands {
@@ -30,6 +32,10 @@ class Values {
 
   // Positions given as data (Python: an (N, 3) array) for a PROGRAM argument.
   std::optional<Program> program;
+  // A data file's columns given as data (Python: a mapping name -> array), by option name.
+  std::map<std::string, CsvTable> tables;
+  // A JSON file's object given as data (Python: a dict), by option name.
+  std::map<std::string, Json> documents;
 
   const CommandTable& table() const { return *table_; }
 

@@ -11,7 +11,7 @@ namespace py = pybind11;
 namespace scalcal::python {
 namespace {
 
-using cli::Json;
+using commands::Json;
 
 // The shape of a non-empty array of numbers (rank 1) or of equal-length non-empty arrays of numbers
 // (rank 2); nothing for any other array (empty, mixed, ragged, holding null or objects).

@@ -4,10 +4,10 @@
 #pragma once
 #include <pybind11/pybind11.h>
 
-#include "experiments/cli/json_output.hpp"
+#include "commands/json.hpp"
 
 namespace scalcal::python {
 
-pybind11::object to_python(const cli::Json& value);
+pybind11::object to_python(const commands::Json& value);
 
 }  // namespace scalcal::python

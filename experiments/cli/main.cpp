@@ -9,7 +9,6 @@
 #include <CLI/CLI.hpp>
 
 #include "experiments/cli/command.hpp"
-#include "experiments/cli/options.hpp"
 #include "experiments/cli/output_file.hpp"
 #include "numeric/io/input_error.hpp"
 #include "symbolic/family.hpp"

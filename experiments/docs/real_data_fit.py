@@ -1,161 +1,169 @@
 #!/usr/bin/python3
-"""Independent Python reference for the scalar calibration of the Xsens accelerometer log.
+"""Independent Python reference for the scalar calibration of the real logs of data/.
 
-Written separately from the C++ code so the two can be compared: its own simple static-interval
-detector, then a direct nonlinear least-squares fit of |T (m_i - o)| = g on the interval means.
-Run with Debian's /usr/bin/python3 (NumPy + SciPy). Deterministic, no network.
+Written separately from the C++ code so the two can be compared: its own static-interval detector
+(the same idea as scalcal's: a moving variance against a noise floor taken from the log's quiet
+windows, or from an initial still period), then a direct nonlinear least-squares fit of
+|T (m_i - o)| = g on the interval means with scipy.optimize.least_squares, T upper triangular for
+the 9-parameter model (paper9), diagonal for bias and scale only (axis6), a multiple of the
+identity for offsets only (bias3). Run with Debian's /usr/bin/python3 (NumPy + SciPy).
+Deterministic, no network. `--json` prints one object: per log, the intervals, the fit and the RMS.
 """
 import argparse
 import json
+import os
 import sys
 
 import numpy as np
 from scipy.optimize import least_squares
 
-DATA = "/work/shared/data/xsens_acc.txt"
-G = 9.81744            # local gravity given by the data's publishers (m/s^2)
-NOMINAL_ZERO = 32768.0  # ADC mid-scale
-NOMINAL_GAIN = 3300.0   # counts per m/s^2 as first stated; the fit finds ~414, so the half-range
-                        # start is the closer "uncalibrated" baseline and is the one reported
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(os.path.dirname(HERE))
+DATA_DIRS = [os.path.join(ROOT, "data"), os.path.join(os.path.dirname(ROOT), "shared", "data")]
+if os.environ.get("SCALCAL_REAL_DATA"):
+    DATA_DIRS.append(os.environ["SCALCAL_REAL_DATA"])
+
+# name: file, its columns, the sample rate (None: the file's time column), |I| (None: unknown,
+# the fit maps to unit modulus), and the model scalcal's --model auto is expected to choose.
+LOGS = {
+    "xsens": dict(file="xsens_acc.txt", kind="text", rate=None, magnitude=9.81744, model="paper9"),
+    "mpu6050": dict(file="mpu6050_acc.csv", kind="csv", rate=100.0, magnitude=9.80665, model="axis6"),
+    "nilspod_ferraris": dict(file="nilspod_ferraris_acc.csv", kind="csv", rate=102.4, magnitude=9.80665,
+                             model="axis6"),
+    "qmc5883l": dict(file="qmc5883l_mag.csv", kind="csv", rate=50.0, magnitude=None, model="paper9"),
+}
 
 
-def load(path):
-    """Time column and the (n, 3) raw counts."""
-    d = np.loadtxt(path)
-    return d[:, 0], d[:, 1:4]
+def find(name):
+    for d in DATA_DIRS:
+        p = os.path.join(d, name)
+        if os.path.exists(p):
+            return p
+    return None
 
 
-def moving_variance(x, window):
-    """Per-axis variance over a centred window; windows shrink at the ends of the log.
-
-    Centred on the global mean first so E[x^2] - E[x]^2 loses no precision on ~3e4 counts.
-    """
-    x = x - x.mean(axis=0)
-    ones = np.ones(window)
-    count = np.convolve(np.ones(len(x)), ones, mode="same")[:, None]
-    s1 = np.column_stack([np.convolve(x[:, k], ones, mode="same") for k in range(3)]) / count
-    s2 = np.column_stack([np.convolve(x[:, k] ** 2, ones, mode="same") for k in range(3)]) / count
-    return np.maximum(s2 - s1 ** 2, 0.0)
-
-
-def runs(mask):
-    """(first, last) index pairs, inclusive, of the True runs of a boolean array."""
-    edges = np.diff(np.concatenate(([0], mask.astype(np.int8), [0])))
-    starts = np.flatnonzero(edges == 1)
-    ends = np.flatnonzero(edges == -1) - 1
-    return list(zip(starts, ends))
+def load(spec, path):
+    """Time (seconds) and the (n, 3) raw outputs."""
+    if spec["kind"] == "text":
+        d = np.loadtxt(path)
+        return d[:, 0], d[:, 1:4]
+    with open(path) as f:
+        header = f.readline().strip().split(",")
+    d = np.loadtxt(path, delimiter=",", skiprows=1, ndmin=2)
+    x = d[:, [header.index(c) for c in ("ix", "iy", "iz")]]
+    return np.arange(len(x)) / spec["rate"], x
 
 
-def static_intervals(t, x, still_s, window, factor, min_samples):
-    """Static runs: moving-variance norm below factor x the norm of the initial still period's variance.
+def window_variance(x, window):
+    """Norm of the per-axis variance over the window centred on each sample (NaN near the ends)."""
+    x = x - x[0]
+    c1 = np.vstack([np.zeros(3), np.cumsum(x, axis=0)])
+    c2 = np.vstack([np.zeros(3), np.cumsum(x * x, axis=0)])
+    m1 = (c1[window:] - c1[:-window]) / window
+    m2 = (c2[window:] - c2[:-window]) / window
+    v = np.linalg.norm(np.maximum(m2 - m1 * m1, 0.0), axis=1)
+    out = np.full(len(x), np.nan)
+    out[window // 2: window // 2 + len(v)] = v
+    return out
 
-    The reference level comes from the first still_s seconds, known to be static, so the threshold
-    adapts to this sensor's own noise instead of being an absolute number of counts.
-    """
-    ref = np.linalg.norm(x[t < t[0] + still_s].var(axis=0))
-    level = np.linalg.norm(moving_variance(x, window), axis=1)
-    keep = [(a, b) for a, b in runs(level < factor * ref) if b - a + 1 >= min_samples]
-    return keep, factor * ref
+
+def static_intervals(t, x, factor=6.0, window_s=1.0, min_s=1.0, still_s=0.0):
+    """Runs of windows quieter than factor x the noise floor, at least min_s long."""
+    period = np.median(np.diff(t))
+    window = max(11, int(round(window_s / period)) | 1)
+    v = window_variance(x, window)
+    if still_s > 0:
+        floor = np.linalg.norm(x[t <= t[0] + still_s].var(axis=0))
+    else:
+        finite = np.sort(v[np.isfinite(v)])
+        low = finite[int(0.05 * (len(finite) - 1))]
+        floor = np.median(finite[finite <= 3 * low])
+    quiet = np.where(np.isfinite(v), v < factor * floor, False)
+    edges = np.diff(np.concatenate(([0], quiet.astype(np.int8), [0])))
+    starts, ends = np.flatnonzero(edges == 1), np.flatnonzero(edges == -1) - 1
+    need = int(np.ceil(min_s / period))
+    return [(a, b) for a, b in zip(starts, ends) if b - a + 1 >= need], floor, window
 
 
-def unpack(p):
-    """9 parameters -> offset o and upper-triangular T with positive (exp-parametrised) diagonal.
-
-    Upper triangular fixes the rotation that |T v| cannot see; exp keeps the diagonal positive
-    without bounds, which also removes the sign ambiguity of each row.
-    """
+def unpack(p, model):
     o = p[:3]
     T = np.zeros((3, 3))
-    T[np.diag_indices(3)] = np.exp(p[3:6])
-    T[0, 1], T[0, 2], T[1, 2] = p[6:9]
+    if model == "bias3":
+        T[np.diag_indices(3)] = np.exp(p[3])
+    else:
+        T[np.diag_indices(3)] = np.exp(p[3:6])
+    if model == "paper9":
+        T[0, 1], T[0, 2], T[1, 2] = p[6:9]
     return o, T
 
 
-def pack(o, T):
-    return np.concatenate([o, np.log(np.diag(T)), [T[0, 1], T[0, 2], T[1, 2]]])
-
-
-def relative_errors(o, T, v):
-    """(|T (v - o)| - g) / g for each row of v."""
-    return (np.linalg.norm((v - o) @ T.T, axis=1) - G) / G
-
-
-def rms(e):
-    return float(np.sqrt(np.mean(e ** 2)))
-
-
-def halfrange_start(means):
-    """Closed-form start: per-axis midpoint of the extreme means, gain g / half-range."""
+def fit(means, g, model):
+    """|T (m_i - o)| = g by nonlinear least squares on the relative error, from the half-range start."""
     lo, hi = means.min(axis=0), means.max(axis=0)
-    return (lo + hi) / 2, np.diag(G / ((hi - lo) / 2))
+    o0, s0 = (lo + hi) / 2, np.log(g / ((hi - lo) / 2))
+    p0 = {"paper9": np.concatenate([o0, s0, np.zeros(3)]), "axis6": np.concatenate([o0, s0]),
+          "bias3": np.concatenate([o0, [s0.mean()]])}[model]
+
+    def relative(p):
+        o, T = unpack(p, model)
+        return (np.linalg.norm((means - o) @ T.T, axis=1) - g) / g
+
+    res = least_squares(relative, p0, x_scale="jac", xtol=1e-15, ftol=1e-15, gtol=1e-15, method="lm")
+    return res, relative(res.x)
 
 
-def fit(means):
-    """Direct nonlinear least squares on the relative norm error of the interval means."""
-    o0, T0 = halfrange_start(means)
-    res = least_squares(lambda p: relative_errors(*unpack(p), means), pack(o0, T0),
-                        x_scale="jac", xtol=1e-15, ftol=1e-15, gtol=1e-15, method="trf")
-    return res
+def design_condition(directions, model):
+    x, y, z = directions.T
+    cols = [x, y, z] + ([x * x, y * y, z * z] if model != "bias3" else []) + ([x * y, y * z, z * x] if model == "paper9" else [])
+    H = np.column_stack(cols)
+    e = np.linalg.eigvalsh(H.T @ H)
+    return float(e[-1] / e[0])
+
+
+def run(name, spec):
+    path = find(spec["file"])
+    if path is None:
+        return {"file": spec["file"], "missing": True}
+    t, x = load(spec, path)
+    keep = np.all(np.isfinite(x), axis=1)
+    iv, floor, window = static_intervals(t[keep], x[keep])
+    x = x[keep]
+    means = np.array([x[a:b + 1].mean(axis=0) for a, b in iv])
+    g = spec["magnitude"] or 1.0
+    res, rel = fit(means, g, spec["model"])
+    o, T = unpack(res.x, spec["model"])
+    directions = (means - o) @ T.T
+    directions /= np.linalg.norm(directions, axis=1)[:, None]
+    return {
+        "file": spec["file"], "rate": spec["rate"], "magnitude": spec["magnitude"], "model": spec["model"],
+        "rows": int(len(x)), "window": int(window), "noise_floor": float(floor), "intervals": len(iv),
+        "interval_bounds": [[float(t[a]), float(t[b])] for a, b in iv],
+        "offset": o.tolist(), "matrix": T.tolist(),
+        "rms_means_relative": float(np.sqrt(np.mean(rel ** 2))),
+        "condition": {m: design_condition(directions, m) for m in ("paper9", "axis6", "bias3")},
+        "nfev": int(res.nfev), "status": int(res.status),
+    }
 
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__)
-    ap.add_argument("--data", default=DATA)
-    ap.add_argument("--still", type=float, default=30.0, help="initial still period (s)")
-    ap.add_argument("--window", type=int, default=101, help="moving-variance window (samples, odd)")
-    ap.add_argument("--factor", type=float, default=6.0, help="threshold / initial variance norm")
-    ap.add_argument("--min-samples", type=int, default=100, help="shortest static run kept")
     ap.add_argument("--json", action="store_true", help="print one JSON object instead of the report")
+    ap.add_argument("logs", nargs="*", default=list(LOGS), help="which logs (default: all)")
     a = ap.parse_args()
-
-    t, x = load(a.data)
-    iv, thr = static_intervals(t, x, a.still, a.window, a.factor, a.min_samples)
-    if len(iv) < 9:
-        sys.exit(f"only {len(iv)} static intervals: fewer than the 9 parameters")
-    means = np.array([x[s:e + 1].mean(axis=0) for s, e in iv])
-    samples = np.concatenate([x[s:e + 1] for s, e in iv])
-
-    res = fit(means)
-    o, T = unpack(res.x)
-    # Uncalibrated baselines: the nominal datasheet-like conversion and the fit's own start.
-    base = {"nominal": (np.full(3, NOMINAL_ZERO), np.eye(3) / NOMINAL_GAIN),
-            "halfrange": halfrange_start(means)}
-    base_rms = {k: (rms(relative_errors(bo, bT, means)), rms(relative_errors(bo, bT, samples)))
-                for k, (bo, bT) in base.items()}
-    best = min(base_rms, key=lambda k: base_rms[k][0])  # the closer of the two, per the brief
-
-    out = {
-        "intervals": [{"start": float(t[s]), "end": float(t[e]), "samples": int(e - s + 1)} for s, e in iv],
-        "threshold": float(thr),
-        "offset": o.tolist(),
-        "matrix": T.tolist(),
-        "rms_means_relative": rms(relative_errors(o, T, means)),
-        "rms_samples_relative": rms(relative_errors(o, T, samples)),
-        "rms_means_relative_uncalibrated": base_rms[best][0],
-        "rms_samples_relative_uncalibrated": base_rms[best][1],
-        "uncalibrated_baseline": best,
-        "uncalibrated_all": {k: {"rms_means_relative": v[0], "rms_samples_relative": v[1]}
-                             for k, v in base_rms.items()},
-        # least_squares exposes no iteration count: nfev (residual evaluations) stands in for it.
-        "iterations": int(res.nfev), "nfev": int(res.nfev), "njev": int(res.njev),
-        "cost": float(res.cost), "status": int(res.status),
-        "options": {"still": a.still, "window": a.window, "factor": a.factor, "min_samples": a.min_samples},
-    }
+    out = {"logs": {name: run(name, LOGS[name]) for name in a.logs}}
+    missing = [r["file"] for r in out["logs"].values() if r.get("missing")]
+    if a.json and missing:  # real_data_fit.json holds every log: never write it with one left out
+        sys.exit(f"not found in {DATA_DIRS} (set SCALCAL_REAL_DATA to their folder): {', '.join(missing)}")
     if a.json:
         print(json.dumps(out, indent=1))
         return
-
-    print(f"threshold {thr:.4g} counts^2; {len(iv)} static intervals ({len(samples)} samples):")
-    for k, r in enumerate(out["intervals"]):
-        print(f"  {k + 1:3d}  {r['start']:9.3f} .. {r['end']:9.3f} s  {r['samples']:6d}")
-    print("offset o (counts):", np.array2string(o, precision=3))
-    print("T (m/s^2 per count), rows:")
-    for row in T:
-        print("  ", "  ".join(f"{v: .6e}" for v in row))
-    print(f"RMS rel. error, means:   {out['rms_means_relative']:.3e}   samples: {out['rms_samples_relative']:.3e}")
-    for k, (m, s) in base_rms.items():
-        print(f"uncalibrated ({k:9s}): means: {m:.3e}   samples: {s:.3e}")
-    print(f"least_squares: nfev {res.nfev}, njev {res.njev}, cost {res.cost:.3e}, status {res.status}")
+    for name, r in out["logs"].items():
+        if r.get("missing"):
+            print(f"{name}: {r['file']} not found in {DATA_DIRS}", file=sys.stderr)
+            continue
+        print(f"{name}: {r['intervals']} intervals, model {r['model']}, RMS |a| - g over the interval means "
+              f"{r['rms_means_relative']:.4e} of |I|; condition paper9 {r['condition']['paper9']:.3g}, "
+              f"axis6 {r['condition']['axis6']:.3g}")
 
 
 if __name__ == "__main__":

@@ -102,7 +102,7 @@ void real_data(Context& ctx) {
   rep.paragraph("`scalcal calibrate --measurements data/xsens_acc.txt --magnitude 9.81744` on the log of IMU-TK (" +
                 std::to_string(log.size()) + " rows, 100 Hz; BSD licence, data/README.md): " +
                 std::to_string(d.intervals.size()) + " static intervals (window " + std::to_string(d.window) +
-                " samples, threshold " + decimal(d.threshold, 4) + " counts² = 6 × the first 30 s), " +
+                " samples, threshold " + decimal(d.threshold, 4) + " counts² = 6 × the noise floor of the log's quiet windows), " +
                 std::to_string(a.estimate.iterations) + " iterations from the ellipsoid start. RMS of |a| − g over the "
                 "intervals: " + decimal(rms_before, 3) + " of g before (one gain " + decimal(one_gain, 5) +
                 " counts per m/s²), " + decimal(rms_after, 3) + " after. Data: [real_intervals.csv](real_intervals.csv), "
@@ -119,7 +119,7 @@ void real_data(Context& ctx) {
   for (int k = 0; k < 3; ++k)
     rows.push_back({std::string("γ_") + pairs[k] + " (rad)", decimal(a.correction.nonorthogonality(k), 5),
                     decimal(a.nonorthogonality_std(k), 3)});
-  rep.table({"parameter", "estimate", "standard error"}, rows);
+  rep.table({"parameter", "estimate", "standard error (the larger of noise- and residual-based)"}, rows);
   std::string suggestions;
   for (const auto& s : advice.suggested)
     suggestions += (suggestions.empty() ? "" : "; ") + std::string("(") + decimal(s.position(0), 3) + ", " +

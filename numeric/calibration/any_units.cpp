@@ -1,9 +1,15 @@
+// Any units, any registered model: the start, the model's estimator, the composed correction and
+// the two standard errors of every parameter.
 #include "numeric/calibration/any_units.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "numeric/calibration/data_checks.hpp"
+#include <boost/math/distributions/chi_squared.hpp>
+#include <Eigen/Dense>
+
+#include "numeric/criteria/identifiability.hpp"
+#include "numeric/criteria/model_evaluation.hpp"
 #include "numeric/io/input_error.hpp"
 
 namespace scalcal {
@@ -19,94 +25,213 @@ double median_modulus_ratio(const std::vector<PositionSamples>& data, double mag
   return r[r.size() / 2];
 }
 
+bool has_meter_parameter(const std::vector<int>& index, int meter_parameter) {
+  return std::find(index.begin(), index.end(), meter_parameter) != index.end();
+}
+
+// The model's positions of the meter parameters first..first+2 (bias 0, scale 3), or empty.
+std::vector<int> block_of(const std::vector<int>& index, int first) {
+  std::vector<int> out;
+  for (int m = first; m < first + 3; ++m)
+    for (std::size_t k = 0; k < index.size(); ++k)
+      if (index[k] == m) out.push_back(static_cast<int>(k));
+  return out.size() == 3 ? out : std::vector<int>{};
+}
+
+Mat3 block(const Eigen::MatrixXd& cov, const std::vector<int>& at) {
+  Mat3 b;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) b(i, j) = cov(at[static_cast<std::size_t>(i)], at[static_cast<std::size_t>(j)]);
+  return b;
+}
+
+// A covariance of the estimator's parameters (bias / |I|, dk, gamma, c |I|) as the standard errors
+// of the reported ones: bias in file units through the start (first order: the start is a fixed
+// map), scale deviations relative to their geometric mean when the start set the nominal gain.
+Eigen::VectorXd reported_std(const Eigen::MatrixXd& cov, const std::vector<int>& index, const AnyUnitsCalibration& a) {
+  Eigen::VectorXd out = cov.diagonal().cwiseMax(0.0).cwiseSqrt();
+  if (const auto b = block_of(index, 0); !b.empty()) {
+    const Mat3 T_inverse = a.started ? Mat3(a.start.matrix.inverse()) : Mat3::Identity();
+    const Mat3 c = a.magnitude * a.magnitude * T_inverse * block(cov, b) * T_inverse.transpose();
+    for (int i = 0; i < 3; ++i) out(b[static_cast<std::size_t>(i)]) = std::sqrt(std::max(c(i, i), 0.0));
+  }
+  if (const auto s = block_of(index, 3); !s.empty() && a.started) {
+    const Mat3 P = Mat3::Identity() - Mat3::Constant(1.0 / 3);
+    const Mat3 c = P * block(cov, s) * P.transpose();
+    for (int i = 0; i < 3; ++i) out(s[static_cast<std::size_t>(i)]) = std::sqrt(std::max(c(i, i), 0.0));
+  }
+  return out;
+}
+
+using RowFunction = Eigen::VectorXd (*)(const Vec3&);
+template <class Model>
+Eigen::VectorXd dynamic_row(const Vec3& eta) {
+  return Model::row(eta);
+}
+
+// The start, applied to every sample; throws when the data cannot have one.
+std::vector<PositionSamples> started_data(const std::string& file, const std::vector<PositionSamples>& data,
+                                          const AnyUnitsOptions& options, const std::vector<int>& index, double ratio,
+                                          AnyUnitsCalibration& out) {
+  const std::string name(model_name(options.model));
+  if (options.modulus == Modulus::projection)
+    throw InputError(file, 0,
+                     "the measured modulus is " + std::to_string(ratio) +
+                         " times --magnitude; the projection modulus needs data in the field's units (use the norm "
+                         "modulus, which starts from an ellipsoid fit in any units)");
+  if (has_meter_parameter(index, 9))
+    throw InputError(file, 0,
+                     "the measured modulus is " + std::to_string(ratio) + " times --magnitude: --model " + name +
+                         " calibrates data in the field's units only (its cubic term is relative to |I|); the linear "
+                         "models start from an ellipsoid fit in any units");
+  const EllipsoidShape shape = has_meter_parameter(index, 6)   ? EllipsoidShape::general
+                               : has_meter_parameter(index, 3) ? EllipsoidShape::axis_aligned
+                                                               : EllipsoidShape::sphere;
+  std::vector<Vec3> means;
+  for (const auto& p : data) means.push_back(p.mean());
+  const auto start = fit_ellipsoid(means, out.magnitude, shape);
+  if (!start)
+    throw InputError(file, 0,
+                     "no ellipsoid passes near the " + std::to_string(data.size()) +
+                         " positions' means: they are too few or too flat for a start in any units");
+  out.start = *start;
+  std::vector<PositionSamples> y = data;
+  for (auto& p : y)
+    for (auto& s : p.samples) s = out.start.apply(s);
+  return y;
+}
+
+void check_layout(const std::string& file, const std::vector<PositionSamples>& y, const AnyUnitsOptions& options,
+                  double M) {
+  const double ratio = median_modulus_ratio(y, M);
+  if (ratio < 0.5 || ratio > 2.0)
+    throw InputError(file, 0,
+                     "the measured modulus is " + std::to_string(ratio) + " times --magnitude " + std::to_string(M) +
+                         "; the model needs it near 1 (wrong --magnitude or units?)");
+  const ModelEvaluation ev = evaluate(options.model, Program{position_directions(y, options.modulus)});
+  if (!ev.full_rank()) throw InputError(file, 0, "the measured positions form a " + rank_deficiency(ev));
+  if (ev.condition > kIllConditioned) throw InputError(file, 0, "the measured positions form an " + ill_conditioning(ev));
+}
+
+// The final correction, its gain and the scale deviations relative to it.
+void compose(const std::string& file, AnyUnitsCalibration& out) {
+  const Meter& meter = out.estimate.meter.linear;
+  const FullCorrection second = correction_of(meter);
+  if (!out.started) {
+    out.correction = second;
+  } else {
+    // physical = G^-1 (y - Delta), y = T (raw - o): matrix G^-1 T, offset o + T^-1 Delta.
+    const auto canonical = canonical_correction(second.matrix * out.start.matrix,
+                                                out.start.offset + out.start.matrix.inverse() * meter.bias);
+    if (!canonical) throw InputError(file, 0, "the fitted correction is degenerate (two sensor axes nearly parallel)");
+    out.correction = *canonical;
+    out.nominal_gain = std::cbrt(out.correction.scale.prod());
+  }
+  out.gain = out.correction.scale;
+  out.scale_deviation = out.correction.scale / out.nominal_gain - Vec3::Ones();
+}
+
+// The larger of the noise-based and the residual-based standard error (either may be NaN: not
+// estimable).
+double larger(double p, double a) { return std::isnan(p) ? a : std::isnan(a) ? p : std::max(p, a); }
+
+// The gains' standard errors: the scale deviations' with their common part when |I| is known (it
+// fixes the gain), relative to their geometric mean otherwise; and the nominal gain's (the field's
+// strength in file units with magnitude auto), which moves with the mean scale deviation:
+// var = 1^T C 1 / 9. Each the larger of the two covariances given (empty: not estimable).
+void gain_errors(AnyUnitsCalibration& out, const std::vector<int>& index, bool magnitude_auto,
+                 const Eigen::MatrixXd& predicted, const Eigen::MatrixXd& achieved) {
+  const auto sb = block_of(index, 3);
+  if (sb.empty()) return;
+  const auto gain_std = [&](const Eigen::MatrixXd& cov) {
+    if (cov.size() == 0) return Vec3(Vec3::Constant(NAN));
+    Mat3 c = block(cov, sb);
+    if (magnitude_auto) {
+      const Mat3 Pr = Mat3::Identity() - Mat3::Constant(1.0 / 3);
+      c = Pr * c * Pr.transpose();
+    }
+    return Vec3(out.gain.cwiseProduct(c.diagonal().cwiseMax(0.0).cwiseSqrt()));
+  };
+  const auto mean_std = [&](const Eigen::MatrixXd& cov) {
+    return cov.size() == 0 ? NAN : out.nominal_gain * std::sqrt(std::max(block(cov, sb).sum(), 0.0)) / 3;
+  };
+  out.nominal_gain_std = larger(mean_std(predicted), mean_std(achieved));
+  const Vec3 p = gain_std(predicted), a = gain_std(achieved);
+  for (int i = 0; i < 3; ++i) out.gain_std(i) = larger(p(i), a(i));
+}
+
 }  // namespace
 
 AnyUnitsCalibration calibrate_any_units(const std::string& file, const std::vector<PositionSamples>& data,
                                         const AnyUnitsOptions& options) {
   AnyUnitsCalibration out;
+  out.model = options.model;
   out.magnitude = options.magnitude_auto ? 1.0 : options.magnitude;
   const double M = out.magnitude;
-  if (data.size() < static_cast<std::size_t>(kParameters)) check_calibration_data(file, data, options.modulus, M);  // throws
+  const std::vector<int> index = meter_indices(options.model);
+  const int P = static_cast<int>(index.size());
+  const int n = static_cast<int>(data.size());
+  if (n < P)
+    throw InputError(file, 0,
+                     std::to_string(n) + " positions cannot identify the " + std::to_string(P) + " parameters of --model " +
+                         std::string(model_name(options.model)));
   const double ratio = median_modulus_ratio(data, M);
   out.started = options.magnitude_auto || std::abs(ratio - 1) > kInUnits;
-  std::vector<PositionSamples> y = data;
-  if (out.started) {
-    if (options.modulus == Modulus::projection)
-      throw InputError(file, 0,
-                       "the measured modulus is " + std::to_string(ratio) +
-                           " times --magnitude; the projection modulus needs data in the field's units (use the norm "
-                           "modulus, which starts from an ellipsoid fit in any units)");
-    std::vector<Vec3> means;
-    for (const auto& p : data) means.push_back(p.mean());
-    const auto start = fit_ellipsoid(means, M);
-    if (!start)
-      throw InputError(file, 0,
-                       "no ellipsoid passes near the " + std::to_string(data.size()) +
-                           " positions' means: they are too few or too flat for a start in any units");
-    out.start = *start;
-    for (auto& p : y)
-      for (auto& s : p.samples) s = out.start.apply(s);
-  }
-  check_calibration_data(file, y, options.modulus, M);
+  const std::vector<PositionSamples> y = out.started ? started_data(file, data, options, index, ratio, out) : data;
+  check_layout(file, y, options, M);
   CalibrationOptions co;
   co.modulus = options.modulus;
   co.magnitude = M;
   co.weight_by_samples = options.weight_by_samples;
-  out.estimate = calibrate(y, co);
-  const CalibrationResult& r = out.estimate;
-  const Meter meter = Meter::from_parameters(r.X, M);
-  const FullCorrection second = correction_of(meter);
-  const bool have_std = r.noise_source != NoiseSource::none;
-  if (!out.started) {
-    out.correction = second;
-    out.scale_deviation = r.X.segment<3>(3);
-    if (have_std) out.bias_std = r.bias_std(M);
-  } else {
-    // physical = G^-1 (y - Delta), y = T (raw - o): matrix G^-1 T, offset o + T^-1 Delta.
-    const Mat3 T_inverse = out.start.matrix.inverse();
-    const auto canonical = canonical_correction(second.matrix * out.start.matrix, out.start.offset + T_inverse * meter.bias);
-    if (!canonical) throw InputError(file, 0, "the fitted correction is degenerate (two sensor axes nearly parallel)");
-    out.correction = *canonical;
-    out.nominal_gain = std::cbrt(out.correction.scale.prod());
-    out.scale_deviation = out.correction.scale / out.nominal_gain - Vec3::Ones();
-    if (have_std) {  // first order: the start is a fixed map, the estimate's covariance goes through it
-      const double sigma = r.noise / M;
-      const Mat3 cov = sigma * sigma * M * M * r.K.topLeftCorner<3, 3>();
-      out.bias_std = (T_inverse * cov * T_inverse.transpose()).diagonal().cwiseSqrt();
-    }
-  }
-  if (have_std) {
-    const double sigma = r.noise / M;
-    Mat3 cov = sigma * sigma * r.K.block<3, 3>(3, 3);
-    if (out.started) {  // relative to their geometric mean: the common scale is the nominal gain's
-      const Mat3 P = Mat3::Identity() - Mat3::Constant(1.0 / 3);
-      cov = P * cov * P.transpose();
-    }
-    out.scale_deviation_std = cov.diagonal().cwiseSqrt();
-    out.nonorthogonality_std = r.X_std.segment<3>(6);
-  }
-  // The program measured, and each position's residual against the residuals' own scale (the
-  // weighted least squares' information matrix for the leverages, whatever the weights).
-  const int n = static_cast<int>(data.size());
+  out.estimate = calibrate_model(options.model, y, co);
+  const ModelCalibration& r = out.estimate;
+  out.linear = r.meter.cubic.isZero() && !has_meter_parameter(index, 9);
+  compose(file, out);
+
+  // The program measured, each position's residual, and the information at the estimate.
+  const RowFunction row = visit_model(options.model, [](auto m) -> RowFunction { return &dynamic_row<decltype(m)>; });
   std::vector<double> J, w;
-  Mat9 info = Mat9::Zero();
-  double weighted = 0;
+  std::vector<Eigen::VectorXd> rows;
+  Eigen::MatrixXd info = Eigen::MatrixXd::Zero(P, P);
+  double weighted = 0, chi = 0;
   for (const auto& p : y) {
-    const Vec3 c = meter.compensate(p.mean());
+    const Vec3 c = r.meter.compensate(p.mean());
     out.directions.push_back(c.normalized());
     J.push_back((options.modulus == Modulus::norm ? c.norm() : c.dot(*p.nominal)) / M - 1);
     w.push_back(options.weight_by_samples ? static_cast<double>(p.samples.size()) : 1.0);
-    const Vec9 h = Paper9Model::row(out.directions.back());
+    rows.push_back(row(options.modulus == Modulus::norm ? out.directions.back() : Vec3(p.nominal->normalized())));
+    const Eigen::VectorXd& h = rows.back();
     info += w.back() * h * h.transpose();
     weighted += w.back() * J.back() * J.back();
+    if (r.noise > 0) {
+      const double z = J.back() * M * std::sqrt(static_cast<double>(p.samples.size())) / r.noise;
+      chi += z * z;
+    }
   }
-  const Mat9 K = info.ldlt().solve(Mat9::Identity());
-  out.have_achieved = n > kParameters;
-  const double s = out.have_achieved ? std::sqrt(weighted / (n - kParameters)) : 0;
-  if (out.have_achieved) out.achieved_std = s * K.diagonal().cwiseSqrt();
+  const Eigen::MatrixXd K = info.ldlt().solve(Eigen::MatrixXd::Identity(P, P));
+  out.dof = n - P;
+  const double s = out.dof > 0 ? std::sqrt(weighted / out.dof) : 0;
+  const Eigen::VectorXd nan = Eigen::VectorXd::Constant(P, NAN);
+  out.predicted_std = r.noise_source != NoiseSource::none ? reported_std((r.noise / M) * (r.noise / M) * r.K, index, out) : nan;
+  out.achieved_std = out.dof > 0 ? reported_std(s * s * K, index, out) : nan;
+  out.standard_error = out.predicted_std.binaryExpr(out.achieved_std, [](double p, double a) { return larger(p, a); });
+  if (r.noise_source == NoiseSource::scatter && r.noise > 0 && out.dof > 0) {
+    out.chi_square = chi;
+    out.chi_square_p = boost::math::cdf(boost::math::complement(boost::math::chi_squared(out.dof), chi));
+  }
+  for (int k = 0; k < P; ++k) {
+    const int m = index[static_cast<std::size_t>(k)];
+    if (m < 3) out.bias_std(m) = out.standard_error(k);
+    else if (m < 6) out.scale_deviation_std(m - 3) = out.standard_error(k);
+    else if (m < 9) out.nonorthogonality_std(m - 6) = out.standard_error(k);
+  }
+  const Eigen::MatrixXd none;
+  gain_errors(out, index, options.magnitude_auto,
+              r.noise_source != NoiseSource::none ? Eigen::MatrixXd((r.noise / M) * (r.noise / M) * r.K) : none,
+              out.dof > 0 ? Eigen::MatrixXd(s * s * K) : none);
   for (int i = 0; i < n; ++i) {
     const auto k = static_cast<std::size_t>(i);
-    const Vec9 h = Paper9Model::row(out.directions[k]);
+    const Eigen::VectorXd& h = rows[k];
     const double leverage = std::min(w[k] * h.dot(K * h), 1.0 - 1e-12);
     PositionResidual pr{data[k].line, J[k], 0.0};
     if (s > 0) pr.standardised = J[k] * std::sqrt(w[k]) / (s * std::sqrt(1 - leverage));

@@ -1,48 +1,72 @@
-// The scalar calibration of data in any units (ADC counts, a field of unknown strength): a
-// closed-form ellipsoid start brings the measurements near the field's units, the paper's
-// iterative estimator (eqs. 3-6) fits the remaining deviations, and the two compose into the full
-// correction, physical = matrix (raw - offset), reported in the paper's convention too
-// (numeric/calibration/full_correction.hpp). Data already within 10 % of the field's magnitude
-// skip the start: their estimate is the paper's, bit for bit.
+// The scalar calibration of data in any units (ADC counts, a field of unknown strength), for every
+// registered model: a closed-form start (an ellipsoid no richer than the model: general for paper9,
+// axis-aligned for axis6, a sphere for bias3) brings the measurements near the field's units, the
+// model's iterative estimator (eqs. 3-6 with the model's row) fits the remaining deviations, and
+// the two compose into the full correction, physical = matrix (raw - offset), reported in the
+// paper's convention too (numeric/calibration/full_correction.hpp). Data already within 10 % of the
+// field's magnitude skip the start. Every standard error is given twice: predicted from the noise
+// within positions, and achieved from the residuals between positions; the larger is the one to use.
 #pragma once
+#include <optional>
 #include <string>
 #include <vector>
 
+#include <Eigen/Core>
+
 #include "numeric/calibration/full_correction.hpp"
+#include "numeric/calibration/model_calibration.hpp"
 #include "numeric/calibration/scalar_calibration.hpp"
+#include "numeric/model/registry.hpp"
 
 namespace scalcal {
 
 struct AnyUnitsOptions {
   Modulus modulus = Modulus::norm;
-  double magnitude = 1;         // |I| in physical units
-  bool magnitude_auto = false;  // unknown field strength: the correction maps to unit modulus
+  double magnitude = 1;           // |I| in physical units
+  bool magnitude_auto = false;    // unknown field strength: the correction maps to unit modulus
   bool weight_by_samples = true;  // CalibrationOptions::weight_by_samples
+  ModelKind model = ModelKind::paper9;
 };
 
 struct PositionResidual {
-  int line = 0;           // first sample's line
-  double residual = 0;    // |corrected mean| / magnitude - 1
+  int line = 0;             // first sample's line
+  double residual = 0;      // |corrected mean| / magnitude - 1
   double standardised = 0;  // by the residuals' own scale across positions and the position's leverage
 };
 
 struct AnyUnitsCalibration {
-  bool started = false;                // the ellipsoid start was used (data not in the field's units)
-  FullCorrection start;                // identity when not started
-  CalibrationResult estimate;          // the paper's estimator on the start-corrected data
-  FullCorrection correction;           // the final one, paper's convention
-  double magnitude = 1;                // what the estimator used (1 with magnitude auto)
-  double nominal_gain = 1;             // file units per physical unit the scale deviations are relative to
+  ModelKind model = ModelKind::paper9;
+  bool started = false;                 // the ellipsoid start was used (data not in the field's units)
+  FullCorrection start;                 // identity when not started
+  ModelCalibration estimate;            // the model's estimator on the start-corrected data
+  FullCorrection correction;            // the final one, paper's convention (cubic12: its linear part)
+  bool linear = true;                   // false for a model with a nonlinear term (cubic12)
+  double magnitude = 1;                 // what the estimator used (1 with magnitude auto)
+  double nominal_gain = 1;              // file units per physical unit the scale deviations are relative to
+  double nominal_gain_std = NAN;        // its standard error (the common part of the scale deviations)
   Vec3 scale_deviation = Vec3::Zero();  // correction.scale / nominal_gain - 1
-  Vec3 bias_std = Vec3::Zero(), scale_deviation_std = Vec3::Zero(), nonorthogonality_std = Vec3::Zero();
-  std::vector<Vec3> directions;        // each position's corrected mean, normalised (the program measured)
+  Vec3 gain = Vec3::Ones();             // correction.scale: file units per physical unit (per field strength with auto)
+  Vec3 gain_std = Vec3::Constant(NAN);  // its standard error (the larger of predicted and achieved); NaN for bias3
+
+  // Standard errors of the model's parameters (model order) in the reported units: bias in file
+  // units, scale deviation relative to the nominal gain, non-orthogonality in rad, cubic as c |I|.
+  // NaN where not estimable (predicted: one sample per position and N = P; achieved: N = P).
+  Eigen::VectorXd predicted_std, achieved_std, standard_error;  // standard_error: the larger of the two
+  int dof = 0;                          // positions minus parameters
+  // standard_error for the meter's nine linear parameters (NaN for those the model does not have).
+  Vec3 bias_std = Vec3::Constant(NAN), scale_deviation_std = Vec3::Constant(NAN),
+       nonorthogonality_std = Vec3::Constant(NAN);
+  std::vector<Vec3> directions;         // each position's corrected mean, normalised (the program measured)
   std::vector<PositionResidual> residuals;
-  Vec9 achieved_std = Vec9::Zero();    // X's standard errors from the residuals' own scale across positions
-  bool have_achieved = false;          // N > 9
+  // The residuals against the noise within positions: chi-square with dof degrees of freedom (only
+  // when the noise comes from the scatter of repeated samples and dof > 0).
+  std::optional<double> chi_square;
+  double chi_square_p = 1;
 };
 
-// Throws InputError (file, 0, reason) when no start exists (no ellipsoid through the means), for
-// the projection modulus on data not in the field's units, or as check_calibration_data does.
+// Throws InputError (file, 0, reason): fewer positions than parameters, no start (no ellipsoid
+// through the means), the projection modulus or cubic12 on data not in the field's units, a
+// rank-deficient or ill-conditioned layout (beyond kIllConditioned), a degenerate correction.
 AnyUnitsCalibration calibrate_any_units(const std::string& file, const std::vector<PositionSamples>& data,
                                         const AnyUnitsOptions& options);
 

@@ -61,9 +61,9 @@ std::optional<FullCorrection> canonical_correction(const Mat3& matrix, const Vec
   return out;
 }
 
-std::optional<FullCorrection> fit_ellipsoid(const std::vector<Vec3>& means, double magnitude) {
+std::optional<FullCorrection> fit_ellipsoid(const std::vector<Vec3>& means, double magnitude, EllipsoidShape shape) {
   const int n = static_cast<int>(means.size());
-  if (n < 6) return std::nullopt;
+  if (n < 4) return std::nullopt;
   // Centred and scaled: raw counts near 32768 would make the normal equations useless.
   Vec3 centre = Vec3::Zero();
   for (const Vec3& m : means) centre += m;
@@ -74,31 +74,40 @@ std::optional<FullCorrection> fit_ellipsoid(const std::vector<Vec3>& means, doub
   if (!(spread > 0)) return std::nullopt;
   std::vector<Vec3> u;
   for (const Vec3& m : means) u.push_back((m - centre) / spread);
-  // u^T A u + b^T u = 1: general (a11 a22 a33 a12 a23 a13 b) or axis-aligned (a11 a22 a33 b).
-  for (const bool general : {true, false}) {
-    const int k = general ? 9 : 6;
+  // u^T A u + b^T u = 1: general (a11 a22 a33 a12 a23 a13 b), axis-aligned (a11 a22 a33 b) or a
+  // sphere (a b).
+  std::vector<EllipsoidShape> tried = {shape};
+  if (shape == EllipsoidShape::general) tried.push_back(EllipsoidShape::axis_aligned);
+  for (const EllipsoidShape kind : tried) {
+    const int k = kind == EllipsoidShape::general ? 9 : kind == EllipsoidShape::axis_aligned ? 6 : 4;
     if (n < k) continue;
     Eigen::MatrixXd X(n, k);
     for (int i = 0; i < n; ++i) {
       const Vec3& v = u[static_cast<std::size_t>(i)];
-      if (general)
+      if (kind == EllipsoidShape::general)
         X.row(i) << v(0) * v(0), v(1) * v(1), v(2) * v(2), 2 * v(0) * v(1), 2 * v(1) * v(2), 2 * v(0) * v(2), v(0), v(1), v(2);
-      else
+      else if (kind == EllipsoidShape::axis_aligned)
         X.row(i) << v(0) * v(0), v(1) * v(1), v(2) * v(2), v(0), v(1), v(2);
+      else
+        X.row(i) << v.squaredNorm(), v(0), v(1), v(2);
     }
     const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(X);
     if (qr.rank() < k) continue;
     const Eigen::VectorXd a = qr.solve(Eigen::VectorXd::Ones(n));
     Mat3 A = Mat3::Zero();
-    A.diagonal() << a(0), a(1), a(2);
     Vec3 b;
-    if (general) {
+    if (kind == EllipsoidShape::general) {
+      A.diagonal() << a(0), a(1), a(2);
       A(0, 1) = A(1, 0) = a(3);
       A(1, 2) = A(2, 1) = a(4);
       A(0, 2) = A(2, 0) = a(5);
       b << a(6), a(7), a(8);
-    } else {
+    } else if (kind == EllipsoidShape::axis_aligned) {
+      A.diagonal() << a(0), a(1), a(2);
       b << a(3), a(4), a(5);
+    } else {
+      A.diagonal().setConstant(a(0));
+      b << a(1), a(2), a(3);
     }
     Eigen::LLT<Mat3> llt(A);
     if (llt.info() != Eigen::Success) continue;  // not an ellipsoid

@@ -30,10 +30,16 @@ FullCorrection correction_of(const Meter& meter);
 // Empty when the axes are degenerate (matrix singular, or two axes nearly parallel).
 std::optional<FullCorrection> canonical_correction(const Mat3& matrix, const Vec3& offset);
 
+// The quadrics a start may fit: the general ellipsoid (9 unknowns, falling back to the axis-aligned
+// one), the axis-aligned ellipsoid (6: offsets and one gain per axis), the sphere (4: offsets and
+// one gain). A model's start must not hold more than the model: axis6's start is axis-aligned,
+// bias3's a sphere, or the start would carry what the layout cannot identify.
+enum class EllipsoidShape { general, axis_aligned, sphere };
+
 // A closed-form start in any units: the ellipsoid through the positions' mean measurements, as
-// physical = matrix (raw - offset) with |physical| = magnitude on it. A general quadric by linear
-// least squares when 9 or more positions determine one that is an ellipsoid, else the
-// axis-aligned ellipsoid (6 unknowns). Empty when neither is an ellipsoid.
-std::optional<FullCorrection> fit_ellipsoid(const std::vector<Vec3>& means, double magnitude);
+// physical = matrix (raw - offset) with |physical| = magnitude on it, by linear least squares.
+// Empty when the positions determine no ellipsoid of that shape.
+std::optional<FullCorrection> fit_ellipsoid(const std::vector<Vec3>& means, double magnitude,
+                                            EllipsoidShape shape = EllipsoidShape::general);
 
 }  // namespace scalcal

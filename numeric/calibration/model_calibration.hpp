@@ -47,7 +47,7 @@ struct ModelCalibration {
   double noise = 0, residual_rms = 0;
   NoiseSource noise_source = NoiseSource::none;
   int iterations = 0, positions = 0, samples = 0;
-  bool converged = false;
+  Summary summary;           // converged, or why not
   ModelMeter meter;          // the estimate as a meter (parameters outside the model are zero)
 };
 

@@ -90,10 +90,10 @@ MonteCarloResult run_monte_carlo(const MonteCarloOptions& o, const std::function
     Estimate e;
     if (paper9) {
       const CalibrationResult c = calibrate(data, co);
-      e = {Eigen::VectorXd(c.X), c.noise, c.iterations, c.converged};
+      e = {Eigen::VectorXd(c.X), c.noise, c.iterations, c.summary.converged()};
     } else {
       const ModelCalibration c = calibrate_model(model, data, co);
-      e = {c.X, c.noise, c.iterations, c.converged};
+      e = {c.X, c.noise, c.iterations, c.summary.converged()};
     }
     return e;
   };

@@ -12,6 +12,7 @@
 #include "numeric/model/design.hpp"
 #include "numeric/calibration/meter_model.hpp"
 #include "numeric/model/paper9.hpp"
+#include "numeric/program/summary.hpp"
 
 namespace scalcal {
 
@@ -57,7 +58,7 @@ struct CalibrationResultTpl {
   NoiseSource noise_source = NoiseSource::none;
   Scalar residual_rms = Scalar(0);  // RMS over positions of m - |I| at the estimate, units of the samples
   int iterations = 0;
-  bool converged = false;
+  Summary summary;                  // converged, or why not (iterations, a message)
   int positions = 0;
   int samples = 0;
 
@@ -110,10 +111,12 @@ CalibrationResultTpl<Scalar> calibrate(const std::vector<PositionSamplesTpl<Scal
   Vec9T<Scalar> X = Vec9T<Scalar>::Zero();
   Mat9T<Scalar> info = Mat9T<Scalar>::Zero();
   std::vector<Scalar> J(data.size());
+  Scalar cost(0);  // sum w J^2 at the last point residuals() saw
   auto residuals = [&](const Vec9T<Scalar>& at) {
     const MeterTpl<Scalar> meter = MeterTpl<Scalar>::from_parameters(at, M);
     Vec9T<Scalar> rhs = Vec9T<Scalar>::Zero();
     info.setZero();
+    cost = Scalar(0);
     for (std::size_t i = 0; i < data.size(); ++i) {
       const Vec3T<Scalar> c = meter.compensate(means[i]);
       const Vec3T<Scalar> eta = options.modulus == Modulus::norm ? Vec3T<Scalar>(c.normalized())
@@ -123,24 +126,52 @@ CalibrationResultTpl<Scalar> calibrate(const std::vector<PositionSamplesTpl<Scal
       const Vec9T<Scalar> h = Paper9Model::row(eta);
       info += w * h * h.transpose();
       rhs += w * J[i] * h;
+      cost += w * J[i] * J[i];
     }
     return rhs;
   };
 
+  // Gauss-Newton on sum w J^2 with a backtracking line search: a step that does not lower the
+  // residual is halved, so the iteration cannot run away from a poor start; none that lowers it
+  // ends the iteration as not converged (the message says so), never a diverged estimate.
+  r.summary.termination = Termination::not_converged;
+  r.summary.message = "the iteration limit was reached";
+  Vec9T<Scalar> rhs = residuals(X);
   for (r.iterations = 1; r.iterations <= options.max_iterations; ++r.iterations) {
-    const Vec9T<Scalar> rhs = residuals(X);
     // J = m/|I| - 1 ~ h.(X_true - X): the step is the least-squares fit of the residual (6).
     const Vec9T<Scalar> dX = info.ldlt().solve(rhs);
-    X += dX;
-    bool finite = true;
-    for (int k = 0; k < 9; ++k) finite = finite && isfinite(X(k)) && abs(X(k)) < Scalar(0.5);
-    if (!finite) break;  // diverged: far outside the linearisation
-    if (dX.cwiseAbs().maxCoeff() < options.tolerance) {
-      r.converged = true;
+    const Scalar before = cost;
+    Scalar t(1);
+    bool accepted = false;
+    Vec9T<Scalar> next;
+    for (int halvings = 0; halvings < 30 && !accepted; ++halvings, t /= Scalar(2)) {
+      next = X + t * dX;
+      bool finite = true;
+      for (int k = 0; k < 9; ++k) finite = finite && isfinite(next(k));
+      if (!finite) continue;
+      rhs = residuals(next);
+      accepted = isfinite(cost) && cost <= before;
+    }
+    if (!accepted) {
+      rhs = residuals(X);
+      if (dX.cwiseAbs().maxCoeff() < sqrt(options.tolerance)) {
+        r.summary.termination = Termination::converged;  // at the rounding floor of the residual
+        r.summary.message = "converged (the residual cannot be lowered further in this precision)";
+      } else {
+        r.summary.message = "no step along the Gauss-Newton direction lowers the residual (the model does not fit "
+                            "these data, or the start is too far)";
+      }
+      break;
+    }
+    X = next;
+    if ((t * Scalar(2) * dX).cwiseAbs().maxCoeff() < options.tolerance) {
+      r.summary.termination = Termination::converged;
+      r.summary.message = "converged";
       break;
     }
   }
   if (r.iterations > options.max_iterations) r.iterations = options.max_iterations;
+  r.summary.iterations = r.iterations;
   r.X = X;
 
   // Final residuals and the information matrix at the estimate.

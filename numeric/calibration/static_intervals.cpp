@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 #include "numeric/io/input_error.hpp"
 
@@ -9,6 +10,12 @@ namespace scalcal {
 namespace {
 
 constexpr std::size_t kLinesKept = 5;
+
+std::string seconds(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
 
 // An ADC's rail: zero, or an integer next to a power of two from 2^7 to 2^32 (full scale of an
 // 8- to 32-bit converter, signed or unsigned). Only at a rail is a plateau clipping: a quiet output
@@ -50,10 +57,81 @@ std::vector<char> saturated_samples(const RawLog& log) {
   return out;
 }
 
-}  // namespace
+// The noise floor from the log itself: the median of the quiet windows, those below 3 times the 5 %
+// quantile of all windows' variance norms. A quantised quiet output can make most quiet windows
+// exactly zero: the positive ones set the floor then.
+double quiet_floor(std::vector<double> v) {
+  const auto quantile = [](std::vector<double>& x, double q) {
+    const auto k = static_cast<std::size_t>(q * static_cast<double>(x.size() - 1));
+    std::nth_element(x.begin(), x.begin() + static_cast<std::ptrdiff_t>(k), x.end());
+    return x[k];
+  };
+  double low = quantile(v, 0.05);
+  if (!(low > 0)) {
+    std::vector<double> positive;
+    for (double x : v)
+      if (x > 0) positive.push_back(x);
+    if (positive.empty()) return 0;
+    v = positive;
+    low = quantile(v, 0.05);
+  }
+  std::vector<double> quiet;
+  for (double x : v)
+    if (x <= 3 * low) quiet.push_back(x);
+  return quantile(quiet, 0.5);
+}
 
-IntervalDetection detect_static_intervals(const RawLog& log, const StaticIntervalOptions& options) {
-  IntervalDetection d;
+// The variance norm of the window of w samples centred on each sample, by prefix sums (shifted
+// by `shift`: raw sums of counts near 32768 would cancel badly); NaN where the window is incomplete
+// or holds an unusable sample.
+std::vector<double> window_variances(const RawLog& log, const std::vector<char>& usable, int w, const Vec3& shift) {
+  const int n = log.size(), h = w / 2;
+  std::vector<Vec3> ps(static_cast<std::size_t>(n) + 1, Vec3::Zero()), ps2(static_cast<std::size_t>(n) + 1, Vec3::Zero());
+  std::vector<int> bad(static_cast<std::size_t>(n) + 1, 0);
+  for (int i = 0; i < n; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    const Vec3 s = usable[k] ? Vec3(log.samples[k] - shift) : Vec3::Zero();
+    ps[k + 1] = ps[k] + s;
+    ps2[k + 1] = ps2[k] + s.cwiseProduct(s);
+    bad[k + 1] = bad[k] + (usable[k] ? 0 : 1);
+  }
+  std::vector<double> out(static_cast<std::size_t>(n), NAN);
+  for (int i = h; i + h < n; ++i) {
+    const auto a = static_cast<std::size_t>(i - h), b = static_cast<std::size_t>(i + h + 1);
+    if (bad[b] - bad[a] > 0) continue;
+    const Vec3 m = (ps[b] - ps[a]) / w;
+    const Vec3 var = (ps2[b] - ps2[a]) / w - m.cwiseProduct(m);
+    out[static_cast<std::size_t>(i)] = var.cwiseMax(0.0).norm();
+  }
+  return out;
+}
+
+// The noise floor of the first still_seconds (--still): IMU-TK's way, for logs known to start still.
+double still_floor(const RawLog& log, const std::vector<char>& usable, int first, const StaticIntervalOptions& o,
+                   int window, const Vec3& shift) {
+  Vec3 sum = Vec3::Zero(), sum2 = Vec3::Zero();
+  int count = 0;
+  const double end = log.t[static_cast<std::size_t>(first)] + o.still_seconds;
+  for (int i = first; i < log.size() && log.t[static_cast<std::size_t>(i)] <= end; ++i)
+    if (usable[static_cast<std::size_t>(i)]) {
+      const Vec3 s = log.samples[static_cast<std::size_t>(i)] - shift;
+      sum += s;
+      sum2 += s.cwiseProduct(s);
+      ++count;
+    }
+  if (count < window)
+    throw InputError(log.file, 0,
+                     "the initial still period (--still " + seconds(o.still_seconds) + " s) holds " +
+                         std::to_string(count) + " usable samples, fewer than one variance window (" +
+                         std::to_string(window) + "); lengthen --still, shorten --window, or drop --still (the noise "
+                         "floor then comes from the log's quiet windows)");
+  const Vec3 mean = sum / count;
+  return (sum2 / count - mean.cwiseProduct(mean)).cwiseMax(0.0).norm();
+}
+
+// Marks the unusable samples (non-finite, saturated), counts them, and sets the sample period and
+// the window in samples.
+std::vector<char> usable_samples(const RawLog& log, const StaticIntervalOptions& options, IntervalDetection& d) {
   const int n = log.size();
   std::vector<char> usable(static_cast<std::size_t>(n), 1);
   const std::vector<char> clipped = saturated_samples(log);
@@ -80,51 +158,40 @@ IntervalDetection detect_static_intervals(const RawLog& log, const StaticInterva
   // In doubles first: a log whose time steps are tiny would overflow an int.
   const double window = std::clamp(options.window_seconds / d.sample_period, 11.0, static_cast<double>(std::max(n, 11)));
   d.window = std::max(11, static_cast<int>(std::lround(window)) | 1);
-  const int h = d.window / 2;
+  return usable;
+}
 
-  // The still period: the usable samples within still_seconds of the first one.
+}  // namespace
+
+IntervalDetection detect_static_intervals(const RawLog& log, const StaticIntervalOptions& options) {
+  IntervalDetection d;
+  const int n = log.size();
+  const std::vector<char> usable = usable_samples(log, options, d);
   int first = 0;
   while (first < n && !usable[static_cast<std::size_t>(first)]) ++first;
-  Vec3 sum = Vec3::Zero(), sum2 = Vec3::Zero();
-  int count = 0;
-  for (int i = first; i < n && log.t[static_cast<std::size_t>(i)] <= log.t[static_cast<std::size_t>(first)] + options.still_seconds; ++i)
-    if (usable[static_cast<std::size_t>(i)]) {
-      const Vec3& s = log.samples[static_cast<std::size_t>(i)];
-      sum += s;
-      sum2 += s.cwiseProduct(s);
-      ++count;
-    }
-  if (count < d.window)
+  if (first == n && options.still_seconds > 0)
     throw InputError(log.file, 0,
-                     "the initial still period (" + std::to_string(options.still_seconds) + " s) holds " +
-                         std::to_string(count) + " usable samples, fewer than one variance window (" +
-                         std::to_string(d.window) + "); lengthen --still or shorten --window");
-  const Vec3 mean = sum / count;
-  d.still_variance = (sum2 / count - mean.cwiseProduct(mean)).cwiseMax(0.0).norm();
+                     "the initial still period (--still " + seconds(options.still_seconds) +
+                         " s) holds no usable sample (every row is non-finite or saturated)");
+  if (first == n) throw InputError(log.file, 0, "no usable sample (every row is non-finite or saturated)");
+  const Vec3 shift = log.samples[static_cast<std::size_t>(first)];
+  const std::vector<double> variance = window_variances(log, usable, d.window, shift);
+  std::vector<double> finite;
+  for (double v : variance)
+    if (std::isfinite(v)) finite.push_back(v);
+  if (finite.empty())
+    throw InputError(log.file, 0,
+                     "the log holds no complete window of " + std::to_string(d.window) + " usable samples; shorten --window");
+  d.floor_from_still = options.still_seconds > 0;
+  d.still_variance = d.floor_from_still ? still_floor(log, usable, first, options, d.window, shift) : quiet_floor(finite);
   if (!(d.still_variance > 0))
     throw InputError(log.file, 0,
-                     "the initial still period has no noise at all (a constant or clipped output): nothing to set the "
-                     "static threshold by");
+                     std::string(d.floor_from_still ? "the initial still period" : "the log") +
+                         " has no noise at all (a constant or clipped output): nothing to set the static threshold by");
   d.threshold = options.threshold_factor * d.still_variance;
-
-  // Moving variance by prefix sums over the samples (an unusable sample makes its windows unusable).
-  std::vector<Vec3> ps(static_cast<std::size_t>(n) + 1, Vec3::Zero()), ps2(static_cast<std::size_t>(n) + 1, Vec3::Zero());
-  std::vector<int> bad(static_cast<std::size_t>(n) + 1, 0);
-  for (int i = 0; i < n; ++i) {
-    const auto k = static_cast<std::size_t>(i);
-    const Vec3 s = usable[k] ? log.samples[k] : Vec3::Zero();
-    ps[k + 1] = ps[k] + s;
-    ps2[k + 1] = ps2[k] + s.cwiseProduct(s);
-    bad[k + 1] = bad[k] + (usable[k] ? 0 : 1);
-  }
   const auto is_static = [&](int i) {
-    if (i - h < 0 || i + h >= n) return false;
-    const auto a = static_cast<std::size_t>(i - h), b = static_cast<std::size_t>(i + h + 1);
-    if (bad[b] - bad[a] > 0) return false;
-    const Vec3 m = (ps[b] - ps[a]) / d.window;
-    // Shifted by the window's mean: the raw sums of counts near 32768 would cancel badly.
-    Vec3 var = (ps2[b] - ps2[a]) / d.window - m.cwiseProduct(m);
-    return var.cwiseMax(0.0).norm() < d.threshold;
+    const double v = variance[static_cast<std::size_t>(i)];
+    return std::isfinite(v) && v < d.threshold;
   };
   const int min_samples =
       static_cast<int>(std::clamp(std::ceil(options.min_seconds / d.sample_period), 1.0, static_cast<double>(n) + 1));
@@ -135,8 +202,12 @@ IntervalDetection detect_static_intervals(const RawLog& log, const StaticInterva
     }
     int j = i;
     while (j + 1 < n && is_static(j + 1)) ++j;
-    if (j - i + 1 >= min_samples)
+    if (j - i + 1 >= min_samples) {
       d.intervals.push_back({i, j, log.t[static_cast<std::size_t>(i)], log.t[static_cast<std::size_t>(j)]});
+      d.longest_fraction = std::max(d.longest_fraction, static_cast<double>(j - i + 1) / n);
+    } else {
+      ++d.short_runs;
+    }
     i = j + 1;
   }
   return d;

@@ -1,10 +1,14 @@
 // Static positions in a raw log: where the meter stood still. The variance of each output over a
-// moving window, its norm over the three outputs, is compared with the same norm over the log's
-// initial still period: a sample is static where it stays below threshold_factor times that
-// (the noise of the sensor at rest, so no units or sensor type enter). Runs of static samples of
-// at least min_seconds are the intervals; non-finite and saturated samples break a run and are
-// counted, never dropped silently. The idea is IMU-TK's (Tedaldi et al. 2014); so are the defaults'
-// orders of magnitude.
+// moving window, its norm over the three outputs, is compared with the noise floor of the sensor at
+// rest: a sample is static where it stays below threshold_factor times that (so no units or sensor
+// type enter). Runs of static samples of at least min_seconds are the intervals; non-finite and
+// saturated samples break a run and are counted, never dropped silently. The idea is IMU-TK's
+// (Tedaldi et al. 2014), and so are the defaults' orders of magnitude; but IMU-TK (and this code
+// before) takes the noise floor from an initial still period, which a log that starts with motion
+// does not have. Here the floor comes from the log itself: the quiet windows are those below 3 times
+// the 5 % quantile of all windows' variance norms, and the floor is their median (the typical still
+// window, not the quietest). A log that is still for less than 5 % of its windows has too few
+// positions anyway. `still_seconds` > 0 restores the initial-period floor.
 #pragma once
 #include <string>
 #include <vector>
@@ -14,7 +18,7 @@
 namespace scalcal {
 
 struct StaticIntervalOptions {
-  double still_seconds = 30;     // the initial still period: its noise sets the threshold
+  double still_seconds = 0;      // > 0: the initial still period of this length sets the floor; 0: the quiet windows
   double window_seconds = 1;     // the moving variance's window (an odd number of samples, at least 11)
   double threshold_factor = 6;   // static below this times the still period's variance norm
   double min_seconds = 1;        // shorter runs are not positions
@@ -30,15 +34,18 @@ struct IntervalDetection {
   std::vector<StaticInterval> intervals;
   double sample_period = 0;      // the median time step, seconds
   int window = 0;                // samples
-  double still_variance = 0;     // the still period's variance norm (file units squared)
+  double still_variance = 0;     // the noise floor: a still window's variance norm (file units squared)
+  bool floor_from_still = false; // the floor came from the initial still period (--still), not the quiet windows
   double threshold = 0;          // what a window's variance norm must stay below
+  int short_runs = 0;            // static runs shorter than min_seconds (not positions)
+  double longest_fraction = 0;   // the longest interval's share of the log's samples
   int nonfinite = 0;             // rows with a NaN or infinite value
   int saturated = 0;             // samples at an output's extreme and at an ADC rail (0, 2^k or 2^k - 1), three or more in a row
   std::vector<int> nonfinite_lines, saturated_lines;  // the first few of each, for messages
 };
 
-// Throws InputError (the log's file) when the still period is shorter than the window, or not
-// still at all (its variance is zero: a constant or clipped signal).
+// Throws InputError (the log's file) when the log is shorter than the window, when the still period
+// (still_seconds > 0) is, or when no window has any noise (a constant or clipped signal).
 IntervalDetection detect_static_intervals(const RawLog& log, const StaticIntervalOptions& options = {});
 
 }  // namespace scalcal

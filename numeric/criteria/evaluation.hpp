@@ -12,6 +12,7 @@
 
 #include <Eigen/SVD>
 
+#include "numeric/criteria/evaluation_models.hpp"
 #include "numeric/criteria/registry.hpp"
 #include "numeric/model/design.hpp"
 #include "numeric/program/program.hpp"
@@ -129,9 +130,14 @@ EvaluationTpl<Scalar, Model> evaluate(const ProgramTpl<Scalar>& program) {
   return ev;
 }
 
-// The paper's model in double is evaluated everywhere (CLI, reproduce, synthesis); its SVD costs
-// about 25 s of compile time per translation unit, so it is instantiated once, in evaluation.cpp.
-extern template EvaluationTpl<double, Paper9Model> evaluate<Paper9Model, double>(const ProgramTpl<double>&);
+// Every registered model in double is evaluated in many units (CLI, reproduce, synthesis); its SVD
+// costs about 25 s of compile time per unit, so it is instantiated once per model, in that model's
+// generated evaluation unit (evaluation_unit.cpp.in).
+#define SCALCAL_EVALUATE_INSTANCES(prefix, M) \
+  prefix template EvaluationTpl<double, M> evaluate<M, double>(const ProgramTpl<double>&);
+#define SCALCAL_EXTERN_EVALUATE(M) SCALCAL_EVALUATE_INSTANCES(extern, M)
+SCALCAL_FOR_EACH_MODEL(SCALCAL_EXTERN_EVALUATE)
+#undef SCALCAL_EXTERN_EVALUATE
 
 // The normalised value of one registered criterion (+infinity when rank < P).
 template <class Model = Paper9Model, class Scalar>

@@ -1,5 +1,6 @@
 #include "numeric/io/raw_log.hpp"
 
+#include <cctype>
 #include <cmath>
 #include <sstream>
 
@@ -24,19 +25,33 @@ bool RawLog::finite(int i) const {
   return std::isfinite(t[k]) && std::isfinite(samples[k](0)) && std::isfinite(samples[k](1)) && std::isfinite(samples[k](2));
 }
 
-bool is_raw_log(const CsvTable& table) { return table.has("t") && !table.has("position"); }
+int time_column(const CsvTable& table) {
+  for (std::size_t k = 0; k < table.columns.size(); ++k) {
+    std::string name = table.columns[k];
+    for (char& c : name) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (name == "t" || name == "t_s" || name == "time" || name == "time_s" || name == "timestamp")
+      return static_cast<int>(k);
+  }
+  return -1;
+}
 
-RawLog raw_log_from_table(const CsvTable& table) {
-  for (const char* c : {"t", "ix", "iy", "iz"})
-    if (!table.has(c)) throw InputError(table.file, 1, std::string("missing column '") + c + "' (a raw log needs t,ix,iy,iz)");
-  const int ct = table.column("t"), ix = table.column("ix"), iy = table.column("iy"), iz = table.column("iz");
+bool is_raw_log(const CsvTable& table) { return time_column(table) >= 0 && !table.has("position"); }
+
+RawLog raw_log_from_table(const CsvTable& table, double rate) {
+  const int ct = time_column(table);
+  if (ct < 0 && !(rate > 0))
+    throw InputError(table.file, 1,
+                     "no time column (t, t_s, time, time_s or timestamp): give the sample rate with --rate HZ");
+  for (const char* c : {"ix", "iy", "iz"})
+    if (!table.has(c)) throw InputError(table.file, 1, std::string("missing column '") + c + "' (a raw log needs ix,iy,iz)");
+  const int ix = table.column("ix"), iy = table.column("iy"), iz = table.column("iz");
   RawLog log;
   log.file = table.file;
   double last = -INFINITY;
   int last_line = 0, finite_rows = 0;
   for (const auto& row : table.rows) {
     const auto& v = row.values;
-    log.t.push_back(v[static_cast<std::size_t>(ct)]);
+    log.t.push_back(rate > 0 ? static_cast<double>(log.t.size()) / rate : v[static_cast<std::size_t>(ct)]);
     log.samples.emplace_back(v[static_cast<std::size_t>(ix)], v[static_cast<std::size_t>(iy)], v[static_cast<std::size_t>(iz)]);
     log.lines.push_back(row.line);
     if (!log.finite(log.size() - 1)) continue;
@@ -53,9 +68,29 @@ RawLog raw_log_from_table(const CsvTable& table) {
   return log;
 }
 
-RawLog read_raw_log(const std::string& path, LogFormat format) { return parse_raw_log(read_text_file(path), path, format); }
+RawLog read_raw_log(const std::string& path, LogFormat format, double rate) {
+  return parse_raw_log(read_text_file(path), path, format, rate);
+}
 
-RawLog parse_raw_log(std::string text, const std::string& path, LogFormat format) {
+namespace {
+
+// Fields on the first line that is neither blank nor a comment (text logs have no header).
+int text_fields(const std::string& text) {
+  std::istringstream in(text);
+  std::string line;
+  while (std::getline(in, line)) {
+    if (const auto hash = line.find('#'); hash != std::string::npos) line.erase(hash);
+    std::istringstream fields(line);
+    int n = 0;
+    for (std::string f; fields >> f;) ++n;
+    if (n > 0) return n;
+  }
+  return 0;
+}
+
+}  // namespace
+
+RawLog parse_raw_log(std::string text, const std::string& path, LogFormat format, double rate) {
   if (text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);
   if (format == LogFormat::automatic) format = looks_like_text_log(text) ? LogFormat::text : LogFormat::csv;
   TableFormat f;
@@ -63,8 +98,9 @@ RawLog parse_raw_log(std::string text, const std::string& path, LogFormat format
   if (format == LogFormat::text) {
     f.whitespace = true;
     f.columns = {"t", "ix", "iy", "iz"};
+    if (rate > 0 && text_fields(text) == 3) f.columns = {"ix", "iy", "iz"};
   }
-  return raw_log_from_table(parse_table(text, path, f));
+  return raw_log_from_table(parse_table(text, path, f), rate);
 }
 
 }  // namespace scalcal

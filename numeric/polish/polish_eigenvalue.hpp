@@ -32,6 +32,7 @@
 #include "numeric/criteria/evaluation.hpp"
 #include "numeric/polish/newton_least_squares.hpp"
 #include "numeric/polish/polish.hpp"
+#include "numeric/polish/polish_ops.hpp"
 
 namespace scalcal::polish_detail {
 
@@ -222,9 +223,10 @@ struct Attempt {
 
 }  // namespace eigen_form
 
-// Runs under the caller's precision guard (W = 2P + 30 digits).
-template <MaxEigenvalueCriterion C, class Model>
-PolishResult polish_eigenvalue(const Program& program, const PolishOptions& options) {
+// Runs under the caller's precision guard (W = 2P + 30 digits). Compiled once for the paper's model
+// (polish_eigenvalue.cpp).
+template <class Model>
+PolishResult polish_eigenvalue(const PolishOps<Model>& criterion, const Program& program, const PolishOptions& options) {
   using namespace eigen_form;
   using MatP = InformationT<Model, Real>;
   PolishResult out;
@@ -241,7 +243,7 @@ PolishResult polish_eigenvalue(const Program& program, const PolishOptions& opti
     out.summary.message = "rank-deficient program: E is infinite";
     return out;
   }
-  const Real start_E = criterion_value<C, Model>(ProgramTpl<Real>{eta});
+  const Real start_E = polish_value(criterion, ProgramTpl<Real>{eta});
 
   std::vector<Attempt> attempts;
   for (int m : multiplicity_guesses(eig.eigenvalues())) {
@@ -253,7 +255,7 @@ PolishResult polish_eigenvalue(const Program& program, const PolishOptions& opti
                                   a.iterations, true);
     out.summary.iterations += a.iterations;
     for (const auto& v : kkt.positions(a.z)) a.program.positions.push_back(v / v.norm());
-    a.E = criterion_value<C, Model>(a.program);
+    a.E = polish_value(criterion, a.program);
     a.converged = a.norm <= target;
     // First-order conditions also hold at saddles of lambda on the multiplicity-m manifold: at
     // N = 9 near E = 12.3957 Ipopt results lay 1e-6 from such a root with E lower by 1e-11. So a
@@ -285,5 +287,8 @@ PolishResult polish_eigenvalue(const Program& program, const PolishOptions& opti
   out.program = best.program.cast<double>();
   return out;
 }
+
+extern template PolishResult polish_eigenvalue<Paper9Model>(const PolishOps<Paper9Model>&, const Program&,
+                                                            const PolishOptions&);
 
 }  // namespace scalcal::polish_detail

@@ -1,6 +1,7 @@
-// The polish for one criterion type and model: the first-order conditions its form calls for
+// The polish for one criterion and model: the first-order conditions its form calls for
 // (polish_kkt.hpp for the smooth and max-diagonal forms, polish_eigenvalue.hpp for the eigenvalue
-// form), solved at W = 2P + 30 digits.
+// form), solved at W = 2P + 30 digits. The criterion comes in as a PolishOps (polish_ops.hpp), so
+// the MPFR code is compiled once per model and form; for the paper's model in the library.
 #pragma once
 #include <stdexcept>
 #include <string>
@@ -11,8 +12,10 @@
 
 namespace scalcal {
 
-template <Criterion C, class Model = Paper9Model>
-PolishResult polish(const Program& program, const PolishOptions& options) {
+// The polish of a criterion under the model, whatever its form.
+template <class Model>
+PolishResult polish_with(const polish_detail::PolishOps<Model>& criterion, const Program& program,
+                         const PolishOptions& options) {
   if (options.digits < 1) throw std::invalid_argument("polish: the number of digits must be at least 1");
   if (program.size() < Model::kParameters)
     throw std::invalid_argument("polish: at least " + std::to_string(Model::kParameters) + " positions are needed");
@@ -21,9 +24,14 @@ PolishResult polish(const Program& program, const PolishOptions& options) {
   if (!ev.full_rank()) throw std::invalid_argument("polish: " + rank_deficiency(erase_model(ev, ModelKind(kModelIndex<Model>))));
   const unsigned W = static_cast<unsigned>(2 * options.digits + 30);
   polish_detail::PrecisionGuard guard(W);
-  if constexpr (MaxEigenvalueCriterion<C>) return polish_detail::polish_eigenvalue<C, Model>(program, options);
-  else if constexpr (SmoothCriterion<C> || MaxDiagonalCriterion<C>) return polish_detail::polish_kkt<C, Model>(program, options);
-  else static_assert(!kUnknownForm<C>, "a criterion needs one of the forms of criteria/criterion.hpp");
+  if (criterion.form == polish_detail::PolishForm::MaxEigenvalue)
+    return polish_detail::polish_eigenvalue<Model>(criterion, program, options);
+  return polish_detail::polish_kkt<Model>(criterion, program, options);
+}
+
+template <Criterion C, class Model = Paper9Model>
+PolishResult polish(const Program& program, const PolishOptions& options) {
+  return polish_with<Model>(polish_detail::polish_ops<C, Model>(), program, options);
 }
 
 }  // namespace scalcal

@@ -15,6 +15,7 @@
 #include "numeric/criteria/evaluation.hpp"
 #include "numeric/polish/newton_least_squares.hpp"
 #include "numeric/polish/polish.hpp"
+#include "numeric/polish/polish_ops.hpp"
 
 namespace scalcal::polish_detail {
 
@@ -24,11 +25,12 @@ inline PositionsT<Real> positions_of(const VecX& z, int n) {
   return eta;
 }
 
-// The first-order conditions of criterion C, as a residual of the unknowns z. `active` holds the
-// active pieces of a max-diagonal criterion (indices into C::rows), empty for a smooth one.
-template <Criterion C, class Model>
+// The first-order conditions of a criterion, as a residual of the unknowns z. `active` holds the
+// active pieces of a max-diagonal criterion (indices into its rows), empty for a smooth one.
+template <class Model>
 struct KktConditions {
-  static constexpr bool pieces = MaxDiagonalCriterion<C>;
+  const PolishOps<Model>& criterion;
+  bool pieces = false;  // the max-diagonal form
   int n = 0;
   std::vector<int> active;  // rows r of K(r,r) that reach the maximum
 
@@ -39,7 +41,7 @@ struct KktConditions {
   PositionsT<Real> gradient(const PositionsT<Real>& eta, const VecX& z, VecX& F) const {
     bool ok = true;
     PositionsT<Real> g;
-    if constexpr (pieces) {
+    if (pieces) {
       std::vector<PositionsT<Real>> grads;
       const std::vector<Real> d = diagonal_pieces<Model>(eta, active, &grads, ok);
       g.assign(static_cast<std::size_t>(n), Vec3T<Real>::Zero());
@@ -53,7 +55,7 @@ struct KktConditions {
       }
       F(3 * n) = Real(1) - sum_mu;
     } else {
-      smooth_objective<C, Model>(eta, &g, ok);
+      smooth_gradient(eta, g, ok);
     }
     if (!ok) g.clear();  // M is not positive definite at eta: no gradient
     return g;
@@ -84,7 +86,7 @@ struct KktConditions {
     MatX A = MatX::Zero(rows, cols);
     VecX b = VecX::Zero(rows);
     bool ok = true;
-    if constexpr (pieces) {
+    if (pieces) {
       std::vector<PositionsT<Real>> grads;
       const std::vector<Real> d = diagonal_pieces<Model>(eta, active, &grads, ok);
       if (!ok) throw std::invalid_argument("polish: the information matrix is singular at the start");
@@ -97,7 +99,7 @@ struct KktConditions {
       b(3 * n) = Real(1);
     } else {
       PositionsT<Real> g;
-      smooth_objective<C, Model>(eta, &g, ok);
+      smooth_gradient(eta, g, ok);
       if (!ok) throw std::invalid_argument("polish: the information matrix is singular at the start");
       for (int i = 0; i < n; ++i)
         for (int c = 0; c < 3; ++c) b(3 * i + c) = -g[static_cast<std::size_t>(i)](c);
@@ -108,20 +110,27 @@ struct KktConditions {
     for (int a = 0; a < m; ++a) z(3 * n + 1 + a) = x(a);
     for (int i = 0; i < n; ++i) z(nu0 + i) = x(m + i);
   }
+
+  // The smooth criterion's gradient over the positions.
+  void smooth_gradient(const PositionsT<Real>& eta, PositionsT<Real>& g, bool& ok) const {
+    MatrixDerivatives<Real, Model::kParameters> d;
+    ok = criterion.derivatives(information_matrix<Model>(eta), static_cast<int>(eta.size()), d);
+    if (ok) g = gradient_from_dM<Model>(eta, d.G);
+  }
 };
 
-// Runs under the caller's precision guard (W = 2P + 30 digits).
-template <Criterion C, class Model>
-PolishResult polish_kkt(const Program& program, const PolishOptions& options) {
+// Runs under the caller's precision guard (W = 2P + 30 digits). Compiled once for the paper's model
+// (polish_kkt.cpp), for the smooth and the max-diagonal form.
+template <class Model>
+PolishResult polish_kkt(const PolishOps<Model>& criterion, const Program& program, const PolishOptions& options) {
   PolishResult out;
   out.program = program;
   const int P = std::max(options.digits, 1);
   const int n = program.size();
-  KktConditions<C, Model> kkt;
-  kkt.n = n;
-  if constexpr (MaxDiagonalCriterion<C>) {
+  KktConditions<Model> kkt{criterion, criterion.form == PolishForm::MaxDiagonal, n, {}};
+  if (kkt.pieces) {
     bool ok = true;
-    const std::vector<int> rows = C::template rows<Model>();
+    const std::vector<int>& rows = criterion.rows;
     const std::vector<double> d = diagonal_pieces<Model>(program.positions, rows, nullptr, ok);
     if (!ok) throw std::invalid_argument("polish: the information matrix of the program is singular");
     const double top = *std::max_element(d.begin(), d.end());
@@ -149,12 +158,14 @@ PolishResult polish_kkt(const Program& program, const PolishOptions& options) {
     const Vec3T<Real> e(z(3 * i), z(3 * i + 1), z(3 * i + 2));
     polished.positions.push_back(e / e.norm());
   }
-  const Real value = criterion_value<C, Model>(polished);
+  const Real value = polish_value(criterion, polished);
   // A residual r moves the value by O(r) at most: claim only the digits it leaves untouched.
   out.digits = converged ? P : digits_left_by(norm, P);
   out.value_digits = value.str(out.digits, std::ios_base::showpoint);
   out.program = polished.template cast<double>();
   return out;
 }
+
+extern template PolishResult polish_kkt<Paper9Model>(const PolishOps<Paper9Model>&, const Program&, const PolishOptions&);
 
 }  // namespace scalcal::polish_detail

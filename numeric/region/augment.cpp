@@ -1,3 +1,6 @@
+// Augmenting a lab's program: greedy and exchange on the region's grid, then the added positions
+// optimised jointly inside the zones from several starts (augment_polish.hpp); one body per model
+// (the criterion comes in as a CriterionOps).
 #include "numeric/region/augment.hpp"
 
 #include <cmath>
@@ -6,28 +9,28 @@
 #include "numeric/synthesis/exchange.hpp"
 #include "numeric/region/region_synthesis.hpp"
 #include "numeric/synthesis/ipopt_local.hpp"
-#include "numeric/synthesis/workers.hpp"
+#include "numeric/synthesis/synthesis_models.hpp"
 
 namespace scalcal {
 namespace {
 
-template <Criterion C, class Model>
-AugmentedProgram augment_with(const Program& given, int add, const Region& region, ModelKind model,
-                              const AugmentPolishOptions& options) {
+template <class Model>
+AugmentedProgram augment_with(const CriterionOps<Model>& criterion, const Program& given, int add, const Region& region,
+                              ModelKind model, const AugmentPolishOptions& options) {
   AugmentedProgram out;
-  out.value_before = given.size() > 0 ? criterion_value<C, Model>(given) : INFINITY;
+  out.value_before = given.size() > 0 ? criterion_value(criterion, given) : INFINITY;
   if (!std::isfinite(out.value_before)) out.value_before = INFINITY;
   // Greedy on the grid (ranked through a ridge while the program is rank-deficient, so that what a
   // candidate makes identifiable decides), then exchanges among the added positions.
   const std::vector<Vec3> candidates = region.grid(region.grid_step_for(kRegionGridCandidates));
-  const ExchangeResult ex = greedy_exchange(CriterionKind::of<C>(), candidates, given.positions, add, model);
+  const ExchangeResult ex = greedy_exchange(*criterion.kind, candidates, given.positions, add, model);
   // Then the added positions move jointly inside their zones, the given ones held fixed, from the
   // exchange and from random starts (in worker processes: Ipopt's MUMPS state must not be inherited
   // by later forks).
-  const auto value_of = [](const Program& p) { return criterion_value<C, Model>(p); };
   const PolishedAddition best = polish_added(
-      CriterionKind::of<C>(), model, region, given.positions, ex, candidates, options, value_of,
-      [](const Program& start, const PositionBounds& bounds) { return optimize_with_ipopt<C, Model>(start, {}, &bounds); });
+      *criterion.kind, model, region, given.positions, ex, candidates, options,
+      [&criterion](const Program& p) { return criterion_value(criterion, p); },
+      [&criterion](const Program& start, const PositionBounds& bounds) { return ipopt_local<Model>(criterion, start, {}, &bounds); });
   out.program = given;
   out.added = best.added;
   out.program.positions.insert(out.program.positions.end(), out.added.begin(), out.added.end());
@@ -42,10 +45,15 @@ AugmentedProgram augment_with(const Program& given, int add, const Region& regio
 
 AugmentedProgram augment_program(const Program& given, int add, CriterionKind criterion, const Region& region,
                                  ModelKind model, const AugmentPolishOptions& polish) {
-  return visit_model(model, [&](auto M) {
-    return visit_criterion(criterion, [&](auto C) {
-      return augment_with<decltype(C), decltype(M)>(given, add, region, model, polish);
-    });
+  return visit_model(model, [&](auto M) -> AugmentedProgram {
+    using Model = decltype(M);
+    if constexpr (kSynthesisBuilt<Model>) {
+      return visit_criterion(criterion, [&](auto C) {
+        return augment_with<Model>(criterion_ops<decltype(C), Model>(), given, add, region, model, polish);
+      });
+    } else {
+      throw_no_synthesis(Model::name);
+    }
   });
 }
 

@@ -60,7 +60,7 @@ SynthesisResult synthesize_region_with(const SynthesisOptions& options, const Re
   const std::vector<LocalResult> results = run_in_workers(
       starts, thread_count(options.threads), options.positions,
       [&](int k) { return region_start<C>(region, candidates, options.positions, options.seed, k); }, options.progress);
-  SynthesisResult out = best_of_starts<C>(results);
+  SynthesisResult out = best_of_starts(results);
   out.starts = starts;
   out.stopping = (options.starts > 0 ? "forced " : "cap ") + std::to_string(starts);
   out.local_solver = region.zones.empty() ? "exchange" : "exchange+ipopt";
@@ -68,7 +68,7 @@ SynthesisResult synthesize_region_with(const SynthesisOptions& options, const Re
                             ? "the best start is an exchange optimum on the candidates"
                             : (out.summary.converged() ? "Ipopt converged from the best exchange program"
                                                        : "Ipopt did not converge from the best exchange program");
-  count_hits<C>(results, out);
+  count_hits(results, C::symmetry, out);
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;
 }

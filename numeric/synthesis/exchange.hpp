@@ -30,4 +30,12 @@ ExchangeResult exchange(CriterionKind criterion, const std::vector<Vec3>& candid
 ExchangeResult greedy_exchange(CriterionKind criterion, const std::vector<Vec3>& candidates,
                                const std::vector<Vec3>& given, int count, ModelKind model = ModelKind::paper9);
 
+// The same for one model type of this build's synthesis (exchanger.hpp; compiled in the model's unit).
+template <class Model>
+ExchangeResult exchange_for(CriterionKind criterion, const std::vector<Vec3>& candidates, std::vector<Vec3> positions,
+                            int fixed, int max_passes);
+template <class Model>
+ExchangeResult greedy_exchange_for(CriterionKind criterion, const std::vector<Vec3>& candidates,
+                                   const std::vector<Vec3>& given, int count);
+
 }  // namespace scalcal

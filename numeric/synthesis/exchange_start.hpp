@@ -28,12 +28,10 @@ inline std::vector<Vec3> spiral_grid(int n) {
   return out;
 }
 
-// `start` exchanged onto the spiral grid for criterion C of the registered model M.
-template <class C, class M>
-Program exchanged_start(const Program& start) {
-  static_assert(kModelIndex<M> >= 0, "exchanged_start: the model must be registered");
+// `start` exchanged onto the spiral grid for the criterion under the model.
+inline Program exchanged_start(CriterionKind criterion, ModelKind model, const Program& start) {
   static const std::vector<Vec3> grid = spiral_grid(kExchangeGridPoints);
-  return Program{exchange(CriterionKind::of<C>(), grid, start.positions, 0, 100, ModelKind(kModelIndex<M>)).positions};
+  return Program{exchange(criterion, grid, start.positions, 0, 100, model).positions};
 }
 
 }  // namespace scalcal

@@ -16,11 +16,25 @@ namespace scalcal {
 LocalResult run_ipopt(const SmoothProblem& problem, const Program& start, const LocalOptions& options,
                       const std::function<double(const Program&)>& value_of, const PositionBounds* bounds = nullptr);
 
+// One Ipopt run of a criterion under the model (compiled once per model).
+template <class Model>
+LocalResult ipopt_local(const CriterionOps<Model>& criterion, const Program& start, const LocalOptions& options = {},
+                        const PositionBounds* bounds = nullptr) {
+  const std::unique_ptr<SmoothProblem> problem = make_problem<Model>(criterion, start.size());
+  return run_ipopt(*problem, start, options, [&criterion](const Program& p) { return criterion_value(criterion, p); }, bounds);
+}
+
 template <Criterion C, class Model = Paper9Model>
 LocalResult optimize_with_ipopt(const Program& start, const LocalOptions& options = {},
                                 const PositionBounds* bounds = nullptr) {
-  const std::unique_ptr<SmoothProblem> problem = make_problem<C, Model>(start.size());
-  return run_ipopt(*problem, start, options, [](const Program& p) { return criterion_value<C, Model>(p); }, bounds);
+  return ipopt_local<Model>(criterion_ops<C, Model>(), start, options, bounds);
 }
+
+#define SCALCAL_IPOPT_LOCAL_INSTANCES(prefix, M)                                                             \
+  prefix template LocalResult ipopt_local<M>(const CriterionOps<M>&, const Program&, const LocalOptions&, \
+                                             const PositionBounds*);
+#define SCALCAL_EXTERN_IPOPT_LOCAL(M) SCALCAL_IPOPT_LOCAL_INSTANCES(extern, M)
+SCALCAL_FOR_EACH_SYNTHESIS_MODEL(SCALCAL_EXTERN_IPOPT_LOCAL)
+#undef SCALCAL_EXTERN_IPOPT_LOCAL
 
 }  // namespace scalcal

@@ -13,6 +13,8 @@
 #include "numeric/criteria/derivatives.hpp"
 #include "numeric/criteria/registry.hpp"
 #include "numeric/program/program.hpp"
+#include "numeric/synthesis/criterion_ops.hpp"
+#include "numeric/synthesis/synthesis_models.hpp"
 
 namespace scalcal {
 
@@ -75,32 +77,39 @@ class SmoothProblem {
   int positions_;
 };
 
-template <SmoothCriterion C, class Model>
+// A smooth criterion's objective over the positions, from its SmoothOps.
+template <class Model>
 class SmoothCriterionProblem : public SmoothProblem {
  public:
-  using SmoothProblem::SmoothProblem;
+  static constexpr int P = Model::kParameters;
+  SmoothCriterionProblem(int positions, SmoothOps<double, P> criterion) : SmoothProblem(positions), criterion_(criterion) {}
   bool long_runs() const override { return false; }
   bool objective(const double* x, double& f, double* grad) const override {
-    bool ok;
-    PositionsT<double> g;
-    f = smooth_objective<C, Model>(positions_of(x), grad ? &g : nullptr, ok);
-    if (ok && grad) scatter(g, grad);
-    return ok;
+    const PositionsT<double> eta = positions_of(x);
+    MatrixDerivatives<double, P> d;
+    if (!criterion_.derivatives(information_matrix<Model>(eta), positions(), d)) return false;
+    f = d.value;
+    if (grad) scatter(gradient_from_dM<Model>(eta, d.G), grad);
+    return true;
   }
   bool lagrangian_hessian(const double* x, double obj_factor, const double*, double* lower) const override {
-    bool ok;
-    const MatXT<double> H = smooth_hessian<C, Model>(positions_of(x), ok);
-    if (ok) pack_lower(H, obj_factor, variables(), lower);
-    return ok;
+    const PositionsT<double> eta = positions_of(x);
+    MatrixDerivatives<double, P> d;
+    if (!criterion_.derivatives(information_matrix<Model>(eta), positions(), d)) return false;
+    pack_lower(hessian_from_dM<Model>(eta, d.G, d.A, d.B, d.c), obj_factor, variables(), lower);
+    return true;
   }
+
+ private:
+  SmoothOps<double, P> criterion_;
 };
 
-// Epigraph of a max-diagonal criterion: min t s.t. N K(r,r) - t <= 0 for r in C::rows<Model>().
-template <MaxDiagonalCriterion C, class Model>
+// Epigraph of a max-diagonal criterion: min t s.t. N K(r,r) - t <= 0 for r in its rows.
+template <class Model>
 class MaxDiagonalProblem : public SmoothProblem {
  public:
   static constexpr int P = Model::kParameters;
-  explicit MaxDiagonalProblem(int positions) : SmoothProblem(positions), rows_(C::template rows<Model>()) {}
+  MaxDiagonalProblem(int positions, std::vector<int> rows) : SmoothProblem(positions), rows_(std::move(rows)) {}
   int extra() const override { return 1; }
   int constraints() const override { return static_cast<int>(rows_.size()); }
   std::vector<double> start(const Program& program) const override {
@@ -256,18 +265,30 @@ class MaxEigenvalueProblem : public SmoothProblem {
   }
 };
 
-// The nonlinear program of criterion C under the model, chosen by the criterion's form.
+// The nonlinear program of a criterion under the model, chosen by the criterion's form.
+template <class Model>
+std::unique_ptr<SmoothProblem> make_problem(const CriterionOps<Model>& criterion, int positions) {
+  switch (criterion.form) {
+    case CriterionForm::Smooth: return std::make_unique<SmoothCriterionProblem<Model>>(positions, criterion.smooth);
+    case CriterionForm::MaxDiagonal: return std::make_unique<MaxDiagonalProblem<Model>>(positions, criterion.rows);
+    default: return std::make_unique<MaxEigenvalueProblem<Model>>(positions);
+  }
+}
+
 template <Criterion C, class Model = Paper9Model>
 std::unique_ptr<SmoothProblem> make_problem(int positions) {
-  if constexpr (SmoothCriterion<C>) return std::make_unique<SmoothCriterionProblem<C, Model>>(positions);
-  else if constexpr (MaxDiagonalCriterion<C>) return std::make_unique<MaxDiagonalProblem<C, Model>>(positions);
-  else if constexpr (MaxEigenvalueCriterion<C>) return std::make_unique<MaxEigenvalueProblem<Model>>(positions);
-  else static_assert(!kUnknownForm<C>, "a criterion needs one of the forms of criteria/criterion.hpp");
+  return make_problem<Model>(criterion_ops<C, Model>(), positions);
 }
 
 // The same for a registered criterion chosen at run time, under the paper's model.
 inline std::unique_ptr<SmoothProblem> make_problem(CriterionKind criterion, int positions) {
   return visit_criterion(criterion, [positions](auto C) { return make_problem<decltype(C)>(positions); });
 }
+
+#define SCALCAL_IPOPT_PROBLEM_INSTANCES(prefix, M) \
+  prefix template std::unique_ptr<SmoothProblem> make_problem<M>(const CriterionOps<M>&, int);
+#define SCALCAL_EXTERN_IPOPT_PROBLEM(M) SCALCAL_IPOPT_PROBLEM_INSTANCES(extern, M)
+SCALCAL_FOR_EACH_SYNTHESIS_MODEL(SCALCAL_EXTERN_IPOPT_PROBLEM)
+#undef SCALCAL_EXTERN_IPOPT_PROBLEM
 
 }  // namespace scalcal

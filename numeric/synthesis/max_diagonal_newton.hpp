@@ -11,7 +11,9 @@
 
 #include "numeric/criteria/derivatives.hpp"
 #include "numeric/criteria/evaluation.hpp"
+#include "numeric/synthesis/criterion_ops.hpp"
 #include "numeric/synthesis/local_result.hpp"
+#include "numeric/synthesis/synthesis_models.hpp"
 
 namespace scalcal {
 
@@ -20,7 +22,7 @@ namespace max_diagonal_detail {
 // Unknowns z = (x_1..x_N, t, mu_a for the active rows, nu_1..nu_N); residual F(z) of
 //   sum_a mu_a grad g_a + 2 nu_i x_i = 0,  g_a = t,  sum_a mu_a = 1,  |x_i|^2 = 1,
 // with g_a = N K(a,a) at the unnormalised positions x_i, and its Jacobian when J is non-null.
-template <MaxDiagonalCriterion C, class Model>
+template <class Model>
 bool kkt(const Eigen::VectorXd& z, int n, const std::vector<int>& active, Eigen::VectorXd& F, Eigen::MatrixXd* J) {
   const int m = static_cast<int>(active.size()), t0 = 3 * n, mu0 = t0 + 1, nu0 = mu0 + m, size = nu0 + n;
   PositionsT<double> eta(static_cast<std::size_t>(n));
@@ -70,13 +72,13 @@ bool kkt(const Eigen::VectorXd& z, int n, const std::vector<int>& active, Eigen:
 
 // `best` refined by Newton on those conditions; unchanged unless the refined program has a lower
 // value with every multiplier non-negative (else the active set read off `best` was not the
-// optimum's).
-template <MaxDiagonalCriterion C, class Model = Paper9Model>
-LocalResult refine_max_diagonal(const LocalResult& best, int max_iterations = 8) {
+// optimum's). `criterion` is of the max-diagonal form (compiled once per model).
+template <class Model>
+LocalResult refine_active_diagonal(const CriterionOps<Model>& criterion, const LocalResult& best, int max_iterations = 8) {
   using namespace max_diagonal_detail;
   const int n = best.program.size();
   bool ok = true;
-  const std::vector<int> rows = C::template rows<Model>();
+  const std::vector<int>& rows = criterion.rows;
   const std::vector<double> g = diagonal_pieces<Model>(best.program.positions, rows, nullptr, ok);
   if (!ok) return best;
   const double t = *std::max_element(g.begin(), g.end());
@@ -105,7 +107,7 @@ LocalResult refine_max_diagonal(const LocalResult& best, int max_iterations = 8)
   }
   Eigen::VectorXd F;
   Eigen::MatrixXd J;
-  if (!kkt<C, Model>(z, n, active, F, &J)) return best;
+  if (!kkt<Model>(z, n, active, F, &J)) return best;
   double residual = F.norm();
   for (int it = 0; it < max_iterations && residual > 1e-15 * std::max(1.0, t); ++it) {
     Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod;
@@ -113,21 +115,32 @@ LocalResult refine_max_diagonal(const LocalResult& best, int max_iterations = 8)
     cod.compute(J);
     const Eigen::VectorXd trial = z - cod.solve(F);
     Eigen::VectorXd F_trial;
-    if (!kkt<C, Model>(trial, n, active, F_trial, nullptr) || !(F_trial.norm() < residual)) break;
+    if (!kkt<Model>(trial, n, active, F_trial, nullptr) || !(F_trial.norm() < residual)) break;
     z = trial;
     residual = F_trial.norm();
-    kkt<C, Model>(z, n, active, F, &J);
+    kkt<Model>(z, n, active, F, &J);
   }
   if ((z.segment(mu0, m).array() < -1e-10).any()) return best;
   LocalResult out = best;
   Program refined;
   for (int i = 0; i < n; ++i) refined.positions.push_back(Vec3(z.segment<3>(3 * i)).normalized());
-  const double value = criterion_value<C, Model>(refined);
+  const double value = criterion_value(criterion, refined);
   if (std::isfinite(value) && value < best.value) {
     out.program = std::move(refined);
     out.value = value;
   }
   return out;
 }
+
+template <MaxDiagonalCriterion C, class Model = Paper9Model>
+LocalResult refine_max_diagonal(const LocalResult& best, int max_iterations = 8) {
+  return refine_active_diagonal<Model>(criterion_ops<C, Model>(), best, max_iterations);
+}
+
+#define SCALCAL_REFINE_DIAGONAL_INSTANCES(prefix, M) \
+  prefix template LocalResult refine_active_diagonal<M>(const CriterionOps<M>&, const LocalResult&, int);
+#define SCALCAL_EXTERN_REFINE_DIAGONAL(M) SCALCAL_REFINE_DIAGONAL_INSTANCES(extern, M)
+SCALCAL_FOR_EACH_SYNTHESIS_MODEL(SCALCAL_EXTERN_REFINE_DIAGONAL)
+#undef SCALCAL_EXTERN_REFINE_DIAGONAL
 
 }  // namespace scalcal

@@ -1,5 +1,6 @@
-// The runtime multistart: every registered criterion's template instantiated once, here, for every
-// registered model.
+// The runtime multistart: the registered criterion and model chosen at run time, each model's
+// solvers compiled in its own unit (synthesis_unit.cpp.in); a registered model left out of this build
+// (SCALCAL_MODELS) answers with the models it has.
 #include "numeric/synthesis/multistart.hpp"
 
 #include "numeric/model/registry.hpp"
@@ -8,8 +9,15 @@
 namespace scalcal {
 
 SynthesisResult synthesize(const SynthesisOptions& options) {
-  return visit_model(options.model, [&](auto M) {
-    return visit_criterion(options.criterion, [&](auto C) { return synthesize<decltype(C), decltype(M)>(options); });
+  return visit_model(options.model, [&](auto M) -> SynthesisResult {
+    using Model = decltype(M);
+    if constexpr (kSynthesisBuilt<Model>) {
+      return visit_criterion(options.criterion, [&](auto C) {
+        return synthesize_with<Model>(criterion_ops<decltype(C), Model>(), options);
+      });
+    } else {
+      throw_no_synthesis(Model::name);
+    }
   });
 }
 

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "numeric/criteria/evaluation.hpp"
+#include "numeric/synthesis/criterion_ops.hpp"
 #include "numeric/synthesis/local_result.hpp"
 #include "numeric/synthesis/sphere_lbfgs.hpp"
 #include "numeric/synthesis/sphere_newton.hpp"
@@ -24,22 +25,33 @@ inline LocalSolver smooth_local_solver(LocalSolver requested, int positions) {
   return positions >= kLbfgsFromPositions ? LocalSolver::Lbfgs : LocalSolver::Newton;
 }
 
-// One start by `Solver` (SphereNewton or SphereLbfgs), kept only if it lowered the value.
-template <SmoothCriterion C, class Model, class Solver>
-LocalResult optimize_on_sphere(const Program& start, const char* converged_message) {
+// One start by Riemannian Newton or L-BFGS (`solver`), kept only if it lowered the value.
+template <class Model>
+LocalResult sphere_local(const CriterionOps<Model>& criterion, const Program& start, LocalSolver solver) {
   LocalResult out;
   out.program = start;
-  out.value = criterion_value<C, Model>(start);
+  out.value = criterion_value(criterion, start);
   if (!std::isfinite(out.value)) {
     out.summary.message = "rank-deficient start: no local model";
     return out;
   }
   Program moved = start;
-  const auto r = Solver().run(moved.positions);
-  out.summary.iterations = r.iterations;
-  out.summary.termination = r.converged ? Termination::converged : Termination::not_converged;
-  out.summary.message = r.converged ? converged_message : "stopped before its gradient tolerance";
-  const double value = criterion_value<C, Model>(moved);
+  const bool lbfgs = solver == LocalSolver::Lbfgs;
+  bool converged = false;
+  if (lbfgs) {
+    const auto r = SphereLbfgsSolver<Model>(criterion.smooth).run(moved.positions);
+    out.summary.iterations = r.iterations;
+    converged = r.converged;
+  } else {
+    const auto r = SphereNewtonSolver<Model>(criterion.smooth).run(moved.positions);
+    out.summary.iterations = r.iterations;
+    converged = r.converged;
+  }
+  out.summary.termination = converged ? Termination::converged : Termination::not_converged;
+  out.summary.message = !converged ? "stopped before its gradient tolerance"
+                        : lbfgs    ? "Riemannian gradient below tolerance (L-BFGS)"
+                                   : "Riemannian gradient below tolerance (Newton)";
+  const double value = criterion_value(criterion, moved);
   if (std::isfinite(value) && value <= out.value) {
     out.program = std::move(moved);
     out.value = value;
@@ -49,12 +61,18 @@ LocalResult optimize_on_sphere(const Program& start, const char* converged_messa
 
 template <SmoothCriterion C, class Model = Paper9Model>
 LocalResult optimize_with_newton(const Program& start) {
-  return optimize_on_sphere<C, Model, SphereNewton<C, Model>>(start, "Riemannian gradient below tolerance (Newton)");
+  return sphere_local<Model>(criterion_ops<C, Model>(), start, LocalSolver::Newton);
 }
 
 template <SmoothCriterion C, class Model = Paper9Model>
 LocalResult optimize_with_lbfgs(const Program& start) {
-  return optimize_on_sphere<C, Model, SphereLbfgs<C, Model>>(start, "Riemannian gradient below tolerance (L-BFGS)");
+  return sphere_local<Model>(criterion_ops<C, Model>(), start, LocalSolver::Lbfgs);
 }
+
+#define SCALCAL_SPHERE_LOCAL_INSTANCES(prefix, M) \
+  prefix template LocalResult sphere_local<M>(const CriterionOps<M>&, const Program&, LocalSolver);
+#define SCALCAL_EXTERN_SPHERE_LOCAL(M) SCALCAL_SPHERE_LOCAL_INSTANCES(extern, M)
+SCALCAL_FOR_EACH_SYNTHESIS_MODEL(SCALCAL_EXTERN_SPHERE_LOCAL)
+#undef SCALCAL_EXTERN_SPHERE_LOCAL
 
 }  // namespace scalcal

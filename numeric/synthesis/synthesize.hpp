@@ -1,7 +1,9 @@
-// The multistart for one criterion type and model: start k is the uniform random program of seed
+// The multistart for one criterion and model: start k is the uniform random program of seed
 // start_seed(seed, k) (for a registered model other than the paper's and a smooth criterion, every
 // second one exchanged onto a grid first), optimised by the local solver the criterion's form calls for, in worker
 // processes; the best program (lowest value, then lowest start index) never depends on scheduling.
+// synthesize_with<Model> is compiled once per model (the criterion is a CriterionOps), in the model's
+// synthesis unit; synthesize<C, Model> is its name for one criterion type.
 #pragma once
 #include <chrono>
 #include <functional>
@@ -11,6 +13,7 @@
 
 #include "numeric/program/program_equivalence.hpp"
 #include "numeric/criteria/starts.hpp"
+#include "numeric/synthesis/criterion_ops.hpp"
 #include "numeric/synthesis/exchange_start.hpp"
 #include "numeric/synthesis/ipopt_local.hpp"
 #include "numeric/synthesis/max_diagonal_newton.hpp"
@@ -18,6 +21,7 @@
 #include "numeric/synthesis/newton_local.hpp"
 #include "numeric/synthesis/seeds.hpp"
 #include "numeric/synthesis/stopping_rule.hpp"
+#include "numeric/synthesis/synthesis_models.hpp"
 #include "numeric/synthesis/workers.hpp"
 
 namespace scalcal {
@@ -26,53 +30,49 @@ namespace scalcal {
 // A) or 1e-5 (Ipopt on the nonsmooth E and S); distinct optima seen so far differ by 1e-2 or more.
 inline constexpr double kSameProgramTolerance = 1e-4;
 
-// What runs the starts of C at `positions`: "newton", "lbfgs" or "ipopt".
-template <Criterion C>
-LocalSolver starts_solver(LocalSolver requested, int positions) {
-  if constexpr (SmoothCriterion<C>) return smooth_local_solver(requested, positions);
-  else return LocalSolver::Ipopt;
+// What runs the starts of a criterion at `positions`: "newton", "lbfgs" or "ipopt".
+template <class Model>
+LocalSolver starts_solver(const CriterionOps<Model>& criterion, LocalSolver requested, int positions) {
+  return criterion.form == CriterionForm::Smooth ? smooth_local_solver(requested, positions) : LocalSolver::Ipopt;
 }
 
 inline const char* solver_name(LocalSolver solver) {
   return solver == LocalSolver::Newton ? "newton" : solver == LocalSolver::Lbfgs ? "lbfgs" : "ipopt";
 }
 
-// One local optimisation from `start` by the solver C's form calls for.
-template <Criterion C, class Model = Paper9Model>
-LocalResult local_start(const Program& start, LocalSolver solver) {
-  if constexpr (SmoothCriterion<C>) {
-    switch (smooth_local_solver(solver, start.size())) {
-      case LocalSolver::Newton: return optimize_with_newton<C, Model>(start);
-      case LocalSolver::Lbfgs: return optimize_with_lbfgs<C, Model>(start);
-      default: return optimize_with_ipopt<C, Model>(start);
-    }
-  } else if constexpr (MaxDiagonalCriterion<C> && kModelIndex<Model> > 0) {
+// One local optimisation from `start` by the solver the criterion's form calls for.
+template <class Model>
+LocalResult local_start(const CriterionOps<Model>& criterion, const Program& start, LocalSolver solver) {
+  if (criterion.form == CriterionForm::Smooth) {
+    const LocalSolver s = smooth_local_solver(solver, start.size());
+    if (s == LocalSolver::Ipopt) return ipopt_local<Model>(criterion, start);
+    return sphere_local<Model>(criterion, start, s);
+  }
+  if (criterion.form == CriterionForm::MaxDiagonal && kModelIndex<Model> > 0) {
     // The other models' S optima merge positions onto the axes, which Newton from a random program
     // cannot do without the exchange (see start_at); their S starts stay random, as documented in
     // experiments/docs/sweep.md.
-    return optimize_with_ipopt<C, Model>(start);
-  } else {
-    // The nonsmooth forms converge poorly from a random program (E at N = 9: random starts ended
-    // near 68.7 where the A optimum alone has E = 12.9; S at N = 18: 44-111 Ipopt iterations, from
-    // the A optimum 10-14), so the smooth trace criterion runs first, by Newton or L-BFGS, and its
-    // program is kept when the E or S stage does not improve on it. For S this took a start from
-    // 50 to 8 ms at N = 18 and found the same optima at N = 9..16 with more hits (N = 12: 63 of 64
-    // starts, so 8 starts end the run instead of 24).
-    const LocalResult warm = local_start<ACriterion, Model>(start, solver);
-    LocalResult out = optimize_with_ipopt<C, Model>(warm.program);
-    const double warm_value = criterion_value<C, Model>(warm.program);
-    if (!(out.value <= warm_value)) {
-      out.program = warm.program;
-      out.value = warm_value;
-    }
-    out.summary.iterations += warm.summary.iterations;
-    return out;
+    return ipopt_local<Model>(criterion, start);
   }
+  // The nonsmooth forms converge poorly from a random program (E at N = 9: random starts ended
+  // near 68.7 where the A optimum alone has E = 12.9; S at N = 18: 44-111 Ipopt iterations, from
+  // the A optimum 10-14), so the smooth trace criterion runs first, by Newton or L-BFGS, and its
+  // program is kept when the E or S stage does not improve on it. For S this took a start from
+  // 50 to 8 ms at N = 18 and found the same optima at N = 9..16 with more hits (N = 12: 63 of 64
+  // starts, so 8 starts end the run instead of 24).
+  const LocalResult warm = local_start<Model>(criterion_ops<ACriterion, Model>(), start, solver);
+  LocalResult out = ipopt_local<Model>(criterion, warm.program);
+  const double warm_value = criterion_value(criterion, warm.program);
+  if (!(out.value <= warm_value)) {
+    out.program = warm.program;
+    out.value = warm_value;
+  }
+  out.summary.iterations += warm.summary.iterations;
+  return out;
 }
 
 // The best of the starts (lowest value, then lowest start index) with its summary.
-template <Criterion C>
-SynthesisResult best_of_starts(const std::vector<LocalResult>& results) {
+inline SynthesisResult best_of_starts(const std::vector<LocalResult>& results) {
   std::size_t best = 0;
   for (std::size_t k = 1; k < results.size(); ++k)
     if (results[k].value < results[best].value) best = k;
@@ -83,18 +83,37 @@ SynthesisResult best_of_starts(const std::vector<LocalResult>& results) {
   return out;
 }
 
-// How many starts reached out.value, and how many different programs those are up to C's symmetry.
-template <Criterion C>
-void count_hits(const std::vector<LocalResult>& results, SynthesisResult& out) {
+// How many starts reached out.value, and how many different programs those are up to the
+// criterion's symmetry.
+inline void count_hits(const std::vector<LocalResult>& results, ProgramSymmetry symmetry, SynthesisResult& out) {
   std::vector<Program> optima;
   for (const auto& r : results)
     if (r.value <= out.value * (1 + kHitTolerance)) optima.push_back(r.program);
   out.hits = static_cast<int>(optima.size());
-  out.distinct = count_distinct(optima, C::symmetry, kSameProgramTolerance);
+  out.distinct = count_distinct(optima, symmetry, kSameProgramTolerance);
 }
 
-template <Criterion C, class Model = Paper9Model>
-SynthesisResult synthesize(const SynthesisOptions& options) {
+// Ipopt, from the best Newton or L-BFGS program, must find it a KKT point of the constrained
+// problem (same value); should it find a lower one, that is kept.
+template <class Model>
+void confirm_best(const CriterionOps<Model>& criterion, int positions, SynthesisResult& out) {
+  const Program best_program = out.program;
+  const LocalResult check = run_in_workers(1, 1, positions, [&](int) { return ipopt_local<Model>(criterion, best_program); })[0];
+  const bool confirmed = check.summary.converged() && check.value <= out.value * (1 + kHitTolerance);
+  out.summary.termination = confirmed ? Termination::converged : Termination::not_converged;
+  out.summary.message = confirmed ? std::string("Ipopt confirmed the best ") + out.local_solver + " program as a KKT point"
+                                  : std::string("Ipopt did not confirm the best ") + out.local_solver +
+                                        " program as a converged optimum";
+  out.summary.iterations = check.summary.iterations;
+  if (check.value < out.value) {
+    out.program = check.program;
+    out.value = check.value;
+  }
+}
+
+// The multistart of one criterion under the model (compiled once per model).
+template <class Model>
+SynthesisResult synthesize_with(const CriterionOps<Model>& criterion, const SynthesisOptions& options) {
   if (options.positions < Model::kParameters)
     throw std::invalid_argument("synthesize: at least " + std::to_string(Model::kParameters) + " positions are needed");
   if (options.starts < 0) throw std::invalid_argument("synthesize: the number of starts must not be negative");
@@ -105,20 +124,20 @@ SynthesisResult synthesize(const SynthesisOptions& options) {
   // --starts forces a count; otherwise the criterion's default is a cap and the stopping rule may
   // end the run sooner.
   const bool forced = options.starts > 0;
-  const int cap = forced ? options.starts : C::default_starts(options.positions);
+  const int cap = forced ? options.starts : criterion.default_starts(options.positions);
   const StoppingRule rule;
   const int workers = thread_count(options.threads);
   const auto start_at = [&](int k) {
-    if (k == 0 && options.first_start) return local_start<C, Model>(*options.first_start, options.local);
+    if (k == 0 && options.first_start) return local_start<Model>(criterion, *options.first_start, options.local);
     Program start = Program::random(options.positions, start_seed(options.seed, static_cast<std::uint64_t>(k)));
     // The paper's model keeps its random starts (its results are documented); every other
     // registered model exchanges every second start onto a grid first (exchange_start.hpp) for
     // the smooth criteria, whose Newton steps cannot merge positions. E and S run Ipopt, which
     // reached every limit at N = 6k for axis6 from random starts, and whose exchange would cost
     // an eigen-decomposition per trial swap (E at N = 24: 33 s of CPU instead of 2 s).
-    if constexpr (kModelIndex<Model> > 0 && SmoothCriterion<C>)
-      if (k % 2 == 1) start = exchanged_start<C, Model>(start);
-    return local_start<C, Model>(start, options.local);
+    if (kModelIndex<Model> > 0 && criterion.form == CriterionForm::Smooth && criterion.kind && k % 2 == 1)
+      start = exchanged_start(*criterion.kind, ModelKind(kModelIndex<Model>), start);
+    return local_start<Model>(criterion, start, options.local);
   };
   std::vector<LocalResult> results;
   std::string stopping = forced ? "forced " + std::to_string(cap) : "cap " + std::to_string(cap);
@@ -131,51 +150,48 @@ SynthesisResult synthesize(const SynthesisOptions& options) {
         run_in_workers(batch, workers, options.positions, [&](int k) { return start_at(offset + k); }, progress);
     results.insert(results.end(), done.begin(), done.end());
     if (!forced && static_cast<int>(results.size()) < cap &&
-        static_cast<int>(results.size()) >= minimum_starts<C>(options.positions) && rule.satisfied(results)) {
+        static_cast<int>(results.size()) >= criterion.minimum_starts(options.positions) && rule.satisfied(results)) {
       stopping = rule.description();
       break;
     }
   }
   const int starts = static_cast<int>(results.size());
-  SynthesisResult out = best_of_starts<C>(results);
+  SynthesisResult out = best_of_starts(results);
   out.starts = starts;
   out.stopping = stopping;
-  const LocalSolver solver = starts_solver<C>(options.local, options.positions);
+  const LocalSolver solver = starts_solver<Model>(criterion, options.local, options.positions);
   out.local_solver = solver_name(solver);
   if (solver != LocalSolver::Ipopt) {
-    // Ipopt, from the best Newton or L-BFGS program, must find it a KKT point of the constrained
-    // problem (same value); should it find a lower one, that is kept.
-    const Program best_program = out.program;
-    const LocalResult check = run_in_workers(1, 1, options.positions, [&](int) {
-      return optimize_with_ipopt<C, Model>(best_program);
-    })[0];
-    const bool confirmed = check.summary.converged() && check.value <= out.value * (1 + kHitTolerance);
-    out.summary.termination = confirmed ? Termination::converged : Termination::not_converged;
-    out.summary.message = confirmed ? std::string("Ipopt confirmed the best ") + out.local_solver + " program as a KKT point"
-                                    : std::string("Ipopt did not confirm the best ") + out.local_solver +
-                                          " program as a converged optimum";
-    out.summary.iterations = check.summary.iterations;
-    if (check.value < out.value) {
-      out.program = check.program;
-      out.value = check.value;
-    }
+    confirm_best<Model>(criterion, options.positions, out);
   } else {
     out.summary.message = out.summary.converged() ? "the best Ipopt start converged"
                                                   : "the best Ipopt start did not converge";
   }
-  if constexpr (MaxDiagonalCriterion<C>) {
+  if (criterion.form == CriterionForm::MaxDiagonal) {
     // Ipopt's tolerance leaves S about 1e-12 above its optimum; Newton on the active conditions
     // takes it to rounding.
-    const LocalResult refined = refine_max_diagonal<C, Model>(LocalResult{out.program, out.value, out.summary});
+    const LocalResult refined = refine_active_diagonal<Model>(criterion, LocalResult{out.program, out.value, out.summary});
     if (refined.value < out.value) {
       out.program = refined.program;
       out.value = refined.value;
       out.summary.message += "; Newton on its active conditions refined it";
     }
   }
-  count_hits<C>(results, out);
+  count_hits(results, criterion.symmetry, out);
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;
 }
+
+template <Criterion C, class Model = Paper9Model>
+SynthesisResult synthesize(const SynthesisOptions& options) {
+  return synthesize_with<Model>(criterion_ops<C, Model>(), options);
+}
+
+#define SCALCAL_SYNTHESIZE_INSTANCES(prefix, M)                                                              \
+  prefix template LocalResult local_start<M>(const CriterionOps<M>&, const Program&, LocalSolver);          \
+  prefix template SynthesisResult synthesize_with<M>(const CriterionOps<M>&, const SynthesisOptions&);
+#define SCALCAL_EXTERN_SYNTHESIZE(M) SCALCAL_SYNTHESIZE_INSTANCES(extern, M)
+SCALCAL_FOR_EACH_SYNTHESIS_MODEL(SCALCAL_EXTERN_SYNTHESIZE)
+#undef SCALCAL_EXTERN_SYNTHESIZE
 
 }  // namespace scalcal

@@ -1,5 +1,8 @@
 #include "numeric/synthesis/workers.hpp"
 
+#include <csignal>
+#include <exception>
+
 #include <algorithm>
 #include <cerrno>
 #include <cstdint>
@@ -110,7 +113,8 @@ std::vector<LocalResult> run_in_workers(int tasks, int workers, int positions,
   std::vector<char> buf(record);
   int open = workers, done = 0;
   bool failed = false;
-  while (open > 0) {
+  std::exception_ptr stopped;  // the progress callback threw (Python's Ctrl-C): end the workers, rethrow
+  while (open > 0 && !stopped) {
     if (::poll(fds.data(), fds.size(), -1) < 0) {
       if (errno == EINTR) continue;
       failed = true;
@@ -132,14 +136,25 @@ std::vector<LocalResult> run_in_workers(int tasks, int workers, int positions,
       }
       results[static_cast<std::size_t>(k)] = std::move(r);
       ++done;
-      if (progress && tasks > 1) progress(done, tasks);
+      try {
+        if (progress && tasks > 1) progress(done, tasks);
+      } catch (...) {
+        stopped = std::current_exception();
+        break;
+      }
     }
+  }
+  if (stopped) {
+    for (const pid_t pid : pids) ::kill(pid, SIGTERM);
+    for (auto& p : fds)
+      if (p.fd >= 0) ::close(p.fd);
   }
   for (const pid_t pid : pids) {
     int status = 0;
     ::waitpid(pid, &status, 0);
     if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) failed = true;
   }
+  if (stopped) std::rethrow_exception(stopped);
   if (failed || done != tasks)
     throw std::runtime_error("synthesize: a worker process failed (" + std::to_string(done) + " of " + std::to_string(tasks) +
                              " starts returned)");

@@ -8,7 +8,7 @@ import numpy as np
 
 import scalcal
 
-design = scalcal.optimize(18, "D", region="cap:30", seed=1)
+design = scalcal.optimize(positions=18, criterion="D", region="cap:30", seed=1)
 limit = scalcal.limits(region="cap:30")["D"]
 tilt = np.degrees(np.arccos(np.clip(design["program"][:, 2], -1, 1)))
 azimuth = np.degrees(np.arctan2(design["program"][:, 1], design["program"][:, 0]))

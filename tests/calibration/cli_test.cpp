@@ -138,7 +138,7 @@ TEST(CalibrateCli, BadInputIsOneLineAndExitTwo) {
   const Case cases[] = {
       {"missing_column.csv", "position,ix,iy\n1,2,3\n", "", "missing column 'iz'"},
       {"bad_number.csv", bad_number, "", ":5: 'abc' in column ix is not a number"},
-      {"eight.csv", eight, "", "8 distinct positions"},
+      {"eight.csv", eight, "--model paper9", "cannot be identified by these positions (8 positions"},
       {"wrong_units.csv", good, "--modulus projection", "the projection modulus needs data in the field's units"},
       {"planar.csv", planar, "--modulus projection", "not identifiable: bias_z"},
       {"no_nominal.csv", "ix,iy,iz\n1,0,0\n", "--modulus projection", "nominal direction"},
@@ -160,6 +160,39 @@ TEST(CalibrateCli, BadInputIsOneLineAndExitTwo) {
 // The same bench read with --magnitude 1000 instead of 9.80665: in any units the calibration starts
 // from an ellipsoid, and its correction is the first one scaled by 1000 / 9.80665 (the paper's
 // convention fixes the rotation in both).
+// Two directions under one label (+x and -x both as position 1): their mean sits near the origin and
+// no meter near the start fits it. The fit runs to the edge of the model and says so (exit 1,
+// "converged": false), and names the position that disagrees (issue 31; before, the paper's
+// iteration stopped at its own fixed point and exit 0 applied a calibration with chi-square 1e6).
+TEST(CalibrateCli, MislabelledPositionsDoNotConverge) {
+  std::ostringstream s;
+  s.precision(17);
+  s << "position,ix,iy,iz\n";
+  const auto c18 = classic18_positions();
+  int k = 0;
+  for (std::size_t i = 0; i < c18.size(); ++i) {
+    const V3& e = c18[i];
+    const bool minus_x = e[0] < -0.99;
+    for (int j = 0; j < 3; ++j, ++k)
+      s << (minus_x ? 1 : static_cast<int>(i) + 1) << ',' << 1.002 * e[0] + 0.01 + 1e-3 * std::sin(1.3 * k) << ','
+        << 0.999 * e[1] - 0.02 + 1e-3 * std::sin(2.1 * k + 1) << ','
+        << 1.001 * e[2] + 0.005 + 1e-3 * std::sin(0.7 * k + 2) + 0.001 * e[0] << "\n";
+  }
+  const fs::path file = write_file("mislabel.csv", s.str());
+  const fs::path cal = write_file("mislabel_cal.json", "");
+  const CliRun r = scalcal("calibrate --magnitude 1 --measurements " + file.string() + " --out " + cal.string());
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_NE(r.err.find("did not converge"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("the fit contradicts its own noise estimate"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("line 2 ("), std::string::npos) << r.err;
+  std::ifstream in(cal);
+  const std::string written((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(written.find("\"converged\": false"), std::string::npos);
+  const CliRun c = scalcal("correct --calibration " + cal.string() + " --measurements " + file.string());
+  EXPECT_EQ(c.status, 2) << c.err;
+  EXPECT_NE(c.err.find("did not converge"), std::string::npos) << c.err;
+}
+
 TEST(CalibrateCli, AnyUnitsGiveTheSameCorrectionScaled) {
   const fs::path file = write_file("scaled.csv", bench_csv(example_meter(1e-3, kG), 1e-3, 1, 3));
   const CliRun a = scalcal("calibrate --measurements " + file.string() + " --magnitude 9.80665 --json");

@@ -49,7 +49,7 @@ TEST(Estimator, NoiseFreeNormRecoversTheMeterExactly) {
   const double s = 1e-3;
   const TrueMeter m = example_meter(s, kG);
   const CalibrationResult r = run(bench(m, kG, 0, 1, 0, 1), Modulus::norm, kG);
-  ASSERT_TRUE(r.converged);
+  ASSERT_TRUE(r.summary.converged());
   EXPECT_LE(r.iterations, 10);
   for (int k = 0; k < 3; ++k) {
     EXPECT_NEAR(r.bias(kG)(k), m.bias[k], 1e-12 * kG) << k;
@@ -79,7 +79,7 @@ TEST(Estimator, NoisyRecoveryWithinFourStandardErrors) {
   const TrueMeter m = example_meter(s, kG);
   for (Modulus mod : {Modulus::norm, Modulus::projection}) {
     const CalibrationResult r = run(bench(m, kG, sigma, samples, 0, 42), mod, kG);
-    ASSERT_TRUE(r.converged);
+    ASSERT_TRUE(r.summary.converged());
     ASSERT_EQ(r.noise_source, scalcal::NoiseSource::scatter);
     EXPECT_EQ(r.positions, 18);
     EXPECT_EQ(r.samples, 180);
@@ -149,7 +149,7 @@ TEST(Estimator, LongDoubleInstantiation) {
   }
   scalcal::CalibrationOptionsTpl<LD> o;
   const auto r = scalcal::calibrate(data, o);
-  ASSERT_TRUE(r.converged);
+  ASSERT_TRUE(r.summary.converged());
   for (int k = 0; k < 3; ++k) {
     EXPECT_LT(std::abs(static_cast<double>(r.X(k) - LD(m.bias[k]))), 1e-17) << k;
     EXPECT_LT(std::abs(static_cast<double>(r.X(3 + k) - LD(m.dk[k]))), 1e-17) << k;

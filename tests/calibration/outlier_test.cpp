@@ -65,7 +65,7 @@ TEST(OutlierSamples, OneSampleTenTimesOffIsExcludedByLine) {
   EXPECT_EQ(data[7].samples.size(), 9u);
   EXPECT_EQ(data[7].sample_lines.size(), 9u);
   const auto r = calibrate(data);
-  ASSERT_TRUE(r.converged);
+  ASSERT_TRUE(r.summary.converged());
   EXPECT_EQ(r.samples, 179);
   EXPECT_NEAR(r.noise / sigma, 1.0, 0.2);
   EXPECT_LT(worst_error_in(r, r.X_std, m), 4.0);

@@ -98,7 +98,9 @@ TEST(RawCalibrateCli, MagnitudeAutoNamesWhatIsNotIdentifiable) {
   ASSERT_EQ(r.status, 0) << r.err;
   const Json j = Json::parse(r.out);
   EXPECT_EQ(j["magnitude"], "auto");
-  EXPECT_NE(j["not_identifiable"].get<std::string>().find("field's strength"), std::string::npos);
+  bool named = false;
+  for (const auto& what : j["not_identifiable"]) named = named || what.get<std::string>().find("field's strength") != std::string::npos;
+  EXPECT_TRUE(named) << j["not_identifiable"];
   double logsum = 0;
   for (const auto& v : j["scale_deviation"]) logsum += std::log1p(v.get<double>());
   EXPECT_NEAR(logsum, 0.0, 1e-12);  // relative to their geometric mean

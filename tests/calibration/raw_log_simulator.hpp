@@ -20,7 +20,7 @@ struct StillSegment {
 };
 
 struct SimulatedLog {
-  std::string text;  // "t ix iy iz" lines
+  std::string text;  // "t ix iy iz" lines (or "ix iy iz" without the time column)
   std::vector<StillSegment> still;
 };
 
@@ -32,6 +32,8 @@ struct LogSpec {
   double quantum = 1.0;       // the ADC's step: outputs are whole multiples of it
   double rate = 100;          // Hz
   double first_still = 40, still = 6, motion = 3;  // seconds
+  double lead_motion = 0;     // seconds of motion before the first still segment (a log without a still start)
+  bool time_column = true;    // false: "ix iy iz" lines, the time only in the rate
   std::uint64_t seed = 7;
 };
 
@@ -53,10 +55,19 @@ inline SimulatedLog simulate_log(const LogSpec& spec, const std::vector<V3>& dir
     const V3 I{spec.magnitude * d[0], spec.magnitude * d[1], spec.magnitude * d[2]};
     const V3 m = spec.meter.measure(I);
     const auto adc = [&](double v) { return spec.quantum * std::round((spec.zero + spec.counts_per_unit * v + gauss(rng)) / spec.quantum); };
-    std::snprintf(line, sizeof line, "%.6f %.10g %.10g %.10g\n", t, adc(m[0]), adc(m[1]), adc(m[2]));
+    if (spec.time_column)
+      std::snprintf(line, sizeof line, "%.6f %.10g %.10g %.10g\n", t, adc(m[0]), adc(m[1]), adc(m[2]));
+    else
+      std::snprintf(line, sizeof line, "%.10g %.10g %.10g\n", adc(m[0]), adc(m[1]), adc(m[2]));
     out.text += line;
     t += dt;
   };
+  // Lead motion: tumbling about the first direction before the log's first still segment.
+  const int lead = static_cast<int>(spec.lead_motion * spec.rate);
+  for (int s = 0; s < lead && !directions.empty(); ++s) {
+    const double u = (s + 1.0) / lead, a = 2.5 * std::sin(6.0 * u), b = 1.5 * std::cos(4.0 * u);
+    emit(unit({std::cos(a) * std::cos(b), std::sin(a) * std::cos(b), std::sin(b)}));
+  }
   for (std::size_t k = 0; k < directions.size(); ++k) {
     const V3 d = unit(directions[k]);
     if (k > 0) {  // motion from the previous direction

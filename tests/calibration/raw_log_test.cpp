@@ -98,7 +98,7 @@ TEST(AnyUnits, RecoversASimulatedMeterInCounts) {
   o.magnitude = spec.magnitude;
   const AnyUnitsCalibration a = calibrate_any_units("simulated", positions_of(log, d), o);
   EXPECT_TRUE(a.started);
-  EXPECT_TRUE(a.estimate.converged);
+  EXPECT_TRUE(a.estimate.summary.converged());
   // The truth in the same form: offset, scale factor in counts per unit, gamma.
   const V3 g = spec.meter.gamma();
   for (int k = 0; k < 3; ++k) {
@@ -140,7 +140,11 @@ TEST(AnyUnits, MagnitudeAutoKeepsTheRatiosOfTheScaleFactors) {
   EXPECT_NEAR(a.correction.apply(raw).norm(), 1.0, 2e-4);
 }
 
-// Data already in the field's units take today's path: the same numbers as the paper's estimator.
+// Data already in the field's units skip the start: the same numbers as the paper's templated
+// estimator (scalar_calibration.hpp, steps with the rows h of eq. 6), which calibrate_any_units does
+// not call: it runs the model-generic one, Gauss-Newton with the exact derivative of J, whose
+// minimum differs from the paper's fixed point at second order (here 1e-11), far below 1e-3 of the
+// standard errors.
 TEST(AnyUnits, InTheFieldsUnitsItIsThePapersEstimate) {
   LogSpec spec;
   spec.meter = example_meter(0.01, spec.magnitude);
@@ -158,9 +162,9 @@ TEST(AnyUnits, InTheFieldsUnitsItIsThePapersEstimate) {
   co.magnitude = spec.magnitude;
   const CalibrationResult r = calibrate(data, co);
   for (int k = 0; k < 3; ++k) {
-    EXPECT_EQ(a.scale_deviation(k), r.X(3 + k));
-    EXPECT_EQ(a.correction.nonorthogonality(k), r.X(6 + k));
-    EXPECT_EQ(a.correction.offset(k), r.X(k) * spec.magnitude);
+    EXPECT_NEAR(a.scale_deviation(k), r.X(3 + k), 1e-3 * a.scale_deviation_std(k));
+    EXPECT_NEAR(a.correction.nonorthogonality(k), r.X(6 + k), 1e-3 * a.nonorthogonality_std(k));
+    EXPECT_NEAR(a.correction.offset(k), r.X(k) * spec.magnitude, 1e-3 * a.bias_std(k));
   }
 }
 
@@ -212,7 +216,7 @@ TEST(RealLog, XsensAsGoodAsTheIndependentFit) {
   o.weight_by_samples = false;  // a raw log's positions count once each (calibrate's default for logs)
   const auto data = positions_of(log, d);
   const AnyUnitsCalibration a = calibrate_any_units("xsens", data, o);
-  EXPECT_TRUE(a.estimate.converged);
+  EXPECT_TRUE(a.estimate.summary.converged());
   double ss = 0;
   for (const auto& p : data) {
     const double r = a.correction.apply(p.mean()).norm() / kG - 1;

@@ -48,7 +48,7 @@ TEST(ModelCalibration, NoiseFreeDataGiveBackTheMetersParameters) {
     const std::vector<int> index = meter_indices(kind);
     CalibrationOptions co;
     const ModelCalibration r = calibrate_model(kind, noise_free(meter, program), co);
-    ASSERT_TRUE(r.converged) << m;
+    ASSERT_TRUE(r.summary.converged()) << m;
     ASSERT_EQ(r.X.size(), model_parameters(kind));
     for (int k = 0; k < r.X.size(); ++k)  // the linearisation's own error is O(size^2)
       EXPECT_NEAR(r.X(k), all(index[static_cast<std::size_t>(k)]), 5 * size * size) << m << " " << k;
@@ -56,7 +56,10 @@ TEST(ModelCalibration, NoiseFreeDataGiveBackTheMetersParameters) {
   }
 }
 
-TEST(ModelCalibration, TheGenericEstimatorIsThePapersOnPaper9) {
+// The generic estimator steps with the exact derivative of J, the paper's with its first-order
+// rows h (eq. 6): their fixed points differ at second order in the meter's errors and residuals
+// (here 5e-11), far below the standard errors.
+TEST(ModelCalibration, TheGenericEstimatorAgreesWithThePapersOnPaper9) {
   const Program program = Program::octahedral(1, 1, 0);
   const Meter meter = reference_meter(2e-3);
   GaussianSource rng(5);
@@ -67,8 +70,8 @@ TEST(ModelCalibration, TheGenericEstimatorIsThePapersOnPaper9) {
     const CalibrationResult paper = calibrate(data, co);
     const ModelCalibration generic = calibrate_model(ModelKind::paper9, data, co);
     for (int k = 0; k < 9; ++k) {
-      EXPECT_NEAR(generic.X(k), paper.X(k), 1e-12) << k;
-      EXPECT_NEAR(generic.X_std(k), paper.X_std(k), 1e-9 * paper.X_std(k)) << k;
+      EXPECT_NEAR(generic.X(k), paper.X(k), 1e-3 * paper.X_std(k)) << k;
+      EXPECT_NEAR(generic.X_std(k), paper.X_std(k), 1e-6 * paper.X_std(k)) << k;
     }
     EXPECT_NEAR(generic.noise, paper.noise, 1e-12);
   }
@@ -123,15 +126,20 @@ TEST(ModelCalibrationCli, AxisPositionsIdentifyAxis6ButNotCubic12) {
   const Json j = Json::parse(ok.out);
   EXPECT_EQ(j["model"], "axis6");
   ASSERT_EQ(j["parameters"].size(), 6u);
-  EXPECT_NEAR(j["parameters"][1]["value"].get<double>(), -2e-3, 1e-5);  // bias_y over |I|
-  EXPECT_NE(j["not_identifiable"].get<std::string>().find("orthogonal"), std::string::npos);
+  EXPECT_NEAR(j["parameters"]["bias_y"].get<double>(), -2e-3, 1e-5);  // file units (|I| = 1)
+  EXPECT_NE(j["not_estimated"].get<std::string>().find("orthogonal"), std::string::npos);
   const auto cubic = run_cli("calibrate --measurements " + file + " --magnitude 1 --model cubic12");
   EXPECT_EQ(cubic.status, 2);
   EXPECT_NE(cubic.err.find("cubic_x"), std::string::npos) << cubic.err;
   EXPECT_NE(cubic.err.find(file), std::string::npos) << cubic.err;
-  const auto automatic = run_cli("calibrate --measurements " + file + " --magnitude auto --model axis6");
+  const auto automatic = run_cli("calibrate --measurements " + file + " --magnitude auto --model cubic12");
   EXPECT_EQ(automatic.status, 2);
-  EXPECT_NE(automatic.err.find("paper9"), std::string::npos) << automatic.err;
+  EXPECT_NE(automatic.err.find("cubic12"), std::string::npos) << automatic.err;
+  // Faces only: --model auto (the default) fits axis6 and says so on stderr.
+  const auto chosen = run_cli("calibrate --measurements " + file + " --magnitude 1 --json");
+  ASSERT_EQ(chosen.status, 0) << chosen.err;
+  EXPECT_EQ(Json::parse(chosen.out)["model"], "axis6");
+  EXPECT_NE(chosen.err.find("model axis6 (auto)"), std::string::npos) << chosen.err;
   std::remove(file.c_str());
 }
 

@@ -88,17 +88,17 @@ def test_evaluate_on_a_region(tmp_path):
 
 def test_optimize():
     args = dict(starts=6, seed=3, threads=1)
-    r = scalcal.optimize(12, "A", **args)
+    r = scalcal.optimize(positions=12, criterion="A", **args)
     same(r, cli_json("optimize", "--positions", "12", "--criterion", "A", "--starts", "6", "--seed", "3",
                      "--threads", "1"))
     assert r["program"].shape == (12, 3)
-    same(scalcal.optimize(8, "D", model="axis6", **args),
+    same(scalcal.optimize(positions=8, criterion="D", model="axis6", **args),
          cli_json("optimize", "--positions", "8", "--criterion", "D", "--model", "axis6", "--starts", "6",
                   "--seed", "3", "--threads", "1"))
 
 
 def test_optimize_on_a_region():
-    r = scalcal.optimize(12, "D", region=["cap:45", "cap:45:0,0,-1"], starts=2, seed=1, threads=1)
+    r = scalcal.optimize(positions=12, criterion="D", region=["cap:45", "cap:45:0,0,-1"], starts=2, seed=1, threads=1)
     same(r, cli_json("optimize", "--positions", "12", "--criterion", "D", "--region", "cap:45",
                      "--region", "cap:45:0,0,-1", "--starts", "2", "--seed", "1", "--threads", "1"))
 
@@ -130,15 +130,17 @@ def test_calibrate_grouped_samples(tmp_path):
         f.write("ix,iy,iz,position,x,y,z\n")
         for s, p, n in zip(samples, labels, nominal):
             f.write(",".join(repr(float(v)) for v in (*s, p, *n)) + "\n")
-    r = scalcal.calibrate(samples, 9.81, position=labels)
+    columns = {"ix": samples[:, 0], "iy": samples[:, 1], "iz": samples[:, 2], "position": labels}
+    with_nominal = dict(columns, x=nominal[:, 0], y=nominal[:, 1], z=nominal[:, 2])
+    r = scalcal.calibrate(measurements=columns, magnitude=9.81)
     same(r, cli_json("calibrate", "--measurements", str(path), "--magnitude", "9.81"))
-    assert r["excluded_samples"] == [] and r["converged"]
-    same(scalcal.calibrate(samples, "auto", position=labels),
+    assert len(r["excluded_samples"]) == 0 and r["converged"]
+    same(scalcal.calibrate(measurements=path, magnitude="auto"),
          cli_json("calibrate", "--measurements", str(path), "--magnitude", "auto"))
-    same(scalcal.calibrate(samples, 9.81, position=labels, nominal=nominal, modulus="projection", suggest=1),
+    same(scalcal.calibrate(measurements=with_nominal, magnitude=9.81, modulus="projection", suggest=1),
          cli_json("calibrate", "--measurements", str(path), "--magnitude", "9.81", "--modulus", "projection",
                   "--suggest", "1"))
-    same(scalcal.calibrate(samples, 9.81, position=labels, model="axis6"),
+    same(scalcal.calibrate(measurements=columns, magnitude=9.81, model="axis6"),
          cli_json("calibrate", "--measurements", str(path), "--magnitude", "9.81", "--model", "axis6"))
 
 
@@ -146,7 +148,8 @@ def test_calibrate_raw_log():
     # The real log of the README, read by NumPy: a text log has no header, so its lines are the rows.
     path = os.path.join(DATA, "xsens_acc.txt")
     log = np.loadtxt(path)
-    r = scalcal.calibrate(log[:, 1:], 9.81744, time=log[:, 0])
+    r = scalcal.calibrate(measurements={"t": log[:, 0], "ix": log[:, 1], "iy": log[:, 2], "iz": log[:, 3]},
+                          magnitude=9.81744)
     same(r, cli_json("calibrate", "--measurements", path, "--magnitude", "9.81744"))
     assert len(r["intervals"]) >= 9
 
@@ -164,14 +167,14 @@ def test_errors_carry_the_cli_message(tmp_path):
 
     bad = random_program(10, seed=1)
     bad[1, 1] = np.nan
-    with pytest.raises(scalcal.InputError, match=r"^positions:2: value in column y is not finite"):
+    with pytest.raises(scalcal.InputError, match=r"^program:2: value in column y is not finite"):
         scalcal.evaluate(bad)
-    with pytest.raises(ValueError, match=r"shape \(M, 3\), got \(10, 2\)"):
+    with pytest.raises(ValueError, match=r"program must have shape \(M, 3\), got \(10, 2\)"):
         scalcal.evaluate(bad[:, :2])
-    with pytest.raises(scalcal.UsageError, match="criterion: 'Q' is not one of D, A, E, S"):
-        scalcal.optimize(12, "Q")
+    with pytest.raises(scalcal.UsageError, match="criterion: must be D, A, E or S, got 'Q'"):
+        scalcal.optimize(positions=12, criterion="Q")
     with pytest.raises(scalcal.UsageError) as e:
-        scalcal.optimize(5, "D")
+        scalcal.optimize(positions=5, criterion="D")
     assert "--positions 5 is below the 9 parameters" in str(e.value)
     assert "--positions 5 is below the 9 parameters" in cli("optimize", "--positions", "5", expect=2).stderr
     with pytest.raises(scalcal.InputError) as e:
@@ -180,6 +183,6 @@ def test_errors_carry_the_cli_message(tmp_path):
 
 
 def test_same_seed_same_program():
-    a = scalcal.optimize(10, "E", starts=3, seed=11, threads=2)
-    b = scalcal.optimize(10, "E", starts=3, seed=11, threads=1)
+    a = scalcal.optimize(positions=10, criterion="E", starts=3, seed=11, threads=2)
+    b = scalcal.optimize(positions=10, criterion="E", starts=3, seed=11, threads=1)
     assert np.array_equal(a["program"], b["program"]) and a["value"] == b["value"]

@@ -1,0 +1,102 @@
+// The options of `scalcal calibrate` (calibrate.hpp) and the request they make.
+#include "commands/calibrate.hpp"
+#include "commands/common_options.hpp"
+
+namespace scalcal::commands {
+namespace {
+
+std::vector<std::string> model_choices() {
+  std::vector<std::string> c = {"auto"};
+  for (const auto& m : model_names()) c.push_back(m);
+  return c;
+}
+
+}  // namespace
+
+const CommandTable& calibrate_table() {
+  Option measurements = text_option(
+      "--measurements", "FILE",
+      "bench data: CSV with ix,iy,iz [,position] [,x,y,z], or a raw log: CSV with a time column (t, t_s, time, "
+      "time_s or timestamp) and ix,iy,iz, or text t ix iy iz",
+      "file path", kRequired);
+  measurements.takes_columns = true;
+  Option magnitude = text_option("--magnitude", "M|auto",
+                                 "modulus |I| of the measured vector, or auto for a field of unknown strength",
+                                 "physical units", kRequired);
+  magnitude.why_bad = magnitude_problem;
+  Option model = choice_option("--model", model_choices(),
+                               "the calibration model: auto (the richest of paper9, axis6, bias3 that the positions "
+                               "identify), or one of the registered models",
+                               "auto");
+  model.value_name = "auto|NAME";
+  Option still = positive_option("--still",
+                                 "take the noise floor from the log's initial still period of this length (default: "
+                                 "from the log's quietest windows, no still start needed)",
+                                 "seconds", "");
+  still.fallback_text = "from the log's quietest windows";
+  Option rate = positive_option("--rate",
+                                "the sample rate of a raw log without a time column (or whose time column is the "
+                                "sample index): row k is at k / HZ seconds; makes a CSV with ix,iy,iz a raw log",
+                                "Hz", "");
+  rate.value_name = "HZ";
+  rate.fallback_text = "the log's time column";
+  const StaticIntervalOptions d;
+  static const CommandTable table{
+      "calibrate",
+      "scalar calibration (eqs. 3-6) in any units, from grouped samples or a raw log, with the model the positions "
+      "identify: bias, scale factors, non-orthogonality with honest standard errors, the full correction, each "
+      "position's residual, the program's quality and what to add",
+      20,
+      {measurements, magnitude, model,
+       choice_option("--modulus", {"norm", "projection"},
+                     "the modulus: norm (m_I, |measured|) or projection (m_II, onto the nominal direction)", "norm"),
+       choice_option("--format", {"auto", "csv", "text"},
+                     "the file: auto (text when the first line starts with a number), csv, or text (t ix iy iz, no "
+                     "header)",
+                     "auto"),
+       rate, still,
+       positive_option("--window", "the moving variance's window in a raw log", "seconds", shortest_text(d.window_seconds)),
+       positive_option("--threshold-factor",
+                       "static where the window's variance norm stays below this times the noise floor", "none",
+                       shortest_text(d.threshold_factor)),
+       positive_option("--min-interval", "the shortest static interval that counts as a position", "seconds",
+                       shortest_text(d.min_seconds)),
+       choice_option("--weights", {"auto", "samples", "positions"},
+                     "each position's weight: its number of samples, or 1; auto: positions for a raw log, samples "
+                     "otherwise",
+                     "auto"),
+       flag_option("--keep-outliers",
+                   "keep samples more than 10 robust scales from their position's median (excluded by default)"),
+       named(integer_option("--suggest", 0, kMaxSuggestions, "how many positions to suggest adding (never one twice)",
+                            "positions", "3"),
+             "K"),
+       criterion_option(), region_option(),
+       out_option("also write the calibration (the JSON object, with \"converged\") to FILE, for `scalcal correct`",
+                  "CAL.json"),
+       json_option("print one JSON object")}};
+  return table;
+}
+
+CalibrateRequest calibrate_request(const Values& v) {
+  CalibrateRequest q;
+  q.file = v.text("--measurements");
+  if (const auto it = v.tables.find("--measurements"); it != v.tables.end()) q.table = it->second;
+  q.magnitude = v.text("--magnitude");
+  q.modulus = v.text("--modulus") == "projection" ? Modulus::projection : Modulus::norm;
+  q.format = v.text("--format");
+  if (v.given("--rate")) q.rate = v.number("--rate");
+  if (v.given("--still")) q.intervals.still_seconds = v.number("--still");
+  q.intervals.window_seconds = v.number("--window");
+  q.intervals.threshold_factor = v.number("--threshold-factor");
+  q.intervals.min_seconds = v.number("--min-interval");
+  q.weights = v.text("--weights");
+  q.keep_outliers = v.flag("--keep-outliers");
+  q.suggest = static_cast<int>(v.integer("--suggest"));
+  q.criterion = criterion_of(v);
+  q.regions = v.list("--region");
+  if (v.text("--model") != "auto") q.model = *parse_model(v.text("--model"));
+  check_calibrate_request(q);
+  return q;
+}
+
+}  // namespace scalcal::commands

@@ -1,0 +1,60 @@
+// `scalcal correct` as a library function: a calibration file written by `calibrate --out` applied
+// to raw data, physical = matrix (raw - offset), row by row. A calibration that cannot be trusted is
+// refused (InputError naming the reason): a fit that did not converge, a matrix that is singular or
+// ill-conditioned; `force` applies it all the same, with a warning as data.
+#pragma once
+#include <string>
+#include <vector>
+
+#include <optional>
+
+#include "commands/json.hpp"
+#include "commands/option_table.hpp"
+#include "commands/values.hpp"
+#include "commands/warning.hpp"
+#include "numeric/io/csv_table.hpp"
+#include "numeric/calibration/full_correction.hpp"
+
+namespace scalcal::commands {
+
+// Above this condition number of the correction's 3x3 matrix the axes' gains differ by that factor
+// or two axes are nearly parallel: no sensor of this kind is built so, a failed fit is.
+inline constexpr double kCorrectionCondition = 100;
+
+struct CorrectRequest {
+  std::string calibration;   // the file written by `calibrate --out`
+  std::string file;          // the raw data
+  std::string format = "auto";  // auto, csv or text
+  bool force = false;        // apply a calibration that would be refused, with a warning
+  std::optional<Json> calibration_document;  // the calibration given as an object (Python), not read
+  std::optional<CsvTable> table;             // the raw data given as columns (Python), not read
+};
+
+struct CorrectedRow {
+  double t = NAN, position = NAN;  // the kept columns (NaN when the file has none)
+  Vec3 corrected = Vec3::Zero();
+  double modulus = 0;
+};
+
+struct CorrectResult {
+  FullCorrection correction;
+  bool has_t = false, has_position = false;
+  std::vector<CorrectedRow> rows;
+  Warnings warnings;
+};
+
+// Reads and checks a calibration file. InputError for a file that is not one, or that is refused.
+FullCorrection read_calibration(const std::string& file, bool force, Warnings& warnings);
+// The same checks on the calibration as an object (`name` in messages).
+FullCorrection calibration_of(const Json& document, const std::string& name, bool force, Warnings& warnings);
+
+// --calibration CAL.json --measurements FILE [--format auto|csv|text] [--force] [--out FILE]
+const CommandTable& correct_table();
+CorrectRequest correct_request(const Values& values);
+
+CorrectResult correct(const CorrectRequest& request);
+
+// The corrected columns: t and position when the data had them, x, y, z, modulus.
+Json to_json(const CorrectResult& result);
+
+}  // namespace scalcal::commands

@@ -1,0 +1,114 @@
+// The commands the Python module binds (bindings.hpp): one line each, the same functions the CLI calls.
+#include "python/bindings.hpp"
+
+#include <stdexcept>
+#include <type_traits>
+
+#include "commands/augment.hpp"
+#include "commands/calibrate.hpp"
+#include "commands/calibrate_json.hpp"
+#include "commands/correct.hpp"
+#include "commands/catalogue.hpp"
+#include "commands/certify.hpp"
+#include "commands/evaluate.hpp"
+#include "commands/family.hpp"
+#include "commands/jig.hpp"
+#include "commands/limits.hpp"
+#include "commands/optimize.hpp"
+#include "commands/polish.hpp"
+#include "commands/random.hpp"
+#include "commands/simulate.hpp"
+#include "commands/sweep.hpp"
+#ifdef SCALCAL_PYTHON_REPRODUCE
+#include "experiments/reproduce/command.hpp"
+#endif
+
+namespace scalcal::python {
+namespace {
+
+using commands::Progress;
+using commands::Values;
+
+// request(values) then run(request[, progress]): a command whose function takes a progress gets one.
+template <class RequestF, class RunF>
+Binding bind(const commands::CommandTable& table, RequestF request, RunF run) {
+  return {&table, [request, run](const Values& v, const Progress& p) {
+            auto q = request(v);
+            if constexpr (std::is_invocable_v<RunF, decltype(q), Progress>) {
+              auto r = run(q, p);
+              return Output{commands::to_json(r), r.warnings, 0};
+            } else {
+              auto r = run(q);
+              return Output{commands::to_json(r), r.warnings, 0};
+            }
+          }};
+}
+
+// The polish's status is the CLI's: 1 when Newton did not converge.
+Binding polish_binding() {
+  return {&commands::polish_table(), [](const Values& v, const Progress& p) {
+            const auto r = commands::polish(commands::polish_request(v), p);
+            return Output{commands::to_json(r), r.warnings, r.polished.converged() ? 0 : 1};
+          }};
+}
+
+// A sweep's rows, in task order, as a list.
+Binding sweep_binding() {
+  return {&commands::sweep_table(), [](const Values& v, const Progress& p) {
+            const commands::Sweep sweep(commands::sweep_request(v));
+            commands::Json rows = commands::Json::array();
+            int done = 0;
+            for (const auto& t : sweep.tasks()) {
+              rows.push_back(commands::to_json(sweep, sweep.row(t, sweep.compute(t, sweep.request().threads)), true));
+              if (p) p("tasks", ++done, static_cast<int>(sweep.tasks().size()));
+            }
+            return Output{rows, sweep.warnings(), 0};
+          }};
+}
+
+// A calibration's status is the CLI's: 1 when the fit did not converge.
+Binding calibrate_binding() {
+  return {&commands::calibrate_table(), [](const Values& v, const Progress& p) {
+            const auto r = commands::calibrate(commands::calibrate_request(v), p);
+            return Output{commands::to_json(r), r.warnings, r.status()};
+          }};
+}
+
+}  // namespace
+
+const std::vector<Binding>& bindings() {
+  static const std::vector<Binding> all = {
+      bind(commands::catalogue_table(), [](const Values&) { return 0; }, [](int) { return commands::catalogue(); }),
+      bind(commands::evaluate_table(), commands::evaluate_request, commands::evaluate),
+      calibrate_binding(),
+      bind(commands::correct_table(), commands::correct_request,
+           [](const commands::CorrectRequest& q) { return commands::correct(q); }),
+      bind(commands::optimize_table(), commands::optimize_request, commands::optimize),
+      bind(commands::random_table(), commands::random_request, commands::random_programs),
+      bind(commands::simulate_table(), commands::simulate_request, commands::simulate),
+      sweep_binding(),
+      polish_binding(),
+      bind(commands::certify_table(), commands::certify_request, commands::certify),
+      bind(commands::augment_table(), commands::augment_request, commands::augment),
+      bind(commands::family_table(), commands::family_request,
+           [](const commands::FamilyRequest& q) { return commands::family(q); }),
+      bind(commands::limits_table(), commands::limits_request, commands::limits),
+      bind(commands::jig_table(), commands::jig_request, commands::jig),
+#ifdef SCALCAL_PYTHON_REPRODUCE
+      {&reproduce::reproduce_table(),
+       [](const Values& v, const Progress&) {
+         return Output{reproduce::to_json(reproduce::run(reproduce::reproduce_options(v), reproduce::ProgressMode::off)),
+                       {}, 0};
+       }},
+#endif
+  };
+  return all;
+}
+
+const Binding& binding(const std::string& name) {
+  for (const auto& b : bindings())
+    if (b.table->name == name) return b;
+  throw std::out_of_range("no command " + name);
+}
+
+}  // namespace scalcal::python

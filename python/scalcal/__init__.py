@@ -1,0 +1,111 @@
+"""scalcal: the scalar calibration of vector meters, from Python.
+
+Every subcommand of the ``scalcal`` CLI is a function here with the same options: ``scalcal
+optimize --positions 18 --criterion A --seed 3`` is ``scalcal.optimize(positions=18, criterion="A",
+seed=3)``. The functions are made from the same option tables as the CLI's parser and --help, run the
+same C++ and return the CLI's ``--json`` object as a dict (arrays of numbers as NumPy arrays). A
+program may also be given as an (N, 3) array of directions. Warnings go to ``warnings.warn``; bad
+input raises ``InputError``, bad options ``UsageError``, a result that did not converge
+``ConvergenceError`` (its ``result`` attribute holds the result). Ctrl-C stops a long run within a
+unit of work (a start of a multistart).
+"""
+import inspect
+import warnings as _warnings
+
+from . import _scalcal
+
+__version__ = _scalcal.__version__
+__all__ = ["Error", "InputError", "UsageError", "ConvergenceError", "ScalcalWarning", "program"]
+
+
+class Error(Exception):
+    """Every error scalcal raises on purpose."""
+
+
+class InputError(Error, ValueError):
+    """Bad input data: a file, a program or an array (the CLI's exit status 2)."""
+
+
+class UsageError(Error, ValueError):
+    """Bad or contradicting arguments (the CLI's exit status 2)."""
+
+
+class ConvergenceError(Error, RuntimeError):
+    """A computation that did not converge; ``result`` holds what it reached (the CLI's exit status 1)."""
+
+    def __init__(self, message, result):
+        super().__init__(message)
+        self.result = result
+
+
+class ScalcalWarning(UserWarning):
+    """What the CLI prints as ``scalcal COMMAND: warning: ...``."""
+
+
+def _call(name, args, kwargs):
+    try:
+        result, warned, status = _scalcal.run(name, args, kwargs)
+    except _scalcal.InputError as e:
+        raise InputError(str(e)) from None
+    except _scalcal.UsageError as e:
+        raise UsageError(str(e)) from None
+    for subject, message in warned:
+        _warnings.warn(f"{subject}: {message}" if subject else message, ScalcalWarning, stacklevel=3)
+    if status == 1:
+        raise ConvergenceError(f"{name}: the result did not converge", result)
+    return result
+
+
+_KIND_TYPES = {"integer": int, "number": float, "flag": bool, "text": str, "choice": str,
+               "positional": str, "repeated": list}
+
+
+def _default(o):
+    """The option's default as a Python value; None where the table states it in words."""
+    d = o["default"]
+    if not d or o["default_text"]:
+        return False if o["kind"] == "flag" else None
+    try:
+        return {"integer": int, "number": float, "flag": lambda t: t == "1"}.get(o["kind"], str)(d)
+    except ValueError:
+        return None
+
+
+def _make(table):
+    name = table["name"]
+    params, lines = [], []
+    for o in table["options"]:
+        kind = (inspect.Parameter.POSITIONAL_OR_KEYWORD if o["kind"] == "positional"
+                else inspect.Parameter.KEYWORD_ONLY)
+        default = inspect.Parameter.empty if o["required"] else _default(o)
+        params.append(inspect.Parameter(o["name"], kind, default=default,
+                                        annotation=_KIND_TYPES.get(o["kind"], str)))
+        extra = (" Also an (N, 3) array of directions." if o["positions"] else
+                 " Also a mapping column name -> 1-D array (the file's columns)." if o["columns"] else
+                 " Also the object itself (a dict)." if o["document"] else "")
+        choices = f" One of {', '.join(o['choices'])}." if o["choices"] else ""
+        lines.append(f"    {o['name']} ({o['option']}): {o['help']}{choices}{extra}")
+    # Required keyword-only parameters may follow optional ones; positional ones come first.
+    params.sort(key=lambda p: p.kind != inspect.Parameter.POSITIONAL_OR_KEYWORD)
+
+    def command(*args, **kwargs):
+        return _call(name, args, kwargs)
+
+    command.__name__ = command.__qualname__ = name
+    command.__signature__ = inspect.Signature(params)
+    command.__doc__ = (f"{table['summary']}.\n\nThe CLI's `{table['usage']}`; returns its --json object.\n\n"
+                       "Arguments:\n" + "\n".join(lines))
+    return command
+
+
+for _table in _scalcal.tables():
+    globals()[_table["name"]] = _make(_table)
+    __all__.append(_table["name"])
+
+
+def program(name):
+    """The (N, 3) positions of a catalogue program (``scalcal catalogue``), a family member or a CSV file."""
+    try:
+        return _scalcal.program(name)
+    except _scalcal.InputError as e:
+        raise InputError(str(e)) from None
