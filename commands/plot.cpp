@@ -196,13 +196,22 @@ std::string default_out(const std::string& program) {
 
 }  // namespace
 
+// PROGRAM is optional: --log draws a log instead.
+Option optional_program() {
+  Option o = program_argument("a catalogue name or a CSV file (a plan file from `plan --out`: numbered by step, its "
+                              "path drawn)");
+  o.kind = OptionKind::text;
+  return o;
+}
+
 const CommandTable& plot_table() {
   static const CommandTable table{
       "plot",
       "a picture of a program: its positions on the sphere (numbered in run order for a plan file), the region shaded",
       58,
-      {program_argument("a catalogue name or a CSV file (a plan file from `plan --out`: numbered by step, its path drawn)"),
-       region_option(),
+      {optional_program(), region_option(),
+       text_option("--log", "FILE", "instead of a program: a raw log (t,ix,iy,iz CSV or text t ix iy iz)", "file path"),
+       text_option("--calibration", "CAL.json", "with --log: the calibration of that log (calibrate --out)", "file path"),
        out_option("the figure: FILE.pdf, .png or .svg (all three are made, with the gnuplot script FILE.gp and its "
                   "CSV data beside them)",
                   "FILE")}};
@@ -211,6 +220,16 @@ const CommandTable& plot_table() {
 
 PlotRequest plot_request(const Values& v) {
   PlotRequest q;
+  if (v.given("--log") || v.given("--calibration")) {
+    if (!v.given("--log") || !v.given("--calibration")) throw UsageError("--log FILE and --calibration CAL.json go together");
+    if (v.given("PROGRAM") || v.program || v.given("--region"))
+      throw UsageError("--log draws a log: it takes no PROGRAM or --region");
+    q.log = v.text("--log");
+    q.calibration = v.text("--calibration");
+    q.out = v.given("--out") ? v.text("--out") : default_out(q.log);
+    return q;
+  }
+  if (!v.given("PROGRAM") && !v.program) throw UsageError("PROGRAM is required (or --log FILE --calibration CAL.json)");
   q.name = v.text("PROGRAM");
   q.program = program_of(v);
   q.out = v.given("--out") ? v.text("--out") : default_out(q.name);
@@ -231,6 +250,10 @@ PlotResult plot(const PlotRequest& q) {
   PlotResult r;
   r.warnings = q.warnings;
   r.stem = figure_stem(q.out, r.folder);
+  if (!q.log.empty()) {
+    plot_log(q, r);
+    return r;
+  }
   const bool shaded = !is_sphere(q.regions);
   const Region region = resolve_region(q.regions, r.warnings);
   const Zone* cap = shaded ? single_cap(region) : nullptr;

@@ -3,6 +3,11 @@
 // The CLI renders it with the reproduction's figure standards (plots/figure.hpp: print size, 8 pt
 // text, Paul Tol's colours) and saves the script beside the figure; nothing here draws or writes.
 //
+// With --log FILE --calibration CAL.json instead of a program: the log's drawing of the reproduction's
+// fig13 for any log: (a) the raw outputs against time with the calibration's static intervals shaded,
+// (b) each interval's |corrected mean| - |I| (the calibration's residuals) and, before calibration,
+// |mean| / g - |I| with one gain g for all axes and no offsets (g: the median |mean| over |I|).
+//
 // Views: one cap of at most 90 degrees is drawn as tilt (radius, linear in degrees) and azimuth (in
 // the cap's frame, region.hpp's azimuth_frame) about its axis; anything else as two equal-area
 // (Lambert azimuthal) disks, z >= 0 seen from +z and z < 0 seen from above through the meter, both
@@ -26,6 +31,7 @@ struct PlotRequest {
   bool run_order = false;            // a plan file: the steps joined in order
   std::vector<std::string> regions;  // --region, else the program file's; none: no shading
   std::string out = "plot.pdf";      // FILE.pdf|png|svg: the figure's folder and stem
+  std::string log, calibration;      // --log FILE --calibration CAL.json: the log's figure instead
   Warnings warnings;
 };
 
@@ -38,18 +44,22 @@ struct PlotData {
 struct PlotResult {
   std::string folder, stem;  // of --out; the script is STEM.gp beside STEM.pdf, .png, .svg
   std::string comment;       // what the figure shows, one line
-  std::string view;          // "cap" or "hemispheres"
+  std::string view;          // "cap", "hemispheres" or "log"
   double width_cm = 0, height_cm = 0;
   std::string body;          // gnuplot commands
   std::vector<PlotData> data;
   Warnings warnings;
 };
 
-// PROGRAM [--region SPEC]... [--out FILE.pdf|png|svg]
+// PROGRAM [--region SPEC]... [--out FILE.pdf|png|svg], or --log FILE --calibration CAL.json [--out ...]
 const CommandTable& plot_table();
 PlotRequest plot_request(const Values& values);
 
-// Throws InputError for a bad region and UsageError for an --out that is not .pdf, .png or .svg.
+// Throws InputError for a bad region, log or calibration, UsageError for an --out that is not .pdf,
+// .png or .svg.
 PlotResult plot(const PlotRequest& request);
+
+// The log's figure (plot_log.cpp); `result` has its folder and stem.
+void plot_log(const PlotRequest& request, PlotResult& result);
 
 }  // namespace scalcal::commands

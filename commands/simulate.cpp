@@ -68,6 +68,16 @@ void check_noise(const SimulateRequest& q, const ModelEvaluation& ev, Warnings& 
 
 const char* modulus_name(Modulus m) { return m == Modulus::norm ? "norm" : "projection"; }
 
+namespace {
+
+// The rehearsal writes files: its options are the CLI's (the Python module runs the Monte-Carlo).
+Option rehearsal(Option o) {
+  o.cli_only = true;
+  return o;
+}
+
+}  // namespace
+
 const CommandTable& simulate_table() {
   Option program = text_option("--program", "P", "a catalogue name or a CSV file", "none", kRequired);
   program.takes_positions = true;
@@ -97,18 +107,18 @@ const CommandTable& simulate_table() {
        named(integer_option("--samples", 1, 100000, "samples per position", "samples", "1"), "K"),
        number_option("--size", 0, 0.2, "scale of the simulated meter's errors",
                      "relative (bias in |I|, angles in radians)", "0.001"),
-       log, bench_file, truth,
-       text_option("--meter", "FILE",
-                   "rehearsal: the meter's parameters (bias, scale_deviation, nonorthogonality as calibrate --json "
-                   "writes them) instead of random ones",
-                   "file path"),
-       positive_option("--rate", "rehearsal: samples per second", "Hz", "100"),
-       positive_option("--dwell", "rehearsal: seconds at rest on each position", "seconds", "5"),
-       number_option("--still", 0, 3600, "rehearsal: seconds at rest on the first position (calibrate's --still)",
-                     "seconds", "30"),
-       positive_option("--magnitude", "rehearsal: |I| in the log's units", "log units", "1"),
-       choice_option("--format", {"csv", "text"}, "rehearsal: the raw log as CSV with a header, or text t ix iy iz",
-                     "csv"),
+       log, bench_file, truth, rehearsal(text_option("--meter", "FILE",
+                                                     "rehearsal: the meter's parameters (bias, scale_deviation, "
+                                                     "nonorthogonality as calibrate --json writes them) instead of "
+                                                     "random ones",
+                                                     "file path")),
+       rehearsal(positive_option("--rate", "rehearsal: samples per second", "Hz", "100")),
+       rehearsal(positive_option("--dwell", "rehearsal: seconds at rest on each position", "seconds", "5")),
+       rehearsal(number_option("--still", 0, 3600,
+                               "rehearsal: seconds at rest on the first position (calibrate's --still)", "seconds", "30")),
+       rehearsal(positive_option("--magnitude", "rehearsal: |I| in the log's units", "log units", "1")),
+       rehearsal(choice_option("--format", {"csv", "text"},
+                               "rehearsal: the raw log as CSV with a header, or text t ix iy iz", "csv")),
        json_option("print one JSON object")}};
   return table;
 }

@@ -22,7 +22,9 @@
 namespace scalcal {
 
 struct AugmentPolishOptions {
-  int starts = 8;          // local optimisations (start 0 from the greedy exchange)
+  // Local optimisations (start 0 from the greedy exchange). One is the exchange's start alone, as
+  // every library caller had it (calibrate's suggestions); `scalcal augment --starts` defaults to 8.
+  int starts = 1;
   std::uint64_t seed = 1;  // of the random starts
   int threads = 0;         // worker processes (0: all cores)
 };
