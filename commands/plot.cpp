@@ -172,7 +172,7 @@ std::string panel_plot(const std::string& stem, int panel, bool shaded, bool dis
     s += ", \\\n     '" + stem + "_edges.csv' skip 1 using ($1==" + p + "?$2:NaN):3 with lines lw 1 lc rgb '" + kEdge + "'";
   if (path)
     s += ", \\\n     '" + stem + "_path.csv' skip 1 using ($1==" + p + "?$2:NaN):3 with lines lw 1 lc rgb '" + kPath + "'";
-  s += ", \\\n     '" + stem + ".csv' skip 1 using ($1==" + p + "?$2:NaN):3 with points pt 7 ps 0.8 lc rgb '" + kPositions +
+  s += ", \\\n     '" + stem + "_positions.csv' skip 1 using ($1==" + p + "?$2:NaN):3 with points pt 7 ps 0.8 lc rgb '" + kPositions +
        "', \\\n     '' skip 1 using ($1==" + p + "?$2:NaN):3:(sprintf('%d', $4)) with labels offset 0.9,0.6 font ',7' tc rgb '" +
        kPositions + "'\n";
   return s;
@@ -246,7 +246,10 @@ PlotRequest plot_request(const Values& v) {
   return q;
 }
 
-PlotResult plot(const PlotRequest& q) {
+namespace {
+
+// The program's figure, or the log's.
+PlotResult draw(const PlotRequest& q) {
   PlotResult r;
   r.warnings = q.warnings;
   r.stem = figure_stem(q.out, r.folder);
@@ -260,7 +263,7 @@ PlotResult plot(const PlotRequest& q) {
   r.view = cap ? "cap" : "hemispheres";
   r.comment = "the positions of " + display_name(q.name) + (q.run_order ? " numbered in run order" : "") +
               (shaded ? " on the region " + region.text() : "");
-  r.data.push_back({r.stem + ".csv", positions_csv(q, cap)});
+  r.data.push_back({r.stem + "_positions.csv", positions_csv(q, cap)});
   r.data.push_back({r.stem + "_grid.csv", grid_csv(cap)});
   if (q.run_order) r.data.push_back({r.stem + "_path.csv", path_csv(q, cap)});
   if (shaded && !cap) {
@@ -298,6 +301,29 @@ PlotResult plot(const PlotRequest& q) {
     body += "unset multiplot\n";
   }
   r.body = body;
+  return r;
+}
+
+// A figure's files must not replace its inputs (a plan.csv drawn as plan.pdf: the data are
+// plan_positions.csv and so on, but a user's file may still carry such a name).
+void refuse_overwriting(const PlotRequest& q, const PlotResult& r) {
+  namespace fs = std::filesystem;
+  std::vector<std::string> outputs{r.stem + ".gp", r.stem + ".pdf", r.stem + ".png", r.stem + ".svg"};
+  for (const auto& d : r.data) outputs.push_back(d.file);
+  for (const std::string& input : {q.name, q.log, q.calibration}) {
+    std::error_code ec;
+    if (input.empty() || !fs::exists(input, ec)) continue;
+    for (const auto& o : outputs)
+      if (fs::exists(fs::path(r.folder) / o, ec) && fs::equivalent(fs::path(r.folder) / o, input, ec))
+        throw UsageError("--out " + display_name(q.out) + " would write " + o + " over the input " + display_name(input));
+  }
+}
+
+}  // namespace
+
+PlotResult plot(const PlotRequest& q) {
+  PlotResult r = draw(q);
+  refuse_overwriting(q, r);
   return r;
 }
 

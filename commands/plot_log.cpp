@@ -80,7 +80,7 @@ void plot_log(const PlotRequest& q, PlotResult& r) {
     lo = std::min(lo, s.minCoeff());
     hi = std::max(hi, s.maxCoeff());
   }
-  r.data.push_back({r.stem + ".csv", rows});
+  r.data.push_back({r.stem + "_log.csv", rows});
   r.data.push_back({r.stem + "_intervals.csv", iv});
   r.view = "log";
   r.comment = "the log " + display_name(q.log) + " with the static intervals of " + display_name(q.calibration) +
@@ -96,9 +96,9 @@ void plot_log(const PlotRequest& q, PlotResult& r) {
       "set style fill solid 1.0 noborder\nset yrange [" + num(mid - half) + ":" + num(mid + half) + "]\n"
       "plot '" + s + "_intervals.csv' skip 1 using (($2+$3)/2):(" + num(mid) + "):(($3-$2)/2):(" + num(half) +
       ") with boxxyerror lc rgb '#e3e3e3' title 'static', \\\n"
-      "     '" + s + ".csv' skip 1 using 1:2 with lines lw 1 lc rgb '" + kDark + "' title 'x', \\\n"
-      "     '" + s + ".csv' skip 1 using 1:3 with lines lw 1 lc rgb '" + kMedium + "' title 'y', \\\n"
-      "     '" + s + ".csv' skip 1 using 1:4 with lines lw 1 lc rgb '" + kLight + "' title 'z'\n"
+      "     '" + s + "_log.csv' skip 1 using 1:2 with lines lw 1 lc rgb '" + kDark + "' title 'x', \\\n"
+      "     '" + s + "_log.csv' skip 1 using 1:3 with lines lw 1 lc rgb '" + kMedium + "' title 'y', \\\n"
+      "     '" + s + "_log.csv' skip 1 using 1:4 with lines lw 1 lc rgb '" + kLight + "' title 'z'\n"
       "set label 1 '(b)'\nset tmargin at screen 0.44\nset bmargin at screen 0.12\nset xlabel 'static interval'\n"
       "set ylabel '| |mean| − |I| |'\nset xrange [0:" + std::to_string(intervals.size() + 1) +
       "]\nset yrange [*:*]\nset logscale y\nset format y '10^{/*1.1 %T}'\n"
