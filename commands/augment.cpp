@@ -2,9 +2,11 @@
 #include "commands/augment.hpp"
 
 #include <cmath>
+#include <stdexcept>
 
 #include "commands/region_request.hpp"
 #include "numeric/program/catalogue.hpp"
+#include "numeric/region/region_limit.hpp"
 
 namespace scalcal::commands {
 
@@ -18,7 +20,13 @@ const CommandTable& augment_table() {
       55,
       {program, named(integer_option("--add", 1, 1000, "how many positions to add", "positions", kRequired), "K"),
        criterion_option(), model_option(), region_option(),
-       out_option("write the whole program (given, then added) as CSV"), json_option("print one JSON object")}};
+       named(integer_option("--starts", 1, 1000,
+                            "starts of the joint optimisation of the added positions (start 0 from the greedy "
+                            "exchange, the others from random grid candidates)",
+                            "starts", "8"),
+             "K"),
+       seed_option(), threads_option(),
+       out_option("write the whole program (given, then added) as CSV, with its region line"), json_option("print one JSON object")}};
   return table;
 }
 
@@ -29,18 +37,30 @@ AugmentRequest augment_request(const Values& v) {
   q.add = static_cast<int>(v.integer("--add"));
   q.criterion = criterion_of(v);
   q.model = model_of(v);
-  q.regions = v.list("--region");
+  q.regions = v.program ? v.list("--region") : regions_for(v.list("--region"), q.name, q.warnings);
+  q.polish.starts = static_cast<int>(v.integer("--starts"));
+  q.polish.seed = static_cast<std::uint64_t>(v.integer("--seed"));
+  q.polish.threads = static_cast<int>(v.integer("--threads"));
   return q;
 }
 
-AugmentResult augment(const AugmentRequest& q, const Progress&) {
+AugmentResult augment(const AugmentRequest& q, const Progress& progress) {
   AugmentResult r;
+  r.warnings = q.warnings;
   r.criterion = q.criterion;
   r.model = q.model;
   r.region = resolve_region(q.regions, r.warnings);
   r.given = q.given.size();
-  r.augmented = augment_program(q.given, q.add, q.criterion, r.region, q.model);
+  r.augmented = augment_program(q.given, q.add, q.criterion, r.region, q.model, q.polish);
   r.columns = region_columns(r.region, r.augmented.program);
+  if (q.model == ModelKind::paper9 && std::isfinite(r.augmented.value)) {
+    try {
+      if (progress) progress("the " + std::string(criterion_name(q.criterion)) + " limit on " + r.region.text(), 0, 0);
+      r.limit = limit_value(q.criterion, r.region);
+      r.efficiency = efficiency(q.criterion, *r.limit, r.augmented.value);
+    } catch (const std::invalid_argument&) {  // no known limit for this criterion
+    }
+  }
   return r;
 }
 
@@ -52,6 +72,11 @@ Json to_json(const AugmentResult& r) {
          {"region", r.region.text()},
          {"value_before", value(r.augmented.value_before)},
          {"value", value(r.augmented.value)},
+         {"value_greedy_start", value(r.augmented.value_greedy)},
+         {"starts", r.augmented.starts},
+         {"best_start", r.augmented.best_start},
+         {"limit", r.limit ? Json(*r.limit) : Json(nullptr)},
+         {"efficiency", r.efficiency ? Json(*r.efficiency) : Json(nullptr)},
          {"added", added},
          {"program", program_json(r.augmented.program)}};
   if (r.model != ModelKind::paper9) j["model"] = std::string(model_name(r.model));

@@ -1,6 +1,7 @@
 // `scalcal augment` as a function: keeps the lab's positions and adds the K inside the bench's region
 // that improve the criterion of the model most (numeric/region/augment.hpp).
 #pragma once
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,7 +21,9 @@ struct AugmentRequest {
   int add = 0;
   CriterionKind criterion = CriterionKind::D;
   ModelKind model = ModelKind::paper9;
-  std::vector<std::string> regions;
+  std::vector<std::string> regions;  // --region specs, else the program file's
+  AugmentPolishOptions polish;       // starts of the joint polish, seed, threads
+  Warnings warnings;                 // found while reading the request
 };
 
 struct AugmentResult {
@@ -29,11 +32,15 @@ struct AugmentResult {
   Region region;
   int given = 0;  // positions given
   AugmentedProgram augmented;
+  // The region's limit of the criterion (paper9; none when unknown) and limit / value (D: P-th root):
+  // how far the N + K positions are from the best any number of positions could do there.
+  std::optional<double> limit, efficiency;
   std::vector<ExtraColumn> columns;  // for the program file on a one-zone region
   Warnings warnings;
 };
 
-// --program FILE --add K [--criterion C] [--model NAME] [--region SPEC]... [--out FILE] [--json]
+// --program FILE --add K [--criterion C] [--model NAME] [--region SPEC]... [--starts K] [--seed S]
+// [--threads T] [--out FILE] [--json]
 const CommandTable& augment_table();
 AugmentRequest augment_request(const Values& values);
 

@@ -166,7 +166,8 @@ CalibrateResult calibrate(const CalibrateRequest& q, CalibrationInput in, const 
   CalibrateResult out;
   out.file = q.file;
   out.request = q;
-  out.warnings = std::move(in.warnings);
+  out.warnings = q.warnings;
+  out.warnings.insert(out.warnings.end(), in.warnings.begin(), in.warnings.end());
   const bool magnitude_auto = q.magnitude == "auto";
   const double magnitude = magnitude_auto ? 1.0 : std::stod(q.magnitude);
   out.weight_by_samples = q.weights == "samples" || (q.weights == "auto" && !in.log);

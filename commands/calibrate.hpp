@@ -36,7 +36,13 @@ struct CalibrateRequest {
   bool keep_outliers = false;
   int suggest = 3;                   // positions to suggest adding
   CriterionKind criterion = CriterionKind::D;
-  std::vector<std::string> regions;  // where positions may be added; none: the sphere
+  std::vector<std::string> regions;  // where positions may be added: --region, else the region line of --program
+                                     // or of the measurements file; none: the sphere
+  std::string program;               // --program: the program the data measured (its region line is used)
+  double tolerance_deg = 0.05;       // a measured position this far outside the region still counts as inside
+  std::string sensor;                // --sensor: a label for the calibration file
+  std::string raw_units, physical_units;  // --units RAW,PHYSICAL for the calibration file ("": not given)
+  Warnings warnings;                 // found while reading the request
   std::optional<ModelKind> model;    // empty: auto, the richest linear model the layout carries
   std::optional<CsvTable> table;     // the data given as columns (Python), instead of reading `file`
 };
@@ -111,7 +117,8 @@ CalibrationInput calibration_input(RawLog log, const CalibrateRequest& request);
 
 // --measurements FILE --magnitude M|auto [--model auto|NAME] [--modulus ...] [--format ...] [--rate HZ] [--still S]
 // [--window W] [--threshold-factor K] [--min-interval T] [--weights ...] [--keep-outliers] [--suggest K]
-// [--criterion C] [--region SPEC]... [--out FILE] [--json]
+// [--criterion C] [--region SPEC]... [--program FILE] [--tolerance DEG] [--sensor LABEL] [--units RAW,PHYSICAL]
+// [--out FILE] [--json]
 const CommandTable& calibrate_table();
 CalibrateRequest calibrate_request(const Values& values);
 

@@ -1,6 +1,8 @@
 // The JSON form of a calibration: one schema for every model (calibrate_json.hpp).
 #include "commands/calibrate_json.hpp"
 
+#include "commands/tool_info.hpp"
+
 #include <cmath>
 
 namespace scalcal::commands {
@@ -176,6 +178,20 @@ Json to_json(const CalibrateResult& r) {
   return j;
 }
 
-Json calibration_file_json(const CalibrateResult& r) { return to_json(r); }
+// The file's own header first (what it is, when and by what it was made, of which meter, in which
+// units), then the whole result; `region` is the region the program was judged on.
+Json calibration_file_json(const CalibrateResult& r) {
+  const auto label = [](const std::string& s) { return s.empty() ? Json() : Json(s); };
+  Json j{{"format_version", kCalibrationFormatVersion},
+         {"created", utc_now_iso8601()},
+         {"tool", Json{{"name", "scalcal"}, {"version", tool_version()}, {"commit", tool_commit()}}},
+         {"sensor", label(r.request.sensor)},
+         {"units", Json{{"raw", label(r.request.raw_units)}, {"physical", label(r.request.physical_units)}}},
+         {"region", r.program.region}};
+  const Json result = to_json(r);
+  for (const auto& [key, value] : result.items())
+    if (!j.contains(key)) j[key] = value;
+  return j;
+}
 
 }  // namespace scalcal::commands

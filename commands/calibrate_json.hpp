@@ -27,8 +27,13 @@ namespace scalcal::commands {
 
 Json to_json(const CalibrateResult& result);
 
-// The calibration file: what `correct` needs (offset, matrix, converged, model) and the whole
-// result beside it. The one writer of the format, for issue 32 to extend (version, units, sensor).
+// The calibration file's format: 1 is the first with a version (issue 32).
+inline constexpr int kCalibrationFormatVersion = 1;
+
+// The calibration file: format_version, created (UTC, ISO 8601), tool {name, version, commit},
+// sensor (--sensor, null when not given), units {raw, physical} (--units, null when not given),
+// region (where the program was judged), then the whole result: what `correct` needs (offset,
+// matrix, converged, model), magnitude, and the rest. The one writer of the format.
 Json calibration_file_json(const CalibrateResult& result);
 
 }  // namespace scalcal::commands

@@ -37,6 +37,22 @@ Region region_of(const std::vector<std::string>& specs, Warnings& warnings) {
   return region;
 }
 
+// Measured directions outside the region (beyond the tolerance): the data are what they are, so a
+// warning naming up to ten of them (their order in the data), not a refusal.
+void warn_outside(const Program& measured, const Region& region, double tolerance_deg, Warnings& warnings) {
+  std::vector<int> outside;
+  for (int i = 0; i < measured.size(); ++i)
+    if (!region.contains(measured.positions[static_cast<std::size_t>(i)], tolerance_deg)) outside.push_back(i + 1);
+  if (outside.empty()) return;
+  std::string list;
+  for (std::size_t k = 0; k < outside.size() && k < 10; ++k) list += (k ? ", " : "") + std::to_string(outside[k]);
+  std::ostringstream t;
+  t << tolerance_deg;
+  warnings.push_back({"--region", std::to_string(outside.size()) + " of " + std::to_string(measured.size()) +
+                                      " measured positions lie outside " + region.text() + " by more than " + t.str() +
+                                      " degrees: " + list + (outside.size() > 10 ? ", ..." : "")});
+}
+
 // sqrt(max K(r,r)) over each group the model has, not normalised by N.
 std::vector<double> group_errors(const ModelEvaluation& ev) {
   std::vector<double> out;
@@ -96,6 +112,7 @@ ProgramQuality program_quality(const CalibrateRequest& q, CalibrateResult& r, co
   const Region region = region_of(paper9 ? q.regions : std::vector<std::string>{}, r.warnings);
   out.region = region.text();
   const Program measured{r.fit.directions};
+  if (paper9 && !q.regions.empty()) warn_outside(measured, region, q.tolerance_deg, r.warnings);
   const int P = model_parameters(r.model);
   out.evaluation = evaluate(r.model, measured);
   for (CriterionKind c : kCriteria) {

@@ -1,6 +1,8 @@
 // The options of `scalcal calibrate` (calibrate.hpp) and the request they make.
 #include "commands/calibrate.hpp"
 #include "commands/common_options.hpp"
+#include "commands/region_request.hpp"
+#include "commands/usage_error.hpp"
 
 namespace scalcal::commands {
 namespace {
@@ -71,6 +73,14 @@ const CommandTable& calibrate_table() {
                             "positions", "3"),
              "K"),
        criterion_option(), region_option(),
+       text_option("--program", "FILE",
+                   "the program the data measured (a program or plan file): its '# region:' line judges the efficiency "
+                   "and the suggestions (without it, the measurements file's own region line does)",
+                   "file path"),
+       tolerance_option(),
+       text_option("--sensor", "LABEL", "a label of the meter for the calibration file (--out)"),
+       text_option("--units", "RAW,PHYSICAL",
+                   "the units of the raw data and of the corrected vectors, for the calibration file (--out)"),
        out_option("also write the calibration (the JSON object, with \"converged\") to FILE, for `scalcal correct`",
                   "CAL.json"),
        json_option("print one JSON object")}};
@@ -93,7 +103,18 @@ CalibrateRequest calibrate_request(const Values& v) {
   q.keep_outliers = v.flag("--keep-outliers");
   q.suggest = static_cast<int>(v.integer("--suggest"));
   q.criterion = criterion_of(v);
-  q.regions = v.list("--region");
+  q.program = v.text("--program");
+  if (!v.given("--region") && !v.given("--program") && !q.table) q.regions = regions_for({}, q.file, q.warnings);
+  else q.regions = regions_for(v.list("--region"), q.program, q.warnings);
+  q.tolerance_deg = v.number("--tolerance");
+  q.sensor = v.text("--sensor");
+  if (const std::string units = v.text("--units"); !units.empty()) {
+    const auto comma = units.find(',');
+    if (comma == std::string::npos || comma == 0 || comma + 1 == units.size())
+      throw UsageError("--units: expected RAW,PHYSICAL (for example counts,m/s^2), got '" + units + "'");
+    q.raw_units = units.substr(0, comma);
+    q.physical_units = units.substr(comma + 1);
+  }
   if (v.text("--model") != "auto") q.model = *parse_model(v.text("--model"));
   check_calibrate_request(q);
   return q;

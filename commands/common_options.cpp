@@ -125,6 +125,14 @@ Option region_option() {
   return o;
 }
 
+Option tolerance_option() {
+  return named(number_option("--tolerance", 0, 10,
+                             "a position this far outside the region still counts as inside (a bench set to 0.1 "
+                             "degrees puts a rim position up to 0.05 beyond it)",
+                             "degrees", "0.05"),
+               "DEG");
+}
+
 Option seed_option() {
   Option o = integer_option("--seed", kSeeds.lo, kSeeds.hi,
                             "seed of every random choice (the same seed, the same answer)", "none", "1");

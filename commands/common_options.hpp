@@ -27,6 +27,7 @@ std::string shortest_text(double x);             // the shortest text that reads
 Option criterion_option(const std::string& fallback = "D");
 Option model_option();    // --model, default paper9
 Option region_option();   // --region SPEC, repeatable (their union)
+Option tolerance_option();  // --tolerance DEG: how far outside the region a position still counts as inside
 Option seed_option();     // --seed, default 1
 Option starts_option();   // --starts, default adaptive
 Option threads_option();  // --threads, default 0 = all cores

@@ -18,8 +18,8 @@ const CommandTable& evaluate_table() {
       "evaluate",
       "the criteria (" + criterion_names_text() + "), the RMS errors theta and K of a catalogue program or CSV file",
       10,
-      {program_argument(), model_option(), region_option(),
-       out_option("also write the program as CSV x,y,z,alpha1_deg,alpha2_deg"),
+      {program_argument(), model_option(), region_option(), tolerance_option(),
+       out_option("also write the program as CSV x,y,z,alpha1_deg,alpha2_deg (and its region line)"),
        json_option("print one JSON object (the criteria, the program and K)")}};
   return table;
 }
@@ -29,7 +29,8 @@ EvaluateRequest evaluate_request(const Values& v) {
   q.name = v.text("PROGRAM");
   q.program = program_of(v);
   q.model = model_of(v);
-  q.regions = v.list("--region");
+  q.regions = v.program ? v.list("--region") : regions_for(v.list("--region"), q.name, q.warnings);
+  q.tolerance_deg = v.number("--tolerance");
   return q;
 }
 
@@ -38,6 +39,7 @@ EvaluateResult evaluate(const EvaluateRequest& q, const Progress& progress) {
     throw UsageError("evaluate: --region has limits for the paper9 model only (got --model " +
                      std::string(model_name(q.model)) + ")");
   EvaluateResult r;
+  r.warnings = q.warnings;
   r.name = q.name;
   r.program = q.program;
   r.evaluation = scalcal::evaluate(q.model, q.program);
@@ -45,7 +47,7 @@ EvaluateResult evaluate(const EvaluateRequest& q, const Progress& progress) {
   if (r.evaluation.condition > kIllConditioned) r.warnings.push_back({q.name, ill_conditioning(r.evaluation)});
   if (q.regions.empty()) return r;
   r.region = resolve_region(q.regions, r.warnings);
-  refuse_outside(q.name, q.program, *r.region);
+  refuse_outside(q.name, q.program, *r.region, q.tolerance_deg);
   r.columns = region_columns(*r.region, q.program);
   for (auto c : kCriteria) {
     if (progress) progress("the " + std::string(criterion_name(c)) + " limit on " + r.region->text(), c.index(), kCriterionCount);

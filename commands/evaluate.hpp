@@ -21,7 +21,9 @@ struct EvaluateRequest {
   std::string name;  // the program's name in messages (a file, a catalogue name, "positions")
   Program program;
   ModelKind model = ModelKind::paper9;
-  std::vector<std::string> regions;  // --region specs; none: the sphere (no efficiencies)
+  std::vector<std::string> regions;  // --region specs, else the program file's; none: the sphere (no efficiencies)
+  double tolerance_deg = 0.05;       // positions this far outside the region count as inside
+  Warnings warnings;                 // found while reading the request (a region line replaced)
 };
 
 struct EvaluateResult {
@@ -35,7 +37,7 @@ struct EvaluateResult {
   Warnings warnings;
 };
 
-// PROGRAM [--model NAME] [--region SPEC]... [--out FILE] [--json]
+// PROGRAM [--model NAME] [--region SPEC]... [--tolerance DEG] [--out FILE] [--json]
 const CommandTable& evaluate_table();
 EvaluateRequest evaluate_request(const Values& values);
 

@@ -57,11 +57,18 @@ const CommandTable& optimize_table() {
                                     "start 0 of the multistart is this program (a catalogue name, a family member "
                                     "such as jig:cuboctahedron, or a CSV file); N is its size",
                                     "catalogue name or file path")),
-       criterion_option(), model_option(), region_option(), starts_option(), seed_option(), threads_option(),
+       criterion_option(), model_option(), region_option(),
+       named(number_option("--margin", 0, 10,
+                           "design every position this far inside the region's boundaries (the efficiency stays "
+                           "judged against the region itself)",
+                           "degrees", "0"),
+             "DEG"),
+       starts_option(), seed_option(), threads_option(),
        named(integer_option("--digits", kPolishDigits.lo, kPolishDigits.hi, "polish the optimum to this many digits in MPFR",
                       "significant digits", "0", "none (no polish)"), "P"),
        local_option(),
-       out_option("write the program (the polished one with --digits) as CSV x,y,z,alpha1_deg,alpha2_deg"),
+       out_option("write the program (the polished one with --digits) as CSV x,y,z,alpha1_deg,alpha2_deg, after a "
+                  "'# region:' line with --region"),
        json_option("print one JSON object")}};
   return table;
 }
@@ -74,6 +81,7 @@ OptimizeRequest optimize_request(const Values& v) {
   q.synthesis.criterion = criterion_of(v);
   q.synthesis.model = model_of(v);
   q.regions = v.list("--region");
+  q.margin_deg = v.number("--margin");
   q.synthesis.starts = static_cast<int>(v.integer("--starts"));
   q.synthesis.seed = static_cast<std::uint64_t>(v.integer("--seed"));
   q.synthesis.threads = static_cast<int>(v.integer("--threads"));
@@ -95,11 +103,14 @@ OptimizeResult optimize(const OptimizeRequest& q, const Progress& progress) {
   if (progress) opt.progress = [&](int done, int total) { progress("starts", done, total); };
   if (!q.regions.empty()) r.region = resolve_region(q.regions, r.warnings);
   const bool restricted = r.region && !r.region->is_sphere();
+  if (q.margin_deg > 0 && !restricted)
+    throw UsageError("--margin moves positions inside a restricted --region's boundaries; the sphere has none");
+  if (q.margin_deg > 0) r.designed_on = inset_region(*r.region, q.margin_deg);
   if (restricted && q.digits > 0)
     throw InputError("--digits", 0,
                      "the polish solves the unconstrained optimality conditions; it cannot keep positions inside "
                      "--region " + r.region->text());
-  r.synthesis = restricted ? synthesize_on_region(opt, *r.region) : synthesize(opt);
+  r.synthesis = restricted ? synthesize_on_region(opt, r.designed_on ? *r.designed_on : *r.region) : synthesize(opt);
   if (!r.synthesis.summary.converged())
     r.warnings.push_back({"", r.synthesis.summary.message + " (" + r.synthesis.local_solver + " multistart)"});
   if (q.digits > 0) {
@@ -151,6 +162,7 @@ Json to_json(const OptimizeResult& r) {
     j["limit"] = *r.limit;
     j["efficiency"] = *r.efficiency;
   }
+  if (r.designed_on) j["designed_on"] = r.designed_on->text();
   if (r.polished) {
     j["value_digits"] = r.polished->value_digits;
     j["residual"] = r.polished->residual;

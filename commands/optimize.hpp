@@ -21,6 +21,7 @@ struct OptimizeRequest {
   std::string from;                  // start 0 is this program (a catalogue name or a file); "" none
   std::optional<Program> start;      // that program, when given as data (else read from `from`)
   std::vector<std::string> regions;  // --region specs; none: the sphere
+  double margin_deg = 0;             // design this far inside the region's boundaries
   int digits = 0;                    // polish to this many digits (0: no polish)
 };
 
@@ -31,7 +32,8 @@ struct OptimizeResult {
   SynthesisResult synthesis;
   std::optional<PolishResult> polished;
   Program program;               // the best: the polished one when there is a polish
-  std::optional<Region> region;  // with --region
+  std::optional<Region> region;  // with --region (as given: the limit and the program file's region line)
+  std::optional<Region> designed_on;  // with --margin: the region inset by the margin, where positions lie
   std::optional<double> limit;   // the region's, or the model's stated limit; none when unknown
   std::optional<double> efficiency;
   std::vector<ExtraColumn> columns;  // for the program file on a one-zone region
@@ -40,7 +42,7 @@ struct OptimizeResult {
 
 inline constexpr IntegerRange kOptimizePositions{3, 1000}, kPolishDigits{1, 1000};
 
-// --positions N|--from PROGRAM --criterion C [--model NAME] [--region SPEC]... [--starts K] [--seed S]
+// --positions N|--from PROGRAM --criterion C [--model NAME] [--region SPEC]... [--margin DEG] [--starts K] [--seed S]
 // [--threads T] [--digits P] [--local auto|newton|lbfgs|ipopt] [--out FILE] [--json]
 const CommandTable& optimize_table();
 OptimizeRequest optimize_request(const Values& values);

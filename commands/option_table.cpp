@@ -116,6 +116,10 @@ std::string CommandTable::usage() const {
         break;
       }
       default:
+        if (!o.name.starts_with("-")) {  // an optional positional argument (its name has no dashes)
+          piece = o.name;
+          break;
+        }
         piece = o.name + " " +
                 (o.value_name.empty() ? (o.kind == OptionKind::integer ? "INT" : o.kind == OptionKind::number ? "NUM" : "TEXT")
                                       : o.value_name);

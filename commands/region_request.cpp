@@ -2,9 +2,11 @@
 #include "commands/region_request.hpp"
 
 #include <cstdio>
+#include <filesystem>
 
 #include "numeric/criteria/identifiability.hpp"
 #include "numeric/io/input_error.hpp"
+#include "numeric/program/catalogue.hpp"
 
 namespace scalcal::commands {
 namespace {
@@ -47,10 +49,10 @@ std::vector<ExtraColumn> region_columns(const Region& region, const Program& pro
   return {tilt, azimuth};
 }
 
-void refuse_outside(const std::string& name, const Program& program, const Region& region) {
+void refuse_outside(const std::string& name, const Program& program, const Region& region, double tolerance_deg) {
   std::vector<int> outside;
   for (int i = 0; i < program.size(); ++i)
-    if (!region.contains(program.positions[static_cast<std::size_t>(i)])) outside.push_back(i);
+    if (!region.contains(program.positions[static_cast<std::size_t>(i)], tolerance_deg)) outside.push_back(i);
   if (outside.empty()) return;
   std::string list;
   for (std::size_t k = 0; k < outside.size() && k < 10; ++k) {
@@ -67,6 +69,28 @@ void refuse_outside(const std::string& name, const Program& program, const Regio
   throw InputError(name, 0,
                    std::to_string(outside.size()) + " of " + std::to_string(program.size()) +
                        " positions are outside the region " + region.text() + ": position " + list);
+}
+
+std::vector<std::string> regions_for(const std::vector<std::string>& given, const std::string& program_argument,
+                                     Warnings& warnings) {
+  if (program_argument.empty() || named_program(program_argument)) return given;
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(program_argument, ec)) return given;
+  const ProgramRegion file = read_program_region(program_argument);
+  if (file.specs.empty()) return given;
+  try {
+    parse_region(file.specs);
+  } catch (const InputError& e) {
+    throw InputError(program_argument, file.line, "# region: " + e.reason());
+  }
+  if (given.empty()) return file.specs;
+  if (given != file.specs) {
+    std::string text;
+    for (const auto& s : file.specs) text += (text.empty() ? "" : ";") + s;
+    warnings.push_back({program_argument, "the program's region " + text + " (line " + std::to_string(file.line) +
+                                              ") is replaced by --region"});
+  }
+  return given;
 }
 
 }  // namespace scalcal::commands

@@ -27,8 +27,20 @@ bool is_sphere(const std::vector<std::string>& specs);
 // azimuth_frame) of each position, for a program file; none otherwise.
 std::vector<ExtraColumn> region_columns(const Region& region, const Program& program);
 
-// Throws InputError naming up to ten positions outside the region (1-based, with their tilt from the
-// nearest zone's axis when the region has zones).
-void refuse_outside(const std::string& name, const Program& program, const Region& region);
+// How far outside the region a position may lie and still count as inside when a command judges a
+// program (evaluate, calibrate: --tolerance): a bench set to 0.1 degrees puts a position designed on
+// a cap's rim up to 0.05 degrees beyond it.
+inline constexpr double kDefaultToleranceDeg = 0.05;
+
+// Throws InputError naming up to ten positions outside the region by more than tolerance_deg
+// (1-based, with their tilt from the nearest zone's axis when the region has zones).
+void refuse_outside(const std::string& name, const Program& program, const Region& region,
+                    double tolerance_deg = kRegionToleranceDeg);
+
+// The region specs a command judges PROGRAM on: `given` (--region) when there are any, else the
+// `# region:` line of the program file (none for a catalogue name or data). A bad region line is an
+// InputError naming the file and line; a file's region that --region replaces is a warning.
+std::vector<std::string> regions_for(const std::vector<std::string>& given, const std::string& program_argument,
+                                     Warnings& warnings);
 
 }  // namespace scalcal::commands

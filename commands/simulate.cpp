@@ -6,6 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "commands/region_request.hpp"
 #include "commands/usage_error.hpp"
 #include "numeric/calibration/model_calibration.hpp"
 #include "numeric/criteria/identifiability.hpp"
@@ -67,17 +68,37 @@ void check_noise(const SimulateRequest& q, const ModelEvaluation& ev, Warnings& 
 
 const char* modulus_name(Modulus m) { return m == Modulus::norm ? "norm" : "projection"; }
 
+namespace {
+
+// The rehearsal writes files: its options are the CLI's (the Python module runs the Monte-Carlo).
+Option rehearsal(Option o) {
+  o.cli_only = true;
+  return o;
+}
+
+}  // namespace
+
 const CommandTable& simulate_table() {
   Option program = text_option("--program", "P", "a catalogue name or a CSV file", "none", kRequired);
   program.takes_positions = true;
   Option modulus = choice_option("--modulus", {"norm", "projection"}, "the modulus the estimator fits", "");
   modulus.fallback_text = "both, one after the other";
+  Option log = out_option("rehearsal: write the raw log (t,ix,iy,iz) a meter would give on the program run in its "
+                           "order, motion included (no Monte-Carlo)");
+  log.name = "--log";
+  Option bench_file = out_option("rehearsal: write the grouped bench file (position,x,y,z,ix,iy,iz) instead");
+  bench_file.name = "--bench-file";
+  Option truth = out_option("with --log or --bench-file: write the meter's true parameters as JSON (calibrate "
+                            "--json's keys and units)");
+  truth.name = "--truth";
   static const CommandTable table{
       "simulate",
-      "Monte-Carlo calibration of simulated meters: empirical covariance against sigma^2 K, bias of the estimator, "
-      "effect of bench errors on each modulus",
+      "Monte-Carlo calibration of simulated meters (empirical covariance against sigma^2 K, bias, bench errors), or "
+      "a rehearsal log of a program with its true parameters",
       41,
-      {program, named(integer_option("--trials", 2, 10000000, "simulated meters calibrated", "trials", kRequired), "T"),
+      {program, named(integer_option("--trials", 2, 10000000, "simulated meters calibrated", "trials", "0",
+                                     "required, unless --log or --bench-file"),
+                      "T"),
        positive_option("--noise", "noise RMS sigma of each axis of each sample",
                        "|I| (the modulus of the measured vector)", kRequired),
        number_option("--bench-error", 0, 30, "every true position is the nominal one tipped by this angle", "degrees",
@@ -86,14 +107,69 @@ const CommandTable& simulate_table() {
        named(integer_option("--samples", 1, 100000, "samples per position", "samples", "1"), "K"),
        number_option("--size", 0, 0.2, "scale of the simulated meter's errors",
                      "relative (bias in |I|, angles in radians)", "0.001"),
+       log, bench_file, truth, rehearsal(text_option("--meter", "FILE",
+                                                     "rehearsal: the meter's parameters (bias, scale_deviation, "
+                                                     "nonorthogonality as calibrate --json writes them) instead of "
+                                                     "random ones",
+                                                     "file path")),
+       rehearsal(positive_option("--rate", "rehearsal: samples per second", "Hz", "100")),
+       rehearsal(positive_option("--dwell", "rehearsal: seconds at rest on each position", "seconds", "5")),
+       rehearsal(number_option("--still", 0, 3600,
+                               "rehearsal: seconds at rest on the first position (calibrate's --still)", "seconds", "30")),
+       rehearsal(positive_option("--magnitude", "rehearsal: |I| in the log's units", "log units", "1")),
+       rehearsal(choice_option("--format", {"csv", "text"},
+                               "rehearsal: the raw log as CSV with a header, or text t ix iy iz", "csv")),
        json_option("print one JSON object")}};
   return table;
 }
+
+namespace {
+
+// --log or --bench-file: the rehearsal's request; the Monte-Carlo's options are refused there, and
+// the rehearsal's without it.
+void read_rehearsal(const Values& v, SimulateRequest& q) {
+  const bool rehearsal = v.given("--log") || v.given("--bench-file");
+  const char* monte_carlo[] = {"--trials", "--bench-error", "--modulus", "--samples", "--model"};
+  const char* own[] = {"--truth", "--meter", "--rate", "--dwell", "--still", "--magnitude", "--format"};
+  if (!rehearsal) {
+    for (const char* o : own)
+      if (v.given(o)) throw UsageError(std::string(o) + " belongs to a rehearsal (--log FILE or --bench-file FILE)");
+    if (!v.given("--trials")) throw UsageError("--trials T is required (or --log FILE for a rehearsal)");
+    return;
+  }
+  if (v.given("--log") && v.given("--bench-file")) throw UsageError("give --log or --bench-file, not both");
+  for (const char* o : monte_carlo)
+    if (v.given(o)) throw UsageError(std::string(o) + " belongs to the Monte-Carlo, not to a rehearsal");
+  if (v.given("--format") && v.given("--bench-file")) throw UsageError("--format is the raw log's (--log)");
+  RehearsalRequest r;
+  r.name = q.name;
+  r.program = q.program;
+  Warnings unused;
+  if (!v.program) r.region = regions_for({}, q.name, unused);
+  r.grouped = v.given("--bench-file");
+  r.rate_hz = v.number("--rate");
+  r.dwell_s = v.number("--dwell");
+  r.still_s = r.grouped ? 0 : v.number("--still");
+  r.noise = v.number("--noise");
+  r.magnitude = v.number("--magnitude");
+  r.size = v.number("--size");
+  r.meter_file = v.text("--meter");
+  r.seed = static_cast<std::uint64_t>(v.integer("--seed"));
+  if (r.noise >= kNoiseRefuseAbove)
+    throw UsageError("option --noise: must be below 1 |I| (noise as large as the measured vector)");
+  if (r.rate_hz * (r.dwell_s + r.still_s) * r.program.size() > 2e7)
+    throw UsageError("--rate x (--dwell + --still) x positions asks for more than 2e7 rows");
+  q.rehearsal = std::move(r);
+}
+
+}  // namespace
 
 SimulateRequest simulate_request(const Values& v) {
   SimulateRequest q;
   q.name = v.text("--program");
   q.program = program_of(v, "--program");
+  read_rehearsal(v, q);
+  if (q.rehearsal) return q;
   q.trials = static_cast<int>(v.integer("--trials"));
   q.noise = v.number("--noise");
   q.bench_error_deg = v.number("--bench-error");

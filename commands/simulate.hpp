@@ -2,6 +2,7 @@
 // empirical covariance of the estimates against sigma^2 K, the estimator's bias, and the effect of
 // bench errors, for one or both moduli.
 #pragma once
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -10,6 +11,7 @@
 #include "commands/progress.hpp"
 #include "commands/values.hpp"
 #include "commands/warning.hpp"
+#include "commands/rehearsal.hpp"
 #include "numeric/calibration/monte_carlo.hpp"
 
 namespace scalcal::commands {
@@ -22,6 +24,8 @@ struct SimulateRequest {
   std::vector<Modulus> moduli{Modulus::norm, Modulus::projection};
   ModelKind model = ModelKind::paper9;
   std::uint64_t seed = 1;
+  // --log / --bench-file: a rehearsal (commands/rehearsal.hpp) instead of the Monte-Carlo.
+  std::optional<RehearsalRequest> rehearsal;
 };
 
 struct SimulateResult {
@@ -31,7 +35,9 @@ struct SimulateResult {
 };
 
 // --program P --trials T --noise SIGMA [--bench-error DEG] [--modulus norm|projection] [--model NAME]
-// [--seed S] [--samples K] [--size A] [--json]
+// [--seed S] [--samples K] [--size A] [--json], or for a rehearsal --program P --noise SIGMA
+// --log FILE|--bench-file FILE [--truth FILE] [--meter FILE] [--rate HZ] [--dwell S] [--still S]
+// [--magnitude M] [--format csv|text] [--seed S] [--size A]
 const CommandTable& simulate_table();
 SimulateRequest simulate_request(const Values& values);
 

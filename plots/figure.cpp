@@ -127,7 +127,7 @@ std::string figure_script(const FigureSpec& spec) {
          << "# " << spec.name << ".pdf is that size; " << spec.name << ".png the same drawing at "
          << num(kPngPixelsPerInch) << " pixels per inch, " << spec.name << ".svg at " << num(kSvgPixelsPerInch)
          << " (CSS pixels)\n"
-         << "# Written by `scalcal reproduce`; re-make the figure with: cd <this folder> && gnuplot " << spec.name
+         << "# Written by `" << one_line(spec.written_by) << "`; re-make the figure with: cd <this folder> && gnuplot " << spec.name
          << ".gp\n";
   for (const auto& f : formats(spec))
     script << "\n# ---- " << f.extension << " ----\nreset\nset terminal " << f.terminal << "\nset output "

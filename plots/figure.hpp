@@ -28,6 +28,7 @@ struct FigureSpec {
   double height_cm = 6.5;
   double font_pt = 8;   // at print size; render() refuses indices below kMinTextPt
   std::string body;     // gnuplot commands; data files are named relative to the output folder
+  std::string written_by = "scalcal reproduce";  // the command named in the script's header
 };
 
 struct RenderedFigure {

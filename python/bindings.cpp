@@ -15,6 +15,7 @@
 #include "commands/jig.hpp"
 #include "commands/limits.hpp"
 #include "commands/optimize.hpp"
+#include "commands/plan.hpp"
 #include "commands/polish.hpp"
 #include "commands/random.hpp"
 #include "commands/simulate.hpp"
@@ -90,6 +91,7 @@ const std::vector<Binding>& bindings() {
       polish_binding(),
       bind(commands::certify_table(), commands::certify_request, commands::certify),
       bind(commands::augment_table(), commands::augment_request, commands::augment),
+      bind(commands::plan_table(), commands::plan_request, commands::plan),
       bind(commands::family_table(), commands::family_request,
            [](const commands::FamilyRequest& q) { return commands::family(q); }),
       bind(commands::limits_table(), commands::limits_request, commands::limits),

@@ -23,7 +23,9 @@ int run(const commands::Values& v) {
   const auto r = commands::augment(commands::augment_request(v), terminal_progress("augment"));
   print_warnings("augment", r.warnings);
   const AugmentedProgram& a = r.augmented;
-  if (v.given("--out")) write_program_file(v.text("--out"), a.program, r.columns);
+  if (v.given("--out"))
+    write_program_file(v.text("--out"), a.program, r.columns,
+                       {r.region.is_sphere() ? std::vector<std::string>{} : r.region.specs, {}});
   if (v.flag("--json")) {
     print_json(commands::to_json(r));
     return 0;
@@ -36,6 +38,15 @@ int run(const commands::Values& v) {
     char line[96];
     std::snprintf(line, sizeof line, "  %.9f, %.9f, %.9f\n", x.x(), x.y(), x.z());
     std::cout << line;
+  }
+  std::cout << "joint optimisation of the added positions: " << a.starts << (a.starts == 1 ? " start" : " starts")
+            << ", the best from start " << a.best_start << " (start 0, from the greedy exchange: "
+            << value_text(a.value_greedy) << ")\n";
+  if (r.efficiency) {
+    char numbers[96];
+    std::snprintf(numbers, sizeof numbers, "efficiency %.6f against the limit %.10g", *r.efficiency, *r.limit);
+    std::cout << numbers << " on " << r.region.text() << " (limit / value"
+              << (r.criterion == CriterionKind::D ? ", D as its 9th root" : "") << ")\n";
   }
   return 0;
 }

@@ -19,6 +19,7 @@ void print_text(const commands::OptimizeResult& r) {
             << ", " << s.hits << " of " << s.starts << " starts reached it (stopped: " << s.stopping << "), "
             << s.distinct << (s.distinct == 1 ? " program" : " distinct programs") << " up to symmetry, "
             << std::setprecision(3) << s.seconds << " s)\n";
+  if (r.designed_on) std::cout << "designed on " << r.designed_on->text() << "\n";
   if (r.limit && r.model != ModelKind::paper9)
     std::cout << "model " << model_name(r.model) << ": limit " << std::setprecision(10) << *r.limit << ", efficiency "
               << std::setprecision(9) << *r.efficiency << " (limit / value; D as its " << model_parameters(r.model)
@@ -35,7 +36,9 @@ void print_text(const commands::OptimizeResult& r) {
 int run(const commands::Values& v) {
   const auto r = commands::optimize(commands::optimize_request(v), terminal_progress("optimize"));
   print_warnings("optimize", r.warnings);
-  if (v.given("--out")) write_program_file(v.text("--out"), r.program, r.columns);
+  if (v.given("--out"))
+    write_program_file(v.text("--out"), r.program, r.columns,
+                       {r.region && !r.region->is_sphere() ? r.region->specs : std::vector<std::string>{}, {}});
   if (v.flag("--json")) print_json(commands::to_json(r));
   else print_text(r);
   return 0;

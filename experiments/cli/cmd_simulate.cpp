@@ -1,6 +1,7 @@
 // `scalcal simulate --program P --trials T --noise SIGMA [--bench-error DEG] [--modulus ...] [--model NAME]
 // [--seed S] [--samples K] [--size A] [--json]`: Monte-Carlo calibration of simulated meters
-// (commands/simulate.hpp), printed as a table per modulus.
+// (commands/simulate.hpp), printed as a table per modulus; with --log FILE or --bench-file FILE a
+// rehearsal instead (commands/rehearsal.hpp): the files, and the true parameters in --truth FILE.
 #include <cmath>
 #include <iomanip>
 #include <iostream>
@@ -8,6 +9,7 @@
 #include "commands/simulate.hpp"
 #include "experiments/cli/command.hpp"
 #include "experiments/cli/json_output.hpp"
+#include "experiments/cli/output_file.hpp"
 
 namespace scalcal::cli {
 namespace {
@@ -37,8 +39,30 @@ void print_result(std::ostream& out, const MonteCarloResult& r, Modulus m) {
       << r.mean_noise_ratio << "\n";
 }
 
+// --log / --bench-file: the files, and one line (or the truth as JSON) on stdout.
+int rehearse(const commands::Values& v, const commands::RehearsalRequest& q) {
+  const commands::RehearsalResult r = commands::rehearse(q);
+  print_warnings("simulate", r.warnings);
+  if (q.grouped)
+    write_output_file(v.text("--bench-file"), [&](std::ostream& out) { commands::write_bench_file(out, r); });
+  else
+    write_output_file(v.text("--log"), [&](std::ostream& out) { commands::write_raw_log(out, r, v.text("--format") == "text"); });
+  const commands::Json truth = commands::truth_json(r);
+  if (v.given("--truth")) write_output_file(v.text("--truth"), [&](std::ostream& out) { write_json(out, truth); });
+  if (v.flag("--json")) {
+    print_json(truth);
+    return 0;
+  }
+  std::cout << "rehearsal of " << q.name << ": " << q.program.size() << " positions, " << r.t.size() << " rows ("
+            << std::setprecision(4) << r.t.back() + 1 / q.rate_hz << " s at " << q.rate_hz << " Hz), noise " << q.noise
+            << " |I|, seed " << q.seed << " -> " << (q.grouped ? v.text("--bench-file") : v.text("--log"))
+            << (v.given("--truth") ? ", true parameters -> " + v.text("--truth") : std::string()) << "\n";
+  return 0;
+}
+
 int run(const commands::Values& v) {
   const commands::SimulateRequest q = commands::simulate_request(v);
+  if (q.rehearsal) return rehearse(v, *q.rehearsal);
   const bool json = v.flag("--json");
   const auto r = commands::simulate(q, terminal_progress("simulate"));
   print_warnings("simulate", r.warnings);

@@ -46,8 +46,9 @@ void write_output_file(const std::string& path, const std::function<void(std::os
   file.close();
 }
 
-void write_program_file(const std::string& path, const Program& program, const std::vector<ExtraColumn>& extra) {
-  write_output_file(path, [&](std::ostream& out) { write_program_csv(out, program, extra); });
+void write_program_file(const std::string& path, const Program& program, const std::vector<ExtraColumn>& extra,
+                        const ProgramNotes& notes) {
+  write_output_file(path, [&](std::ostream& out) { write_program_csv(out, program, extra, notes); });
 }
 
 void check_stdout() {

@@ -33,8 +33,10 @@ class OutputFile {
 
 void write_output_file(const std::string& path, const std::function<void(std::ostream&)>& write);
 
-// The program as CSV (x,y,z,alpha1_deg,alpha2_deg, then any extra columns).
-void write_program_file(const std::string& path, const Program& program, const std::vector<ExtraColumn>& extra = {});
+// The program as CSV (x,y,z,alpha1_deg,alpha2_deg, then any extra columns), after its region line
+// and comments.
+void write_program_file(const std::string& path, const Program& program, const std::vector<ExtraColumn>& extra = {},
+                        const ProgramNotes& notes = {});
 
 // Flushes stdout and throws OutputError when anything written to it was lost.
 void check_stdout();

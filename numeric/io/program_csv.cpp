@@ -5,6 +5,7 @@
 #include <charconv>
 #include <cmath>
 #include <fstream>
+#include <string_view>
 
 #include "numeric/io/input_error.hpp"
 
@@ -57,7 +58,14 @@ std::string shortest(double v) {
 
 }  // namespace
 
-void write_program_csv(std::ostream& out, const Program& program, const std::vector<ExtraColumn>& extra) {
+void write_program_csv(std::ostream& out, const Program& program, const std::vector<ExtraColumn>& extra,
+                       const ProgramNotes& notes) {
+  if (!notes.region.empty()) {
+    out << "# region: ";
+    for (std::size_t k = 0; k < notes.region.size(); ++k) out << (k ? ";" : "") << notes.region[k];
+    out << '\n';
+  }
+  for (const auto& c : notes.comments) out << "# " << c << '\n';
   out << "x,y,z,alpha1_deg,alpha2_deg";
   for (const auto& c : extra) out << ',' << c.name;
   out << '\n';
@@ -79,5 +87,39 @@ bool write_program_csv(const std::string& path, const Program& program) {
   out.close();
   return !out.fail();
 }
+
+ProgramRegion program_region(const std::string& text) {
+  ProgramRegion r;
+  std::size_t start = 0;
+  for (int line = 1; start < text.size(); ++line) {
+    std::size_t end = text.find('\n', start);
+    if (end == std::string::npos) end = text.size();
+    std::string_view l(text.data() + start, end - start);
+    start = end + 1;
+    if (line == 1 && l.starts_with("\xEF\xBB\xBF")) l.remove_prefix(3);
+    while (!l.empty() && (l.front() == ' ' || l.front() == '\t')) l.remove_prefix(1);
+    if (!l.starts_with('#')) continue;
+    l.remove_prefix(1);
+    while (!l.empty() && (l.front() == ' ' || l.front() == '\t')) l.remove_prefix(1);
+    if (!l.starts_with("region:")) continue;
+    l.remove_prefix(7);
+    std::string field;
+    const auto flush = [&] {
+      const auto b = field.find_first_not_of(" \t\r"), e = field.find_last_not_of(" \t\r");
+      if (b != std::string::npos) r.specs.push_back(field.substr(b, e - b + 1));
+      field.clear();
+    };
+    for (char c : l) {
+      if (c == ';') flush();
+      else field += c;
+    }
+    flush();
+    r.line = line;
+    return r;
+  }
+  return r;
+}
+
+ProgramRegion read_program_region(const std::string& path) { return program_region(read_text_file(path)); }
 
 }  // namespace scalcal

@@ -1,5 +1,7 @@
 // Programs as CSV files: read with columns x,y,z (normalised on reading) or
-// alpha1_deg,alpha2_deg (azimuth, elevation); written with x,y,z,alpha1_deg,alpha2_deg.
+// alpha1_deg,alpha2_deg (azimuth, elevation); written with x,y,z,alpha1_deg,alpha2_deg. A program
+// may carry the bench's region as a comment line `# region: SPEC;SPEC` (the --region specs of
+// optimize, plan and evaluate), so the commands that read it judge it on that region.
 #pragma once
 #include <ostream>
 #include <string>
@@ -24,10 +26,28 @@ struct ExtraColumn {
   std::vector<double> values;
 };
 
+// What a program file says beside its positions: the region (written first as `# region: A;B`),
+// then other comment lines (without their '#').
+struct ProgramNotes {
+  std::vector<std::string> region;
+  std::vector<std::string> comments;
+};
+
 // Numbers are written as the shortest text that reads back to the same double. The path form
 // returns false when the file could not be opened, written or closed (e.g. a full disk).
-void write_program_csv(std::ostream& out, const Program& program, const std::vector<ExtraColumn>& extra = {});
+void write_program_csv(std::ostream& out, const Program& program, const std::vector<ExtraColumn>& extra = {},
+                       const ProgramNotes& notes = {});
 bool write_program_csv(const std::string& path, const Program& program);
+
+// The region a program file's text carries: the specs of its first `# region:` line (split at ';')
+// and that line's number; no specs when it has none.
+struct ProgramRegion {
+  std::vector<std::string> specs;
+  int line = 0;
+};
+ProgramRegion program_region(const std::string& text);
+// The same read from a file (InputError when it cannot be read).
+ProgramRegion read_program_region(const std::string& path);
 
 // Azimuth alpha1 and elevation alpha2 in degrees of a unit vector (inverse of from_angles_deg).
 Eigen::Vector2d angles_deg(const Vec3& eta);

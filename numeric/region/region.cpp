@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <optional>
 
@@ -214,7 +215,13 @@ bool Region::contains(const Vec3& x, double tolerance_deg) const {
 std::string Region::text() const {
   std::string out;
   for (const auto& s : specs) out += (out.empty() ? "" : " + ") + s;
-  return out.empty() ? "sphere" : out;
+  if (out.empty()) out = "sphere";
+  if (inset_deg > 0) {
+    char margin[32];
+    std::snprintf(margin, sizeof margin, "%.6g", inset_deg);
+    out += std::string(" inset by ") + margin + " deg";
+  }
+  return out;
 }
 
 std::vector<Vec3> Region::grid(double step_deg) const {
@@ -270,6 +277,23 @@ void add_region_spec(Region& region, const std::string& spec) {
                        "'; expected sphere, cap:DEG[:X,Y,Z], band:LO:HI[:X,Y,Z], faces:DEG or candidates:FILE");
   }
   region.specs.push_back(spec);
+}
+
+Region inset_region(const Region& region, double margin_deg) {
+  Region r = region;
+  if (!(margin_deg > 0)) return r;
+  r.inset_deg += margin_deg;
+  for (Zone& z : r.zones) {
+    if (z.is_sphere()) continue;
+    if (z.min_tilt_deg > 0) z.min_tilt_deg += margin_deg;
+    if (z.max_tilt_deg < 180) z.max_tilt_deg -= margin_deg;
+    if (!(z.min_tilt_deg < z.max_tilt_deg)) {
+      char text[64];
+      std::snprintf(text, sizeof text, "%.6g", margin_deg);
+      throw InputError("--margin", 0, std::string(text) + " degrees leaves nothing of the region " + region.text());
+    }
+  }
+  return r;
 }
 
 Region parse_region(const std::vector<std::string>& specs) {

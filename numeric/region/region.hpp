@@ -17,6 +17,7 @@ struct Region {
   std::vector<std::string> specs;  // as given, one per --region
   std::vector<Zone> zones;
   std::vector<Vec3> candidates;    // unit vectors
+  double inset_deg = 0;            // the zones' boundaries moved inwards by this (inset_region)
 
   bool is_sphere() const;
   bool contains(const Vec3& x, double tolerance_deg = kRegionToleranceDeg) const;
@@ -63,6 +64,12 @@ Vec3 zone_position(const Zone& zone, double tilt_deg, double azimuth_deg);
 std::vector<Mat3> symmetries_fixing(const Vec3& axis);
 
 Region sphere_region();
+
+// The region with every zone boundary moved inwards by margin_deg (a cap's rim, a band's two
+// circles; the sphere has none), candidates kept: where optimize --margin designs, so that a
+// bench's rounding or misalignment keeps the positions inside the region itself. Throws InputError
+// ("--margin") when a zone would vanish.
+Region inset_region(const Region& region, double margin_deg);
 
 // One spec: sphere | cap:DEG[:X,Y,Z] | band:LO:HI[:X,Y,Z] | faces:DEG | candidates:FILE.
 // Throws InputError (file "--region", the spec and the reason) for a malformed spec, an angle out of

@@ -22,7 +22,13 @@ TEST(RawCalibrateCli, XsensEndToEnd) {
   const auto r = run_cli("calibrate --measurements " + kXsens + " --magnitude 9.81744 --json --out " + cal);
   ASSERT_EQ(r.status, 0) << r.err;
   const Json j = Json::parse(r.out);
-  EXPECT_EQ(Json::parse(slurp(cal)), j);  // --out holds the same object
+  // --out holds the same object after the calibration file's header (issue 32).
+  Json file = Json::parse(slurp(cal));
+  for (const char* key : {"format_version", "created", "tool", "sensor", "units", "region"}) {
+    EXPECT_TRUE(file.contains(key)) << key;
+    if (!j.contains(key)) file.erase(key);
+  }
+  EXPECT_EQ(file, j);
   for (const char* key : {"bias", "scale_deviation", "nonorthogonality", "bias_std", "offset", "matrix", "intervals",
                           "program", "outliers", "suggested", "predicted_std", "achieved_std"})
     EXPECT_TRUE(j.contains(key)) << key;

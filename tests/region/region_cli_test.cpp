@@ -29,9 +29,11 @@ TEST(RegionCli, OptimizeOnACapReportsLimitAndEfficiency) {
   EXPECT_NEAR(efficiency, std::pow(j["limit"].get<double>() / j["value"].get<double>(), 1.0 / 9), 1e-12);
   EXPECT_GT(efficiency, 0.99);
   EXPECT_LE(efficiency, 1.0 + 1e-12);
-  // --out for a cap adds tilt_deg and azimuth_deg; every tilt is within the cap.
+  // --out for a cap writes the region line, then adds tilt_deg and azimuth_deg; every tilt is within the cap.
   std::istringstream csv(slurp(out));
-  std::string header, line;
+  std::string region_line, header, line;
+  std::getline(csv, region_line);
+  EXPECT_EQ(region_line, "# region: cap:90");
   std::getline(csv, header);
   EXPECT_EQ(header, "x,y,z,alpha1_deg,alpha2_deg,tilt_deg,azimuth_deg");
   int rows = 0;

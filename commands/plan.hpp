@@ -1,0 +1,85 @@
+// `scalcal plan` as a function: the settings of a bench for each position of a program and an order
+// to run them (fewest remounts, then least travel: numeric/bench/run_order.hpp), each setting on the
+// bench's resolution without leaving the program's region, and what that rounding costs.
+#pragma once
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "commands/json.hpp"
+#include "commands/option_table.hpp"
+#include "commands/progress.hpp"
+#include "commands/values.hpp"
+#include "commands/warning.hpp"
+#include "numeric/bench/run_order.hpp"
+#include "numeric/criteria/model_evaluation.hpp"
+#include "numeric/io/program_csv.hpp"
+#include "numeric/region/region.hpp"
+
+namespace scalcal::commands {
+
+struct PlanRequest {
+  std::string name;  // the program's name in messages
+  Program program;
+  std::string bench;                 // the --bench spec
+  double resolution_deg = 0;         // 0: the angles as solved
+  RunOrder order = RunOrder::travel;
+  std::vector<std::string> regions;  // --region, else the program file's; none: no region to keep
+  ModelKind model = ModelKind::paper9;
+  Warnings warnings;                 // found while reading the request
+};
+
+struct PlannedStep {
+  int position = 0;       // index into the program (0-based; 1-based in text, JSON and CSV)
+  BenchSetting setting;   // on the resolution grid
+  Vec3 eta;               // the position the setting measures
+  double rounding_deg = 0;  // its angle from the designed position
+};
+
+struct PlanResult {
+  explicit PlanResult(Bench b) : bench(std::move(b)) {}
+  std::string name;
+  Bench bench;
+  std::optional<Region> region;
+  RunOrder order = RunOrder::travel;
+  double resolution_deg = 0;
+  std::vector<PlannedStep> steps;  // in run order
+  double travel_deg = 0;
+  int remounts = 0;
+  double given_travel_deg = 0;     // the program's own order, with its best settings, rounded alike
+  int given_remounts = 0;
+  ModelKind model = ModelKind::paper9;
+  ModelEvaluation designed, as_run;  // the criteria before and after rounding
+  // 1 - efficiency as run / efficiency designed = 1 - value designed / value as run (D: P-th roots):
+  // the share of the design's efficiency that rounding costs, whatever the region's limit.
+  std::array<double, kCriterionCount> efficiency_lost{};
+  Warnings warnings;
+
+  double max_rounding_deg() const;
+  Program program_as_run() const;  // the steps' positions, in run order
+};
+
+const char* order_name(RunOrder order);
+
+// PROGRAM --bench SPEC [--resolution DEG] [--order travel|remounts|given] [--region SPEC]... [--model NAME]
+// [--out FILE] [--json]
+const CommandTable& plan_table();
+PlanRequest plan_request(const Values& values);
+
+// Throws InputError for a bad bench spec, a position the bench cannot reach (naming it), or one that
+// no setting on the resolution grid keeps inside the region.
+PlanResult plan(const PlanRequest& request, const Progress& progress = {});
+
+Json to_json(const PlanResult& result);
+
+// The plan as a program file: the positions as run, in run order, with columns step, position, the
+// mounting and the angles, after the region line and comments naming the bench and its mountings.
+struct PlanFile {
+  Program program;
+  std::vector<ExtraColumn> columns;
+  ProgramNotes notes;
+};
+PlanFile plan_file(const PlanResult& result);
+
+}  // namespace scalcal::commands

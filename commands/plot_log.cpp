@@ -1,0 +1,111 @@
+// The log's figure of `scalcal plot --log FILE --calibration CAL.json` (plot.hpp): the reproduction's
+// fig13 drawing for any log and its calibration.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "commands/json.hpp"
+#include "commands/plot.hpp"
+#include "numeric/io/csv_table.hpp"
+#include "numeric/io/input_error.hpp"
+#include "numeric/io/raw_log.hpp"
+
+namespace scalcal::commands {
+namespace {
+
+// Paul Tol's colours (plots/figure.hpp, style): x, y, z dark, medium, light; reference marks grey.
+constexpr const char* kDark = "#004488";
+constexpr const char* kMedium = "#BB5566";
+constexpr const char* kLight = "#DDAA33";
+constexpr const char* kGrey = "#777777";
+constexpr int kMaxLogRows = 20000;  // drawn from the log (every k-th row beyond): its shape, not its noise
+
+std::string num(double v) {
+  char s[32];
+  std::snprintf(s, sizeof s, "%.9g", v);
+  return s;
+}
+
+struct Interval {
+  double start, end, residual;
+  Vec3 mean;
+};
+
+// The calibration's intervals (start, end in seconds, raw mean, residual) and |I|.
+std::vector<Interval> intervals_of(const std::string& file, double& magnitude) {
+  Json j;
+  try {
+    j = Json::parse(read_text_file(file));
+  } catch (const Json::exception& e) {
+    throw InputError(file, 0, std::string("not JSON: ") + e.what());
+  }
+  if (!j.is_object() || !j.contains("intervals") || !j["intervals"].is_array())
+    throw InputError(file, 0, "not a calibration of a log (calibrate --out): it has no 'intervals'");
+  magnitude = j.contains("magnitude") && j["magnitude"].is_number() ? j["magnitude"].get<double>() : 1.0;
+  std::vector<Interval> out;
+  for (const auto& i : j["intervals"]) {
+    if (!i.is_object() || !i["start"].is_number() || !i["end"].is_number() || !i["residual"].is_number() ||
+        !i["mean"].is_array() || i["mean"].size() != 3)
+      throw InputError(file, 0, "its intervals need start and end times (a raw log's calibration), mean and residual");
+    out.push_back({i["start"].get<double>(), i["end"].get<double>(), i["residual"].get<double>(),
+                   Vec3(i["mean"][0].get<double>(), i["mean"][1].get<double>(), i["mean"][2].get<double>())});
+  }
+  if (out.empty()) throw InputError(file, 0, "no intervals");
+  return out;
+}
+
+}  // namespace
+
+void plot_log(const PlotRequest& q, PlotResult& r) {
+  double magnitude = 1;
+  const std::vector<Interval> intervals = intervals_of(q.calibration, magnitude);
+  const RawLog log = read_raw_log(q.log);
+  // Before calibration: one gain for all axes and no offsets, the median |mean| over |I|.
+  std::vector<double> norms;
+  for (const auto& i : intervals) norms.push_back(i.mean.norm());
+  std::vector<double> sorted = norms;
+  std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2), sorted.end());
+  const double gain = sorted[sorted.size() / 2] / magnitude;
+  std::string iv = "interval,start,end,before,after\n";
+  for (std::size_t k = 0; k < intervals.size(); ++k)
+    iv += std::to_string(k + 1) + "," + num(intervals[k].start) + "," + num(intervals[k].end) + "," +
+          num(norms[k] / gain - magnitude) + "," + num(intervals[k].residual) + "\n";
+  const int step = std::max(1, log.size() / kMaxLogRows);
+  std::string rows = "t,ix,iy,iz\n";
+  double lo = INFINITY, hi = -INFINITY;
+  for (int i = 0; i < log.size(); i += step) {
+    if (!log.finite(i)) continue;
+    const Vec3& s = log.samples[static_cast<std::size_t>(i)];
+    rows += num(log.t[static_cast<std::size_t>(i)]) + "," + num(s(0)) + "," + num(s(1)) + "," + num(s(2)) + "\n";
+    lo = std::min(lo, s.minCoeff());
+    hi = std::max(hi, s.maxCoeff());
+  }
+  r.data.push_back({r.stem + "_log.csv", rows});
+  r.data.push_back({r.stem + "_intervals.csv", iv});
+  r.view = "log";
+  r.comment = "the log " + display_name(q.log) + " with the static intervals of " + display_name(q.calibration) +
+              ", and |mean| - |I| per interval before and after calibration";
+  r.width_cm = 17.5;
+  r.height_cm = 9.5;
+  const double pad = 0.04 * (hi - lo), mid = 0.5 * (lo + hi), half = 0.5 * (hi - lo) + pad;
+  const std::string s = r.stem;
+  r.body =
+      "set multiplot\nset grid\nset lmargin at screen 0.1\nset rmargin at screen 0.78\n"
+      "set key outside right top Left reverse samplen 2 width -1\nset label 1 '(a)' at graph 0, graph 1.04 left front\n"
+      "set tmargin at screen 0.94\nset bmargin at screen 0.6\nset xlabel 't (s)'\nset ylabel 'raw'\n"
+      "set style fill solid 1.0 noborder\nset yrange [" + num(mid - half) + ":" + num(mid + half) + "]\n"
+      "plot '" + s + "_intervals.csv' skip 1 using (($2+$3)/2):(" + num(mid) + "):(($3-$2)/2):(" + num(half) +
+      ") with boxxyerror lc rgb '#e3e3e3' title 'static', \\\n"
+      "     '" + s + "_log.csv' skip 1 using 1:2 with lines lw 1 lc rgb '" + kDark + "' title 'x', \\\n"
+      "     '" + s + "_log.csv' skip 1 using 1:3 with lines lw 1 lc rgb '" + kMedium + "' title 'y', \\\n"
+      "     '" + s + "_log.csv' skip 1 using 1:4 with lines lw 1 lc rgb '" + kLight + "' title 'z'\n"
+      "set label 1 '(b)'\nset tmargin at screen 0.44\nset bmargin at screen 0.12\nset xlabel 'static interval'\n"
+      "set ylabel '| |mean| − |I| |'\nset xrange [0:" + std::to_string(intervals.size() + 1) +
+      "]\nset yrange [*:*]\nset logscale y\nset format y '10^{/*1.1 %T}'\n"
+      "plot '" + s + "_intervals.csv' skip 1 using 1:(abs($4)) with points pt 6 ps 0.9 lw 1.5 lc rgb '" + kGrey +
+      "' title 'before (one gain)', \\\n"
+      "     '" + s + "_intervals.csv' skip 1 using 1:(abs($5)) with points pt 7 ps 0.9 lc rgb '" + kDark +
+      "' title 'after calibration'\nunset multiplot\n";
+}
+
+}  // namespace scalcal::commands

@@ -1,0 +1,68 @@
+// A rehearsal of a program (simulate --log, --bench-file): the raw log, or the grouped bench file,
+// that a meter with random (or given) parameters would write on the program run in its order, with
+// the true parameters beside it in the keys and units of `calibrate --json`, so calibrating the log
+// can be checked against what made it.
+//
+// The log: the meter rests on the first position for max(--still, --dwell) seconds (calibrate's
+// still period), then moves to each next position along the great circle between them (a smooth
+// cosine profile at about 45 degrees per second, at least one second; between two positions less
+// than 5 degrees apart it swings 20 degrees away and back, so the two stay separate intervals) and
+// rests there --dwell seconds. The specific force is quasi-static (|I| eta along the path; the
+// motion's own accelerations are left out), each output gets white Gaussian noise of --noise |I|.
+// The meter (numeric/calibration/meter_model.hpp): raw = bias + (E + dK) Phi (|I| eta), Phi with
+// phi_kj = phi_jk (the convention calibrate reports in), random parameters N(0, size^2) each (bias
+// relative to |I|) from --seed.
+#pragma once
+#include <cstdint>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "commands/json.hpp"
+#include "commands/warning.hpp"
+#include "numeric/calibration/full_correction.hpp"
+#include "numeric/calibration/meter_model.hpp"
+#include "numeric/program/program.hpp"
+
+namespace scalcal::commands {
+
+struct RehearsalRequest {
+  std::string name;                // the program's name in messages and in the log's comments
+  Program program;                 // in run order (a plan file is)
+  std::vector<std::string> region;  // the program file's region line, carried into the log
+  bool grouped = false;            // the grouped bench file instead of a raw log
+  double rate_hz = 100, dwell_s = 5, still_s = 30;
+  double noise = 1e-3;             // per output and sample, relative to |I|
+  double magnitude = 1;            // |I| in the log's units
+  double size = 1e-3;              // scale of a random meter's errors
+  std::string meter_file;          // a JSON file with bias, scale_deviation, nonorthogonality ("": random)
+  std::uint64_t seed = 1;
+};
+
+struct RehearsalResult {
+  RehearsalRequest request;
+  Meter meter;                 // the truth
+  FullCorrection correction;   // its correction: physical = matrix (raw - offset)
+  std::vector<double> t;       // seconds (the raw log)
+  std::vector<Vec3> samples;   // raw outputs, one per row
+  std::vector<int> position;   // 1-based position of each row, 0 while moving
+  std::vector<std::pair<double, double>> rests;  // each position's resting time span (seconds)
+  Warnings warnings;
+};
+
+// Throws InputError for a meter file that cannot be read or lacks a key, UsageError for a meter
+// whose axes are degenerate.
+RehearsalResult rehearse(const RehearsalRequest& request);
+
+// The true parameters: bias (file units), scale_deviation, nonorthogonality (rad), offset, matrix
+// (rows; physical = matrix (raw - offset)), magnitude, as calibrate --json has them; with noise
+// (file units), seed, program, positions, rows.
+Json truth_json(const RehearsalResult& result);
+
+// The raw log: CSV `t,ix,iy,iz` (after the region line and a comment), or text `t ix iy iz` without a
+// header (IMU-TK's form). The grouped bench file: CSV `position,x,y,z,ix,iy,iz`, the resting samples
+// of each position with its designed direction.
+void write_raw_log(std::ostream& out, const RehearsalResult& result, bool text_format);
+void write_bench_file(std::ostream& out, const RehearsalResult& result);
+
+}  // namespace scalcal::commands

@@ -1,0 +1,41 @@
+// `scalcal plot PROGRAM [--region SPEC]... [--out FILE.pdf|png|svg]`: the figure of a program
+// (commands/plot.hpp), rendered by gnuplot at print size; FILE.gp, FILE.pdf, FILE.png, FILE.svg and
+// the CSV data are written into FILE's folder, and their names printed.
+#include <filesystem>
+#include <iostream>
+
+#include "commands/plot.hpp"
+#include "experiments/cli/command.hpp"
+#include "experiments/cli/output_file.hpp"
+#include "plots/figure.hpp"
+
+namespace scalcal::cli {
+namespace {
+
+int run(const commands::Values& v) {
+  const commands::PlotResult r = commands::plot(commands::plot_request(v));
+  print_warnings("plot", r.warnings);
+  const std::filesystem::path folder(r.folder);
+  for (const auto& d : r.data)
+    write_output_file((folder / d.file).string(), [&](std::ostream& out) { out << d.text; });
+  plots::FigureSpec spec;
+  spec.name = r.stem;
+  spec.comment = r.comment;
+  spec.width_cm = r.width_cm;
+  spec.height_cm = r.height_cm;
+  spec.body = r.body;
+  spec.written_by = "scalcal plot";
+  try {
+    const plots::RenderedFigure f = plots::render(folder, spec);
+    std::cout << "plot (" << r.view << "): " << f.pdf.string() << ", " << f.png.string() << ", " << f.svg.string()
+              << " (script " << f.script.string() << ")\n";
+  } catch (const std::runtime_error& e) {
+    throw OutputError(std::string("plot: ") + e.what());
+  }
+  return 0;
+}
+
+const Registration reg(commands::plot_table(), run);
+
+}  // namespace
+}  // namespace scalcal::cli

@@ -1,0 +1,239 @@
+// scalcal export round trips: each target's file is read here the way that tool reads it and applied
+// by that tool's own formula (written out below from its source: PX4's Accelerometer::Correct and
+// Magnetometer::Correct, ArduPilot's _rotate_and_correct_accel and AP_Compass_Backend::correct_field,
+// IMU-TK's CalibratedTriad::unbiasNormalize, Kalibr's scale-misalignment model, MATLAB's magcal), to
+// the raw rows of a rehearsal log, and compared with `scalcal correct` on the same rows:
+//   json, magcal, imu_tk (17 digits)          the same vectors to 1e-12 relative
+//   kalibr                                    R times correct's vectors to 1e-12 (R: its rotation)
+//   px4, ardupilot accel (9 digits, float32)  correct's vectors without the dropped off-diagonal
+//                                             terms to 1e-7; a calibration with a diagonal matrix
+//                                             gives correct's vectors themselves
+//   px4, ardupilot mag (symmetric matrix)     the same moduli to 1e-7, vectors within the reported
+//                                             rotation of correct's
+#include <cmath>
+#include <map>
+#include <regex>
+#include <sstream>
+
+#include <Eigen/Dense>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "tests/common/run_cli.hpp"
+
+namespace scalcal::testing {
+namespace {
+
+using Json = nlohmann::json;
+using V3 = Eigen::Vector3d;
+using M3 = Eigen::Matrix3d;
+
+struct Data {
+  std::string log, calibration;
+  std::vector<V3> raw, corrected;  // the log's rows and correct's
+  M3 C;
+  V3 o;
+};
+
+std::vector<std::vector<double>> csv_numbers(const std::string& text) {
+  std::vector<std::vector<double>> rows;
+  std::istringstream in(text);
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#' || std::isalpha(static_cast<unsigned char>(line[0]))) continue;
+    std::vector<double> v;
+    std::istringstream fields(line);
+    std::string f;
+    while (std::getline(fields, f, ',')) v.push_back(std::stod(f));
+    rows.push_back(v);
+  }
+  return rows;
+}
+
+// A rehearsal log with visible errors (size 0.01), its calibration, and correct's output.
+const Data& data() {
+  static const Data d = [] {
+    Data d;
+    d.log = (scratch_dir() / "export_log.csv").string();
+    d.calibration = (scratch_dir() / "export_cal.json").string();
+    const CliResult s = run_cli("simulate --program classic18 --noise 1e-4 --log " + d.log +
+                                " --still 3 --dwell 3 --rate 50 --size 0.01 --magnitude 9.80665 --seed 4");
+    EXPECT_EQ(s.status, 0) << s.err;
+    const CliResult c = run_cli("calibrate --measurements " + d.log + " --magnitude 9.80665 --out " + d.calibration +
+                                " --suggest 0 --json");
+    EXPECT_EQ(c.status, 0) << c.err;
+    const CliResult k = run_cli("correct --calibration " + d.calibration + " --measurements " + d.log);
+    EXPECT_EQ(k.status, 0) << k.err;
+    for (const auto& r : csv_numbers(slurp(d.log))) d.raw.push_back(V3(r[1], r[2], r[3]));
+    for (const auto& r : csv_numbers(k.out)) d.corrected.push_back(V3(r[1], r[2], r[3]));
+    const Json cal = Json::parse(slurp(d.calibration));
+    for (int i = 0; i < 3; ++i) {
+      d.o(i) = cal["offset"][i];
+      for (int j = 0; j < 3; ++j) d.C(i, j) = cal["matrix"][i][j];
+    }
+    return d;
+  }();
+  return d;
+}
+
+std::string exported(const std::string& args, const std::string& calibration = "") {
+  const CliResult r = run_cli("export " + (calibration.empty() ? data().calibration : calibration) + " " + args);
+  EXPECT_EQ(r.status, 0) << args << ": " << r.err;
+  return r.out;
+}
+
+// Every number in the text after `key` up to the end of its statement, in order.
+std::vector<double> numbers_after(const std::string& text, const std::string& key, int count) {
+  const std::regex number(R"([-+]?[0-9]*\.?[0-9]+(?:[eE][-+]?[0-9]+)?)");
+  std::vector<double> out;
+  std::string rest = text.substr(text.find(key) + key.size());
+  for (std::sregex_iterator it(rest.begin(), rest.end(), number); it != std::sregex_iterator() && static_cast<int>(out.size()) < count; ++it)
+    out.push_back(std::stod(it->str()));
+  return out;
+}
+
+// NAME VALUE parameters: QGroundControl's tab-separated rows or ArduPilot's NAME,VALUE.
+std::map<std::string, double> parameters(const std::string& text) {
+  std::map<std::string, double> p;
+  std::istringstream in(text);
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    std::vector<std::string> f;
+    std::string field;
+    std::istringstream fields(line);
+    const char sep = line.find('\t') != std::string::npos ? '\t' : ',';
+    while (std::getline(fields, field, sep)) f.push_back(field);
+    if (sep == '\t') p[f[2]] = std::stod(f[3]);
+    else p[f[0]] = std::stod(f[1]);
+  }
+  return p;
+}
+
+template <class Apply>
+void expect_vectors(Apply apply, double tolerance, const std::string& what) {
+  const Data& d = data();
+  ASSERT_EQ(d.raw.size(), d.corrected.size());
+  ASSERT_GT(d.raw.size(), 100u);
+  for (std::size_t i = 0; i < d.raw.size(); ++i) {
+    const V3 ours = apply(d.raw[i]);
+    ASSERT_LT((ours - d.corrected[i]).norm(), tolerance * d.corrected[i].norm()) << what << " row " << i;
+  }
+}
+
+TEST(ExportCli, ExactFormsGiveCorrectsVectors) {
+  const Json j = Json::parse(exported("--format json"));
+  M3 C;
+  V3 o;
+  for (int i = 0; i < 3; ++i) {
+    o(i) = j["offset"][i];
+    for (int k = 0; k < 3; ++k) C(i, k) = j["matrix"][i][k];
+  }
+  EXPECT_EQ(j["format_version"], 1);
+  expect_vectors([&](const V3& r) { V3 v = C * (r - o); return v; }, 1e-12, "json");
+  // magcal: rows, corrected = (d - b) A.
+  const std::string m = exported("--format magcal");
+  const auto a = numbers_after(m, "A = [", 9), b = numbers_after(m, "b = [", 3);
+  Eigen::Matrix<double, 3, 3, Eigen::RowMajor> A(a.data());
+  const Eigen::RowVector3d brow(b[0], b[1], b[2]);
+  expect_vectors([&](const V3& r) { V3 v = ((r.transpose() - brow) * A).transpose(); return v; }, 1e-12, "magcal");
+  // imu_tk: T (9, row-major), K (9), B (3); X' = T K (X - B).
+  std::istringstream t(exported("--format imu_tk"));
+  double n[21];
+  for (double& x : n) t >> x;
+  ASSERT_TRUE(t) << "imu_tk: 21 numbers";
+  const Eigen::Matrix<double, 3, 3, Eigen::RowMajor> T(n), K(n + 9);
+  const V3 B(n[18], n[19], n[20]);
+  EXPECT_EQ(T(0, 0), 1);
+  expect_vectors([&](const V3& r) { V3 v = T * K * (r - B); return v; }, 1e-12, "imu_tk");
+}
+
+TEST(ExportCli, KalibrIsCorrectTurnedByItsRotation) {
+  const std::string k = exported("--format kalibr");
+  const auto mv = numbers_after(k, "M:", 9), bv = numbers_after(k, "b:", 3), rv = numbers_after(k, "R:", 9);
+  const Eigen::Matrix<double, 3, 3, Eigen::RowMajor> M(mv.data()), R(rv.data());
+  EXPECT_EQ(M(0, 1), 0);
+  EXPECT_EQ(M(0, 2), 0);
+  EXPECT_EQ(M(1, 2), 0);  // lower triangular
+  EXPECT_LT((R * R.transpose() - M3::Identity()).norm(), 1e-12);
+  EXPECT_NEAR(R.determinant(), 1, 1e-12);
+  const V3 b(bv[0], bv[1], bv[2]);
+  // raw = M a + b, so a = M^-1 (raw - b); it must be R times correct's vector.
+  const Data& d = data();
+  for (std::size_t i = 0; i < d.raw.size(); ++i) {
+    const V3 a = M.triangularView<Eigen::Lower>().solve(d.raw[i] - b);
+    ASSERT_LT((a - R * d.corrected[i]).norm(), 1e-12 * a.norm()) << i;
+  }
+}
+
+TEST(ExportCli, AccelerometerParametersDropOnlyTheOffDiagonalTerms) {
+  const Data& d = data();
+  M3 off = d.C;
+  off.diagonal().setZero();
+  const auto px4 = parameters(exported("--format px4"));
+  const V3 off_px4(px4.at("CAL_ACC0_XOFF"), px4.at("CAL_ACC0_YOFF"), px4.at("CAL_ACC0_ZOFF"));
+  const V3 scale_px4(px4.at("CAL_ACC0_XSCALE"), px4.at("CAL_ACC0_YSCALE"), px4.at("CAL_ACC0_ZSCALE"));
+  const auto ap = parameters(exported("--format ardupilot --instance 1"));
+  const V3 off_ap(ap.at("INS_ACC2OFFS_X"), ap.at("INS_ACC2OFFS_Y"), ap.at("INS_ACC2OFFS_Z"));
+  const V3 scale_ap(ap.at("INS_ACC2SCAL_X"), ap.at("INS_ACC2SCAL_Y"), ap.at("INS_ACC2SCAL_Z"));
+  for (std::size_t i = 0; i < d.raw.size(); ++i) {
+    const V3 without = d.corrected[i] - off * (d.raw[i] - d.o);  // correct's vector less the dropped terms
+    ASSERT_LT(((d.raw[i] - off_px4).cwiseProduct(scale_px4) - without).norm(), 1e-7 * without.norm()) << i;
+    ASSERT_LT(((d.raw[i] - off_ap).cwiseProduct(scale_ap) - without).norm(), 1e-7 * without.norm()) << i;
+  }
+  // The dropped share is reported and warned about.
+  const CliResult w = run_cli("export " + d.calibration + " --format px4 --json");
+  EXPECT_GT(Json::parse(w.out)["dropped_relative"].get<double>(), 1e-4);
+  EXPECT_NE(w.err.find("no non-orthogonality terms"), std::string::npos) << w.err;
+  // With a diagonal matrix nothing is dropped: the parameters give correct's vectors themselves.
+  const std::string diagonal = write_file("diagonal_cal.json", R"({"converged": true, "offset": [0.01, -0.02, 0.03],
+      "matrix": [[1.001, 0, 0], [0, 0.998, 0], [0, 0, 1.0004]]})");
+  const CliResult k = run_cli("correct --calibration " + diagonal + " --measurements " + d.log);
+  const auto rows = csv_numbers(k.out);
+  const auto p = parameters(exported("--format px4", diagonal));
+  for (std::size_t i = 0; i < d.raw.size(); ++i) {
+    const V3 want(rows[i][1], rows[i][2], rows[i][3]);
+    const V3 got = (d.raw[i] - V3(p.at("CAL_ACC0_XOFF"), p.at("CAL_ACC0_YOFF"), p.at("CAL_ACC0_ZOFF")))
+                       .cwiseProduct(V3(p.at("CAL_ACC0_XSCALE"), p.at("CAL_ACC0_YSCALE"), p.at("CAL_ACC0_ZSCALE")));
+    ASSERT_LT((got - want).norm(), 1e-7 * want.norm()) << i;
+  }
+}
+
+TEST(ExportCli, MagnetometerParametersKeepTheModuliAndTurnByTheReportedRotation) {
+  const Data& d = data();
+  const auto px4 = parameters(exported("--format px4 --instrument mag --instance 2"));
+  M3 S;
+  S << px4.at("CAL_MAG2_XSCALE"), px4.at("CAL_MAG2_XODIAG"), px4.at("CAL_MAG2_YODIAG"), px4.at("CAL_MAG2_XODIAG"),
+      px4.at("CAL_MAG2_YSCALE"), px4.at("CAL_MAG2_ZODIAG"), px4.at("CAL_MAG2_YODIAG"), px4.at("CAL_MAG2_ZODIAG"),
+      px4.at("CAL_MAG2_ZSCALE");
+  const V3 off(px4.at("CAL_MAG2_XOFF"), px4.at("CAL_MAG2_YOFF"), px4.at("CAL_MAG2_ZOFF"));
+  const auto ap = parameters(exported("--format ardupilot --instrument mag"));
+  M3 A;
+  A << ap.at("COMPASS_DIA_X"), ap.at("COMPASS_ODI_X"), ap.at("COMPASS_ODI_Y"), ap.at("COMPASS_ODI_X"), ap.at("COMPASS_DIA_Y"),
+      ap.at("COMPASS_ODI_Z"), ap.at("COMPASS_ODI_Y"), ap.at("COMPASS_ODI_Z"), ap.at("COMPASS_DIA_Z");
+  const V3 ofs(ap.at("COMPASS_OFS_X"), ap.at("COMPASS_OFS_Y"), ap.at("COMPASS_OFS_Z"));
+  const double turn = Json::parse(run_cli("export " + d.calibration + " --format px4 --instrument mag --json").out)["rotation_rad"];
+  EXPECT_GT(turn, 0);
+  EXPECT_LT(turn, 1e-3);  // of order gamma^2
+  for (std::size_t i = 0; i < d.raw.size(); ++i) {
+    const V3& ours = d.corrected[i];
+    for (const V3& theirs : {V3(S * (d.raw[i] - off)), V3(A * (d.raw[i] + ofs))}) {
+      ASSERT_NEAR(theirs.norm(), ours.norm(), 1e-7 * ours.norm()) << i;
+      ASSERT_LT(std::atan2(theirs.cross(ours).norm(), theirs.dot(ours)), turn + 1e-7) << i;
+    }
+  }
+}
+
+TEST(ExportCli, TheCalibrationFileSaysWhatItIs) {
+  const Json cal = Json::parse(slurp(data().calibration));
+  EXPECT_EQ(cal["format_version"], 1);
+  EXPECT_TRUE(std::regex_match(cal["created"].get<std::string>(), std::regex(R"(\d{4}-\d\d-\d\dT\d\d:\d\d:\d\dZ)")));
+  EXPECT_EQ(cal["tool"]["name"], "scalcal");
+  for (const char* key : {"sensor", "units", "magnitude", "model", "region", "converged", "offset", "matrix"})
+    EXPECT_TRUE(cal.contains(key)) << key;
+  const CliResult bad = run_cli("export " + data().calibration + " --format imu_tk --instrument mag");
+  EXPECT_EQ(bad.status, 2);
+}
+
+}  // namespace
+}  // namespace scalcal::testing
