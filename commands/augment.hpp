@@ -10,7 +10,7 @@
 #include "commands/progress.hpp"
 #include "commands/values.hpp"
 #include "commands/warning.hpp"
-#include "numeric/io/program_csv.hpp"
+#include "numeric/program/program_csv.hpp"
 #include "numeric/region/augment.hpp"
 
 namespace scalcal::commands {

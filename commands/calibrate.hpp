@@ -17,7 +17,7 @@
 #include "numeric/calibration/static_intervals.hpp"
 #include "numeric/criteria/model_evaluation.hpp"
 #include "numeric/criteria/registry.hpp"
-#include "numeric/io/raw_log.hpp"
+#include "numeric/calibration/raw_log.hpp"
 #include "numeric/model/registry.hpp"
 
 namespace scalcal::commands {

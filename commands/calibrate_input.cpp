@@ -7,7 +7,7 @@
 #include "commands/calibrate.hpp"
 #include "commands/usage_error.hpp"
 #include "numeric/io/input_error.hpp"
-#include "numeric/io/measurements_csv.hpp"
+#include "numeric/calibration/measurements_csv.hpp"
 
 namespace scalcal::commands {
 namespace {

@@ -11,7 +11,7 @@
 #include "commands/common_options.hpp"
 #include "numeric/io/csv_table.hpp"
 #include "numeric/io/input_error.hpp"
-#include "numeric/io/raw_log.hpp"
+#include "numeric/calibration/raw_log.hpp"
 
 namespace scalcal::commands {
 namespace {
@@ -51,7 +51,7 @@ FullCorrection read_calibration(const std::string& file, bool force, Warnings& w
   nlohmann::json j;
   try {
     j = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::parse_error& e) {
+  } catch (const nlohmann::json::exception& e) {  // a syntax error, or a number such as 1e400 out of range
     throw InputError(file, 0, std::string("not a JSON object written by `calibrate --out`: ") + e.what());
   }
   return calibration_of(Json(j), file, force, warnings);
@@ -164,7 +164,7 @@ CorrectResult correct(const CorrectRequest& q) {
     if (cp >= 0) r.position = v[static_cast<std::size_t>(cp)];
     r.corrected = out.correction.apply(
         Vec3(v[static_cast<std::size_t>(ix)], v[static_cast<std::size_t>(iy)], v[static_cast<std::size_t>(iz)]));
-    r.modulus = r.corrected.norm();
+    r.modulus = r.corrected.stableNorm();  // finite for outputs near 1e300
     out.rows.push_back(r);
   }
   return out;

@@ -12,7 +12,7 @@
 #include "commands/progress.hpp"
 #include "commands/warning.hpp"
 #include "numeric/criteria/model_evaluation.hpp"
-#include "numeric/io/program_csv.hpp"
+#include "numeric/program/program_csv.hpp"
 #include "numeric/region/region.hpp"
 
 namespace scalcal::commands {

@@ -5,6 +5,8 @@
 
 #include "commands/region_request.hpp"
 #include "commands/usage_error.hpp"
+#include "numeric/criteria/identifiability.hpp"
+#include "numeric/criteria/model_evaluation.hpp"
 #include "numeric/io/input_error.hpp"
 #include "numeric/program/catalogue.hpp"
 #include "numeric/region/region_limit.hpp"
@@ -39,6 +41,11 @@ void start_from(const OptimizeRequest& q, SynthesisOptions& o) {
                      " positions; optimize takes " + std::to_string(kOptimizePositions.lo) + ".." +
                      std::to_string(kOptimizePositions.hi));
   if (!q.regions.empty()) throw UsageError("--from starts the search on the sphere; it does not take --region");
+  // A start that cannot identify every parameter has no gradient: the search would stay there and
+  // report an infinite value as its optimum.
+  const ModelEvaluation ev = evaluate(o.model, start);
+  if (!ev.full_rank())
+    throw InputError(display_name(q.from), 0, rank_deficiency(ev) + "; --from needs a start of full rank (or give --positions N alone)");
   o.positions = start.size();
   o.first_start = std::move(start);
 }

@@ -9,7 +9,7 @@
 #include "commands/json.hpp"
 #include "commands/progress.hpp"
 #include "commands/warning.hpp"
-#include "numeric/io/program_csv.hpp"
+#include "numeric/program/program_csv.hpp"
 #include "numeric/polish/polish.hpp"
 #include "numeric/region/region.hpp"
 #include "numeric/synthesis/multistart.hpp"

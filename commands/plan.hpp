@@ -14,7 +14,7 @@
 #include "commands/warning.hpp"
 #include "numeric/bench/run_order.hpp"
 #include "numeric/criteria/model_evaluation.hpp"
-#include "numeric/io/program_csv.hpp"
+#include "numeric/program/program_csv.hpp"
 #include "numeric/region/region.hpp"
 
 namespace scalcal::commands {

@@ -8,7 +8,7 @@
 #include "commands/plot.hpp"
 #include "numeric/io/csv_table.hpp"
 #include "numeric/io/input_error.hpp"
-#include "numeric/io/raw_log.hpp"
+#include "numeric/calibration/raw_log.hpp"
 
 namespace scalcal::commands {
 namespace {

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "commands/warning.hpp"
-#include "numeric/io/program_csv.hpp"
+#include "numeric/program/program_csv.hpp"
 #include "numeric/region/region.hpp"
 
 namespace scalcal::commands {

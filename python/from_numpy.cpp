@@ -5,7 +5,7 @@
 #include <sstream>
 
 #include "numeric/io/input_error.hpp"
-#include "numeric/io/program_csv.hpp"
+#include "numeric/program/program_csv.hpp"
 #include "numeric/program/catalogue.hpp"
 
 namespace py = pybind11;

@@ -14,7 +14,7 @@
 
 #include "commands/usage_error.hpp"
 #include "numeric/io/input_error.hpp"
-#include "numeric/io/measurements_csv.hpp"
+#include "numeric/calibration/measurements_csv.hpp"
 #include "numeric/program/catalogue.hpp"
 #include "python/arguments.hpp"
 #include "python/bindings.hpp"

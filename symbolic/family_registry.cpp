@@ -1,12 +1,13 @@
 // The registry of families: the files of symbolic/families/ (listed by the build into
 // family_files.inc, one X(FILE) each) and those registered at run time, and their program names
 // in numeric's registry.
+#include <algorithm>
 #include <mutex>
 #include <regex>
 #include <stdexcept>
 
 #include "numeric/io/input_error.hpp"
-#include "numeric/io/program_csv.hpp"
+#include "numeric/program/program_csv.hpp"
 #include "numeric/program/program_names.hpp"
 #include "symbolic/exact.hpp"
 #include "symbolic/family.hpp"
@@ -101,16 +102,24 @@ std::function<std::optional<Program>(const std::string&)> name_resolver(const Fa
     const std::string base = name.substr(0, at);
     std::smatch m;
     if (!std::regex_match(base, m, re)) return std::nullopt;
-    std::vector<std::string> settings;
-    for (std::size_t k = 0; k < keys.size(); ++k) settings.push_back(keys[k] + "=" + m[k + 1].str());
+    // @key=value overrides the pattern's value of key (testcubo-1@copies=3); the same @key twice is refused
+    // by parse_params, as a repeated --param is.
+    std::vector<std::string> overrides;
     if (at != std::string::npos)
       for (const auto& s : split(name.substr(at + 1), '@')) {
         // A name is a number's text, not a computation: GiNaC evaluates powers and factorials of
         // numbers eagerly, and 9^9^9 would take the machine's memory.
         if (s.find_first_of("^!") != std::string::npos)
           throw InputError(name, 0, "'" + display_name(s) + "': powers (^) and factorials (!) are not taken in a program name");
-        settings.push_back(s);
+        overrides.push_back(s);
       }
+    std::vector<std::string> settings;
+    for (std::size_t k = 0; k < keys.size(); ++k) {
+      const bool overridden = std::any_of(overrides.begin(), overrides.end(),
+                                          [&](const std::string& o) { return o.rfind(keys[k] + "=", 0) == 0; });
+      if (!overridden) settings.push_back(keys[k] + "=" + m[k + 1].str());
+    }
+    settings.insert(settings.end(), overrides.begin(), overrides.end());
     const Family& f = find_family(family_name);
     std::optional<Program> p;
     try {
@@ -204,14 +213,23 @@ ParamMap parse_params(const Family& family, const std::vector<std::string>& sett
   ParamMap out;
   auto read = [&](const FamilyParam& p, const std::string& text) {
     try {
-      out[p.key] = p.read ? p.read(text, reader) : reader(text);
+      const GiNaC::ex value = p.read ? p.read(text, reader) : reader(text);
+      // Every family is a set of real directions: an imaginary parameter would give complex positions.
+      const bool imaginary = GiNaC::is_a<GiNaC::numeric>(value) ? !GiNaC::ex_to<GiNaC::numeric>(value).is_real()
+                                                                 : value.has(GiNaC::I);
+      if (imaginary) throw InputError("--param", 0, p.key + "=" + display_name(text) + ": not a real number");
+      out[p.key] = value;
     } catch (const InputError&) {
       throw;
     } catch (const std::exception& e) {
-      throw InputError("--param", 0, p.key + "=" + display_name(text) + ": not an expression (" + e.what() + ")");
+      // GiNaC's parser appends its own source location on a second line: one line, without it.
+      const std::string what = e.what();
+      throw InputError("--param", 0, p.key + "=" + display_name(text) + ": not an expression (" +
+                                         what.substr(0, what.find('\n')) + ")");
     }
   };
   for (const auto& p : family.params) read(p, p.fallback);
+  std::vector<std::string> given;
   for (const auto& s : settings) {
     const auto eq = s.find('=');
     if (eq == std::string::npos || eq == 0)
@@ -221,6 +239,9 @@ ParamMap parse_params(const Family& family, const std::vector<std::string>& sett
     for (const auto& p : family.params)
       if (p.key == key) param = &p;
     if (!param) throw InputError("--param", 0, "family " + family.name + " has no parameter '" + display_name(key) + "'");
+    if (std::find(given.begin(), given.end(), key) != given.end())
+      throw InputError("--param", 0, key + " is given twice");  // as a repeated option is refused
+    given.push_back(key);
     read(*param, s.substr(eq + 1));
   }
   return out;

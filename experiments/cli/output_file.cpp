@@ -7,7 +7,7 @@
 #include <iostream>
 #include <sstream>
 
-#include "numeric/io/program_csv.hpp"
+#include "numeric/program/program_csv.hpp"
 
 namespace scalcal::cli {
 

@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "numeric/io/program_csv.hpp"
+#include "numeric/program/program_csv.hpp"
 #include "numeric/program/program.hpp"
 
 namespace scalcal::cli {

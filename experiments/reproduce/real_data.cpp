@@ -10,7 +10,7 @@
 #include "experiments/reproduce/format.hpp"
 #include "numeric/calibration/any_units.hpp"
 #include "numeric/calibration/static_intervals.hpp"
-#include "numeric/io/raw_log.hpp"
+#include "numeric/calibration/raw_log.hpp"
 #include "numeric/program/catalogue.hpp"
 #include "numeric/region/program_advice.hpp"
 #include "plots/csv_writer.hpp"

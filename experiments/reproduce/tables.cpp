@@ -7,7 +7,7 @@
 #include "experiments/reproduce/figures.hpp"
 #include "experiments/reproduce/format.hpp"
 #include "numeric/criteria/registry.hpp"
-#include "numeric/io/program_csv.hpp"
+#include "numeric/program/program_csv.hpp"
 #include "plots/csv_writer.hpp"
 
 namespace scalcal::reproduce {

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "numeric/io/raw_log.hpp"
+#include "numeric/calibration/raw_log.hpp"
 
 namespace scalcal {
 

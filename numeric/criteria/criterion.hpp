@@ -11,13 +11,9 @@
 
 #include "numeric/criteria/inverse_information.hpp"
 #include "numeric/model/paper9.hpp"
+#include "numeric/program/program_symmetry.hpp"
 
 namespace scalcal {
-
-// The group under which a criterion is invariant, which decides when two optimal programs are the
-// same program: O(3) for D (det K moves by det(g)^2 = 1), the 48 signed permutations of the axes for
-// criteria of single entries or of the spectrum of K in the paper's basis.
-enum class ProgramSymmetry { SignedPermutations, Orthogonal };
 
 // The forms the solvers know:
 //  SmoothForm:        phi(M) is smooth; the criterion gives objective() and derivatives()

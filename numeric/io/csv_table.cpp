@@ -45,7 +45,10 @@ bool parse_number(const std::string& s, double& out) {
   errno = 0;
   char* end = nullptr;
   out = std::strtod(s.c_str(), &end);
-  return end == s.c_str() + s.size() && errno != ERANGE;
+  // ERANGE is both overflow (refused: 1e400 is not a double) and underflow, whose result is the
+  // correctly rounded subnormal or zero (kept: a program scaled by 2^-1060 is still a program).
+  const bool overflow = errno == ERANGE && std::abs(out) > 1.0;
+  return end == s.c_str() + s.size() && !overflow;
 }
 
 bool looks_binary(std::string_view text) {

@@ -8,7 +8,7 @@
 #include <regex>
 
 #include "numeric/io/input_error.hpp"
-#include "numeric/io/program_csv.hpp"
+#include "numeric/program/program_csv.hpp"
 #include "numeric/program/program_names.hpp"
 
 namespace scalcal {

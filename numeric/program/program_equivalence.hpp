@@ -5,9 +5,9 @@
 #include <optional>
 #include <vector>
 
-#include "numeric/criteria/criterion.hpp"
-#include "numeric/program/program.hpp"
 #include "numeric/model/paper9.hpp"
+#include "numeric/program/program.hpp"
+#include "numeric/program/program_symmetry.hpp"
 
 namespace scalcal {
 

@@ -306,7 +306,8 @@ std::optional<ExactWeights> exact_weights(WeightForm form, const std::vector<Vec
   });
   if (packed[0] != 1.0) return std::nullopt;
   ExactWeights w;
-  w.converged = true;
+  w.summary.termination = Termination::converged;
+  w.summary.message = "Ipopt solved the weights problem";
   w.weights.assign(packed.begin() + 1, packed.begin() + 1 + n);
   double total = 0;
   for (double v : w.weights) total += v;

@@ -11,7 +11,8 @@
 #include <Eigen/Eigenvalues>
 
 #include "numeric/io/input_error.hpp"
-#include "numeric/io/program_csv.hpp"
+#include "numeric/model/direction.hpp"
+#include "numeric/program/program_csv.hpp"
 
 namespace scalcal {
 namespace {
@@ -52,9 +53,9 @@ Vec3 axis(const std::string& spec, const std::string& text) {
   const auto parts = split(text, ',');
   if (parts.size() != 3) bad_spec(spec, "the axis must be X,Y,Z (three numbers), not '" + display_name(text) + "'");
   const Vec3 a(number(spec, parts[0], "axis x"), number(spec, parts[1], "axis y"), number(spec, parts[2], "axis z"));
-  const double n = a.stableNorm();
-  if (!(n > 0) || !std::isfinite(n)) bad_spec(spec, "the axis is the zero vector");
-  return a / n;
+  const std::optional<Vec3> u = unit_direction(a);
+  if (!u) bad_spec(spec, "the axis is the zero vector");
+  return *u;
 }
 
 void add_zone_rings(const Zone& z, double step_deg, std::vector<Vec3>& out) {

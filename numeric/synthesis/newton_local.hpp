@@ -37,20 +37,21 @@ LocalResult sphere_local(const CriterionOps<Model>& criterion, const Program& st
   }
   Program moved = start;
   const bool lbfgs = solver == LocalSolver::Lbfgs;
-  bool converged = false;
+  Summary summary;
+  int iterations = 0;
   if (lbfgs) {
     const auto r = SphereLbfgsSolver<Model>(criterion.smooth).run(moved.positions);
-    out.summary.iterations = r.iterations;
-    converged = r.converged;
+    summary = r.summary;
+    iterations = r.iterations;
   } else {
     const auto r = SphereNewtonSolver<Model>(criterion.smooth).run(moved.positions);
-    out.summary.iterations = r.iterations;
-    converged = r.converged;
+    summary = r.summary;
+    iterations = r.iterations;
   }
-  out.summary.termination = converged ? Termination::converged : Termination::not_converged;
-  out.summary.message = !converged ? "stopped before its gradient tolerance"
-                        : lbfgs    ? "Riemannian gradient below tolerance (L-BFGS)"
-                                   : "Riemannian gradient below tolerance (Newton)";
+  // A failed start (rank-deficient) stays a start that did not converge: its value decides below.
+  out.summary.termination = summary.converged() ? Termination::converged : Termination::not_converged;
+  out.summary.message = summary.message.empty() ? "stopped before its gradient tolerance" : summary.message;
+  out.summary.iterations = iterations;
   const double value = criterion_value(criterion, moved);
   if (std::isfinite(value) && value <= out.value) {
     out.program = std::move(moved);

@@ -11,6 +11,7 @@
 #include <limits>
 #include <vector>
 
+#include "numeric/program/summary.hpp"
 #include "numeric/criteria/derivatives.hpp"
 #include "numeric/model/design.hpp"
 #include "numeric/synthesis/criterion_ops.hpp"
@@ -27,7 +28,8 @@ struct SphereLbfgsOptions {
 };
 
 struct SphereLbfgsResult {
-  bool converged = false;
+  Summary summary;  // converged: the Riemannian gradient fell below its tolerance; failed: rank < P at the start
+  bool converged() const { return summary.converged(); }
   int iterations = 0;
   int evaluations = 0;
   double value = 0;  // the criterion's own objective (log D for D), not normalised
@@ -87,6 +89,8 @@ SphereLbfgsResult SphereLbfgsSolver<Model>::run(std::vector<Vec3>& eta) {
   double f = 0;
   VecX g(3 * n);
   if (!evaluate(eta, f, g)) return out;
+  out.summary.termination = Termination::not_converged;
+  out.summary.message = "stopped before its gradient tolerance";
   ++out.evaluations;
   std::deque<Pair> pairs;
   std::vector<Vec3> trial(eta.size());
@@ -98,7 +102,8 @@ SphereLbfgsResult SphereLbfgsSolver<Model>::run(std::vector<Vec3>& eta) {
     out.gradient_norm = gnorm;
     const double tolerance = options_.gradient_tolerance * std::max(1.0, std::abs(f));
     if (gnorm <= tolerance || (stalled >= 3 && gnorm <= 100 * tolerance)) {
-      out.converged = true;
+      out.summary.termination = Termination::converged;
+      out.summary.message = "Riemannian gradient below tolerance (L-BFGS)";
       return out;
     }
     if (out.iterations >= options_.max_iterations || stalled >= 3) return out;

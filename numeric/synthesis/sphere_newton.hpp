@@ -14,6 +14,7 @@
 #include <Eigen/Cholesky>
 #include <Eigen/Geometry>
 
+#include "numeric/program/summary.hpp"
 #include "numeric/criteria/derivatives.hpp"
 #include "numeric/model/design.hpp"
 #include "numeric/synthesis/criterion_ops.hpp"
@@ -32,7 +33,8 @@ struct SphereNewtonOptions {
 };
 
 struct SphereNewtonResult {
-  bool converged = false;
+  Summary summary;  // converged: the Riemannian gradient fell below its tolerance; failed: rank < P at the start
+  bool converged() const { return summary.converged(); }
   int iterations = 0;       // accepted Newton steps
   int evaluations = 0;      // criterion values at trial programs (rejected steps included)
   double value = 0;         // the criterion's own objective (log D for D), not normalised
@@ -127,7 +129,13 @@ SphereNewtonResult SphereNewtonSolver<Model, Scalar>::run(std::vector<Vec3T<Scal
   MatP M = information_matrix<Model>(eta), M_trial;  // M of an accepted trial is kept, not rebuilt
   while (true) {
     MatrixDerivatives<Scalar, P> d;
-    if (!criterion_.derivatives(M, n, d)) return out;  // rank < P: no Newton model
+    if (!criterion_.derivatives(M, n, d)) {  // rank < P: no Newton model
+      out.summary.termination = Termination::failed;
+      out.summary.message = "rank-deficient program: no Newton model";
+      return out;
+    }
+    out.summary.termination = Termination::not_converged;
+    out.summary.message = "stopped before its gradient tolerance";
     assemble(eta, d);
     const Scalar gnorm = g_.norm();
     out.value = static_cast<double>(d.value);
@@ -137,7 +145,8 @@ SphereNewtonResult SphereNewtonSolver<Model, Scalar>::run(std::vector<Vec3T<Scal
     // A stall (the value no longer moves at double precision) counts as converged when the
     // gradient is within rounding of the tolerance.
     if (gnorm <= tolerance || (stalled >= 3 && gnorm <= Scalar(100) * tolerance)) {
-      out.converged = true;
+      out.summary.termination = Termination::converged;
+      out.summary.message = "Riemannian gradient below tolerance (Newton)";
       return out;
     }
     if (out.iterations >= options_.max_iterations || stalled >= 3) return out;

@@ -144,7 +144,13 @@ GiNaC::matrix orientation_matrix(const std::string& text, GiNaC::parser& reader)
     const auto c = components(3, 4);
     const ex n2 = c[0] * c[0] + c[1] * c[1] + c[2] * c[2];
     if (auto n = numeric_value(n2); n && *n == 0) throw fail("the axis is zero");
-    const ex theta = c[3] * GiNaC::Pi / 180, cs = GiNaC::cos(theta), sn = GiNaC::sin(theta), n = GiNaC::sqrt(n2);
+    ex degrees = c[3];
+    // A decimal angle is a float to GiNaC, which would reduce 1e20 degrees with 17 digits: reduce it
+    // modulo 360 in double first (fmod is exact), as an exact angle is reduced exactly by cos and sin.
+    if (GiNaC::is_a<GiNaC::numeric>(degrees) && GiNaC::ex_to<GiNaC::numeric>(degrees).is_real() &&
+        !GiNaC::ex_to<GiNaC::numeric>(degrees).is_rational())
+      degrees = GiNaC::numeric(std::fmod(GiNaC::ex_to<GiNaC::numeric>(degrees).to_double(), 360.0));
+    const ex theta = degrees * GiNaC::Pi / 180, cs = GiNaC::cos(theta), sn = GiNaC::sin(theta), n = GiNaC::sqrt(n2);
     // Rodrigues: R = cos I + sin [a]x + (1 - cos) a a^T; the rows of O = R^T are R's columns.
     const ex a[3] = {c[0] / n, c[1] / n, c[2] / n};
     const ex cross[3][3] = {{0, -a[2], a[1]}, {a[2], 0, -a[0]}, {-a[1], a[0], 0}};

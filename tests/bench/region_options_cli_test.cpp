@@ -10,7 +10,7 @@
 
 #include "commands/region_request.hpp"
 #include "numeric/io/input_error.hpp"
-#include "numeric/io/program_csv.hpp"
+#include "numeric/program/program_csv.hpp"
 #include "tests/common/run_cli.hpp"
 
 namespace scalcal::testing {

@@ -10,7 +10,7 @@
 #include "numeric/calibration/any_units.hpp"
 #include "numeric/calibration/static_intervals.hpp"
 #include "numeric/io/input_error.hpp"
-#include "numeric/io/raw_log.hpp"
+#include "numeric/calibration/raw_log.hpp"
 #include "tests/calibration/raw_log_simulator.hpp"
 
 namespace scalcal {

@@ -8,7 +8,7 @@
 
 #include "numeric/certify/certify.hpp"
 #include "numeric/criteria/evaluation.hpp"
-#include "numeric/io/program_csv.hpp"
+#include "numeric/program/program_csv.hpp"
 #include "numeric/certify/eigenvalue_kkt.hpp"
 #include "numeric/certify/interval.hpp"
 #include "numeric/polish/polish.hpp"

@@ -6,7 +6,7 @@
 #include <Eigen/Geometry>
 
 #include "numeric/certify/certify.hpp"
-#include "numeric/io/program_csv.hpp"
+#include "numeric/program/program_csv.hpp"
 #include "numeric/synthesis/synthesize.hpp"
 
 namespace scalcal {

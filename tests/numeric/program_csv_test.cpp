@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "numeric/io/input_error.hpp"
-#include "numeric/io/program_csv.hpp"
+#include "numeric/program/program_csv.hpp"
 
 namespace scalcal {
 namespace {

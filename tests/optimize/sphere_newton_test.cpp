@@ -79,7 +79,7 @@ TEST(SphereNewton, ReachesTheDLimitFromRandomStarts) {
     for (std::uint64_t seed = 1; seed <= 3; ++seed) {
       Program p = Program::random(n, seed);
       const SphereNewtonResult r = SphereNewton<DCriterion>().run(p.positions);
-      EXPECT_TRUE(r.converged) << n << " " << seed;
+      EXPECT_TRUE(r.converged()) << n << " " << seed;
       for (const auto& e : p.positions) EXPECT_NEAR(e.norm(), 1.0, 1e-14);
       EXPECT_NEAR(std::exp(r.value), kLimitD, 1e-9 * kLimitD) << n << " " << seed;
       EXPECT_NEAR(criterion_value(p, CriterionKind::D), kLimitD, 1e-9 * kLimitD);
@@ -89,7 +89,7 @@ TEST(SphereNewton, ReachesTheDLimitFromRandomStarts) {
 TEST(SphereNewton, ReachesTheALimit) {
   Program p = Program::random(18, 9);
   const SphereNewtonResult r = SphereNewton<ACriterion>().run(p.positions);
-  EXPECT_TRUE(r.converged);
+  EXPECT_TRUE(r.converged());
   EXPECT_NEAR(r.value, kLimitA, 1e-10 * kLimitA);
 }
 
@@ -98,7 +98,7 @@ TEST(SphereNewton, ReachesTheALimit) {
 TEST(SphereNewton, DHessianIsSingularAlongRotationsAtTheOptimum) {
   Program p = Program::random(13, 2);
   SphereNewton<DCriterion> solver;
-  ASSERT_TRUE(solver.run(p.positions).converged);
+  ASSERT_TRUE(solver.run(p.positions).converged());
   double f = 0;
   VecX g;
   MatX H;
@@ -119,14 +119,14 @@ TEST(SphereNewton, DHessianIsSingularAlongRotationsAtTheOptimum) {
 // The same template at 50 digits: the D limit to 40 places (the double run gives the start).
 TEST(SphereNewton, ReachesTheDLimitAt50Digits) {
   Program start = Program::random(12, 5);
-  ASSERT_TRUE(SphereNewton<DCriterion>().run(start.positions).converged);
+  ASSERT_TRUE(SphereNewton<DCriterion>().run(start.positions).converged());
   std::vector<Vec3T<Real>> eta;
   for (const auto& e : start.positions) eta.push_back(e.cast<Real>());
   SphereNewtonOptions options;
   options.gradient_tolerance = 1e-45;
   options.max_iterations = 20;
   const SphereNewtonResult r = SphereNewton<DCriterion, Paper9Model, Real>(options).run(eta);
-  EXPECT_TRUE(r.converged) << r.gradient_norm << " after " << r.iterations << " steps";
+  EXPECT_TRUE(r.converged()) << r.gradient_norm << " after " << r.iterations << " steps";
   Real value;
   ASSERT_TRUE(DCriterion::objective(information_matrix(eta), 12, value));
   const Real limit = Real(61509375) / 4;
@@ -138,7 +138,7 @@ TEST(SphereNewton, RankDeficientStartIsLeftAlone) {
   for (int i = 0; i < 12; ++i) planar.positions.emplace_back(std::cos(0.5 * i), std::sin(0.5 * i), 0.0);
   const Program before = planar;
   const SphereNewtonResult r = SphereNewton<DCriterion>().run(planar.positions);
-  EXPECT_FALSE(r.converged);
+  EXPECT_FALSE(r.converged());
   EXPECT_EQ(r.iterations, 0);
   for (std::size_t i = 0; i < before.positions.size(); ++i) EXPECT_LT((planar.positions[i] - before.positions[i]).norm(), 1e-15);
 }

@@ -9,7 +9,7 @@
 
 #include "numeric/criteria/evaluation.hpp"
 #include "numeric/io/input_error.hpp"
-#include "numeric/io/program_csv.hpp"
+#include "numeric/program/program_csv.hpp"
 #include "numeric/program/catalogue.hpp"
 #include "numeric/region/region.hpp"
 #include "numeric/region/region_limit.hpp"
@@ -31,6 +31,18 @@ TEST(RegionSpec, CapAboutZAndAboutAGivenAxis) {
   EXPECT_TRUE(x.contains(Vec3(1, 0, 0)));
   EXPECT_TRUE(x.contains(Vec3(std::cos(0.17), std::sin(0.17), 0)));  // 9.74 degrees
   EXPECT_FALSE(x.contains(Vec3(std::cos(0.18), std::sin(0.18), 0)));  // 10.31 degrees
+}
+
+// Issue 36 item 4: an axis of subnormal components was divided by its subnormal norm, which keeps
+// a few bits, and the cap about "1e-323,0,1e-323" was not the cap about (1,0,1) (A's proven bound
+// 30485.5 instead of 1825429.6). Both parse to (1,0,1)/sqrt(2) to rounding, as does 1e300,0,1e300.
+TEST(RegionSpec, AxisOfAnyScaleIsTheSameDirection) {
+  const Vec3 expected = Vec3(1, 0, 1) / std::sqrt(2.0);
+  for (const char* spec : {"cap:30:1e-323,0,1e-323", "cap:30:1,0,1", "cap:30:1e300,0,1e300", "cap:30:5e-324,0,5e-324"}) {
+    const Region r = parse_region({spec});
+    ASSERT_EQ(r.zones.size(), 1u) << spec;
+    EXPECT_LE((r.zones[0].axis - expected).norm(), 2e-16) << spec;
+  }
 }
 
 TEST(RegionSpec, BandFacesAndUnion) {

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -39,6 +40,15 @@ std::string cluster() {
   return file("cluster.csv", program_csv(p));
 }
 
+// Twelve directions with components 0 and +-1 (not normalised: the reader normalises), times `scale`.
+std::string dyadic_program(double scale) {
+  const std::vector<Vec3> p = {{1, 0, 0},  {0, 1, 0},  {0, 0, 1},  {1, 1, 0},  {1, 0, 1},  {0, 1, 1},
+                               {1, -1, 0}, {1, 0, -1}, {0, 1, -1}, {1, 1, 1},  {1, -1, 1}, {-1, 1, 1}};
+  std::vector<Vec3> scaled;
+  for (const auto& e : p) scaled.push_back(e * scale);
+  return program_csv(scaled);
+}
+
 // A file whose name is not valid UTF-8 (Latin-1 bytes), holding classic18's 18 positions.
 std::string latin1_candidates() {
   return write_file("cand\xE9\xFF.csv", program_csv(Program::classic18().positions));
@@ -59,6 +69,34 @@ std::vector<Case> cases() {
   }
   out.push_back({"PolishRotation4", [] { return std::string("polish rotation-4 --criterion D"); }, E::error,
                  {"rotation-4", "rank-deficient program: rank 6 of 9"}});
+  // Item 5: a rank-deficient start exited 0 with D = inf as its "optimum".
+  out.push_back({"OptimizeFromRankDeficient", [] { return std::string("optimize --from rotation-4 --criterion D"); },
+                 E::error, {"rotation-4", "rank-deficient program: rank 6 of 9", "--from"}});
+  // Item 5: imaginary family parameters gave complex N and D; a repeated key silently took the last.
+  for (const char* value : {"I", "sqrt(-1)", "1+2*I"}) {
+    const std::string v = value;
+    out.push_back({std::string("FamilyImaginary") + (v == "I" ? "I" : v == "sqrt(-1)" ? "Sqrt" : "Sum"),
+                   [v] { return "family octahedral --param " + quote("axes=" + v); }, E::error, {"--param", "not a real number"}});
+  }
+  // Item 8: GiNaC's parse error came with its source location on a second line.
+  out.push_back({"FamilyParamEmpty", [] { return std::string("family octahedral --param axes="); }, E::error,
+                 {"--param", "axes=", "not an expression"}});
+  out.push_back({"FamilyParamTwice", [] { return std::string("family octahedral --param axes=1 --param axes=2"); },
+                 E::error, {"--param", "axes is given twice"}});
+  // Item 4: a program scaled to subnormal numbers is the same program (its directions, which are exact
+  // here: components 0 and +-1 times 2^-1060).
+  out.push_back({"ProgramSubnormal", [] { return "evaluate --json " + file("sub.csv", dyadic_program(std::ldexp(1.0, -1060))); },
+                 E::same, {}, [] { return "evaluate --json " + file("one.csv", dyadic_program(1.0)); }});
+  // Item 5: 1e20 degrees is 280 degrees (10^20 = 0 mod 8 and 10 mod 45), not what cos of a 17-digit
+  // float of 1e20 * pi / 180 gives (A 73.0476 instead of 73.1476).
+  out.push_back({"JigAngleHuge", [] { return std::string("evaluate --json 'jig:cuboctahedron@orientation=aa:1,2,3,1e20'"); },
+                 E::same, {}, [] { return std::string("evaluate --json 'jig:cuboctahedron@orientation=aa:1,2,3,280.0'"); }});
+  // Item 6: a JSON number out of double's range is bad input, not an internal error.
+  out.push_back({"CorrectNumberOverflow", [] {
+                   return "correct --calibration " +
+                          file("over.json", R"({"offset": [1e400, 0, 0], "matrix": [[1, 0, 0], [0, 1, 0], [0, 0, 1]]})") +
+                          " --measurements " + file("m.txt", "0 1 2 3\n");
+                 }, E::error, {"over.json", "not a JSON object"}});
   return out;
 }
 
@@ -89,6 +127,21 @@ TEST(NonUtf8Path, EveryJsonOutputIsWritten) {
   const CliResult r = run_limited("evaluate classic18 --json --out " + quote(out_file) + " --region " + region);
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_GT(std::filesystem::file_size(out_file), 0u);
+}
+
+// Item 8: a byte-order mark on a whitespace raw log made --format auto read it as CSV. The log with
+// a BOM must give the same calibration, warnings and status as without.
+TEST(RawLogBom, IsTheSameLog) {
+  std::ifstream in(std::string(SCALCAL_SOURCE_DIR) + "/data/xsens_acc.txt", std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  ASSERT_GT(text.str().size(), 1000u);
+  const std::string plain = file("xsens_plain.txt", text.str()), bom = file("xsens_bom.txt", "\xEF\xBB\xBF" + text.str());
+  const CliResult a = run_limited("calibrate --json --magnitude 9.81744 --measurements " + plain);
+  const CliResult b = run_limited("calibrate --json --magnitude 9.81744 --measurements " + bom);
+  EXPECT_EQ(a.status, 0) << a.err;
+  EXPECT_EQ(b.status, a.status) << b.err;
+  EXPECT_EQ(b.out, a.out);
 }
 
 }  // namespace

@@ -1,5 +1,5 @@
 // A raw instrument log: time and the three raw outputs, sample by sample (raw_log.hpp).
-#include "numeric/io/raw_log.hpp"
+#include "numeric/calibration/raw_log.hpp"
 
 #include <cctype>
 #include <cmath>
@@ -9,7 +9,8 @@
 
 namespace scalcal {
 bool looks_like_text_log(const std::string& text) {
-  std::istringstream in(text);
+  // A byte-order mark is not part of the first line (both readers drop it).
+  std::istringstream in(text.rfind("\xEF\xBB\xBF", 0) == 0 ? text.substr(3) : text);
   std::string line;
   while (std::getline(in, line)) {
     if (const auto hash = line.find('#'); hash != std::string::npos) line.erase(hash);

@@ -1,11 +1,12 @@
 // Bench measurements from CSV: samples grouped by position (measurements_csv.hpp).
-#include "numeric/io/measurements_csv.hpp"
+#include "numeric/calibration/measurements_csv.hpp"
 
 #include <cmath>
 #include <map>
 
 #include "numeric/io/input_error.hpp"
-#include "numeric/io/program_csv.hpp"
+#include "numeric/model/direction.hpp"
+#include "numeric/program/program_csv.hpp"
 
 namespace scalcal {
 
@@ -48,10 +49,10 @@ std::vector<PositionSamples> measurements_from_table(const CsvTable& table, bool
     pos.sample_lines.push_back(row.line);
     if (cx >= 0) {
       const Vec3 n(v[cx], v[cy], v[cz]);
-      const double length = n.stableNorm();  // no overflow at 1e300, no underflow at 1e-300
-      if (length == 0.0) throw InputError(table.file, row.line, "nominal direction x,y,z is the zero vector");
-      if (!std::isfinite(length)) throw InputError(table.file, row.line, "nominal direction x,y,z too large to normalise");
-      const Vec3 u = n / length;
+      const std::optional<Vec3> unit = unit_direction(n);  // full precision from 1e-323 to 1e308
+      if (!n.allFinite()) throw InputError(table.file, row.line, "a component of the nominal direction is not finite");
+      if (!unit) throw InputError(table.file, row.line, "nominal direction x,y,z is the zero vector");
+      const Vec3 u = *unit;
       if (!pos.nominal) {
         pos.nominal = u;
       } else if ((*pos.nominal - u).norm() > 1e-9) {

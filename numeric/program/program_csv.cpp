@@ -1,5 +1,5 @@
 // Programs as CSV files, read and written (program_csv.hpp).
-#include "numeric/io/program_csv.hpp"
+#include "numeric/program/program_csv.hpp"
 
 #include <array>
 #include <charconv>
@@ -8,6 +8,7 @@
 #include <string_view>
 
 #include "numeric/io/input_error.hpp"
+#include "numeric/model/direction.hpp"
 
 namespace scalcal {
 
@@ -24,11 +25,11 @@ Program program_from_table(const CsvTable& t) {
   for (const auto& row : t.rows) {
     Vec3 eta;
     if (cartesian) {
-      eta = Vec3(row.values[x], row.values[y], row.values[z]);
-      const double n = eta.stableNorm();  // no overflow at 1e200, no underflow at 1e-200
-      if (!(n > 0.0)) throw InputError(t.file, row.line, "zero vector: a position needs a direction");
-      if (!std::isfinite(n)) throw InputError(t.file, row.line, "vector too large to normalise");
-      eta /= n;
+      const Vec3 given(row.values[x], row.values[y], row.values[z]);
+      const std::optional<Vec3> u = unit_direction(given);  // full precision from 1e-323 to 1e308
+      if (!given.allFinite()) throw InputError(t.file, row.line, "a component of x,y,z is not finite");
+      if (!u) throw InputError(t.file, row.line, "zero vector: a position needs a direction");
+      eta = *u;
     } else {
       eta = Program::from_angles_deg(row.values[a1], row.values[a2]);
     }
