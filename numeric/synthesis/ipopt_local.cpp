@@ -156,6 +156,13 @@ class ProgramNlp : public Ipopt::TNLP {
         }
       return true;
     }
+    if (!dense && p_.lagrangian_hessian_entries(x, obj_factor, lambda + p_.positions(), values)) {
+      for (std::size_t k = 0; k < hessian_pattern_.size(); ++k) {
+        const auto [r, c] = hessian_pattern_[k];
+        if (r == c && r < 3 * p_.positions()) values[k] += 2.0 * lambda[r / 3];
+      }
+      return true;
+    }
     if (!dense) lower_.resize(static_cast<std::size_t>(n_) * static_cast<std::size_t>(n_ + 1) / 2);
     Number* lower = dense ? values : lower_.data();
     if (!p_.lagrangian_hessian(x, obj_factor, lambda + p_.positions(), lower)) return false;

@@ -1,6 +1,6 @@
 // A criterion as a smooth nonlinear program over x = (eta_1..eta_N, extra variables), one class per
-// form (criteria/criterion.hpp): SmoothForm min phi; MaxDiagonalForm min t s.t. N K(r,r) <= t;
-// MaxEigenvalueForm max s s.t. M/N - s I = L L^T. Values, gradients and Hessians are exact (tests
+// form (criteria/criterion.hpp): SmoothForm min phi; MaxDiagonalForm min t s.t. N K(r,r) <= t (lifted
+// at large N, max_diagonal_lifted.hpp); MaxEigenvalueForm max s s.t. M/N - s I = L L^T. Values, gradients and Hessians are exact (tests
 // compare them with finite differences). The Ipopt adapter (ipopt_local.cpp) sees only SmoothProblem.
 #pragma once
 #include <algorithm>
@@ -11,71 +11,14 @@
 #include <Eigen/Eigenvalues>
 
 #include "numeric/criteria/derivatives.hpp"
+#include "numeric/synthesis/max_diagonal_lifted.hpp"
+#include "numeric/synthesis/smooth_problem.hpp"
 #include "numeric/criteria/registry.hpp"
 #include "numeric/program/program.hpp"
 #include "numeric/synthesis/criterion_ops.hpp"
 #include "numeric/synthesis/synthesis_models.hpp"
 
 namespace scalcal {
-
-class SmoothProblem {
- public:
-  explicit SmoothProblem(int positions) : positions_(positions) {}
-  virtual ~SmoothProblem() = default;
-
-  int positions() const { return positions_; }
-  int variables() const { return 3 * positions_ + extra(); }
-  virtual int extra() const { return 0; }        // variables after the 3N coordinates
-  virtual int constraints() const { return 0; }  // rows after the N norm constraints
-  virtual bool long_runs() const { return true; }  // nonsmooth reformulations get a larger iteration cap
-
-  // x for a program: its coordinates, then extra variables that make the start feasible.
-  virtual std::vector<double> start(const Program& program) const {
-    std::vector<double> x(static_cast<std::size_t>(variables()), 0.0);
-    for (int i = 0; i < positions_; ++i)
-      for (int c = 0; c < 3; ++c) x[static_cast<std::size_t>(3 * i + c)] = program.positions[static_cast<std::size_t>(i)](c);
-    return x;
-  }
-  virtual void constraint_bounds(double* lower, double* upper) const { (void)lower; (void)upper; }
-  // f(x) and, when grad is non-null, its gradient (grad is zeroed by the caller). False: undefined.
-  virtual bool objective(const double* x, double& f, double* grad) const = 0;
-  // The exact Hessian of obj_factor f + sum_r lambda_r g_r (the criterion's own constraints; the
-  // norm constraints are the adapter's) over all variables, as the packed lower triangle, row by
-  // row: (r, c), c <= r, at r(r+1)/2 + c. False: undefined at x.
-  virtual bool lagrangian_hessian(const double* x, double obj_factor, const double* lambda, double* lower) const = 0;
-  // False where entry (r, c), c <= r, of that Hessian is zero at every x: Ipopt then leaves it out of
-  // the KKT matrix its linear solver factorises (E: 1.9x faster at N = 100 than declared dense).
-  virtual bool hessian_entry_used(int r, int c) const {
-    (void)r;
-    (void)c;
-    return true;
-  }
-  // The criterion's constraints; jac (row-major, constraints() x variables(), zeroed by the caller).
-  virtual bool constraint_values(const double* x, double* g, double* jac) const {
-    (void)x; (void)g; (void)jac;
-    return true;
-  }
-
- protected:
-  PositionsT<double> positions_of(const double* x) const {
-    PositionsT<double> eta(static_cast<std::size_t>(positions_));
-    for (int i = 0; i < positions_; ++i) eta[static_cast<std::size_t>(i)] = Vec3(x[3 * i], x[3 * i + 1], x[3 * i + 2]);
-    return eta;
-  }
-  static void scatter(const PositionsT<double>& grad, double* out) {
-    for (std::size_t i = 0; i < grad.size(); ++i)
-      for (int c = 0; c < 3; ++c) out[3 * i + static_cast<std::size_t>(c)] += grad[i](c);
-  }
-  // Writes factor * H (the 3N x 3N position block) into the packed lower triangle of all variables.
-  static void pack_lower(const MatXT<double>& H, double factor, int variables, double* lower) {
-    std::fill(lower, lower + variables * (variables + 1) / 2, 0.0);
-    for (int r = 0, k = 0; r < H.rows(); ++r)
-      for (int c = 0; c <= r; ++c, ++k) lower[k] = factor * H(r, c);
-  }
-
- private:
-  int positions_;
-};
 
 // A smooth criterion's objective over the positions, from its SmoothOps.
 template <class Model>
@@ -265,12 +208,19 @@ class MaxEigenvalueProblem : public SmoothProblem {
   }
 };
 
+// Where a max-diagonal criterion's program switches from the epigraph over the positions (a dense
+// Hessian, cheap below this N, and the form the documented sweeps of N = 9..40 ran) to the lifted form
+// (max_diagonal_lifted.hpp: sparse, O(N) per iteration).
+inline constexpr int kLiftedFromPositions = 48;
+
 // The nonlinear program of a criterion under the model, chosen by the criterion's form.
 template <class Model>
 std::unique_ptr<SmoothProblem> make_problem(const CriterionOps<Model>& criterion, int positions) {
   switch (criterion.form) {
     case CriterionForm::Smooth: return std::make_unique<SmoothCriterionProblem<Model>>(positions, criterion.smooth);
-    case CriterionForm::MaxDiagonal: return std::make_unique<MaxDiagonalProblem<Model>>(positions, criterion.rows);
+    case CriterionForm::MaxDiagonal:
+      if (positions >= kLiftedFromPositions) return std::make_unique<MaxDiagonalLiftedProblem<Model>>(positions, criterion.rows);
+      return std::make_unique<MaxDiagonalProblem<Model>>(positions, criterion.rows);
     default: return std::make_unique<MaxEigenvalueProblem<Model>>(positions);
   }
 }

@@ -75,16 +75,12 @@ double score_model_positions(const double* x, const double* y, const double* z, 
 
 using ModelScore = double (*)(const double*, const double*, const double*, int);
 
-// Programs begin..end-1 of one chunk. Compiled twice on x86-64 (x86-64-v3: AVX2 + FMA, and the
-// baseline); the loader picks one for the machine. Both draw the same programs; values may differ
-// in the last bits (FMA), so only programs within rounding of each other could swap places.
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
-__attribute__((target_clones("arch=x86-64-v3", "default")))
-#endif
-// `score` is the criterion's score_information<C>; `batched` its kDeterminantOnly path; a non-null
-// `model_score` (a model other than the paper's) replaces both.
-void search_chunk(Xoshiro256x4& rng, long long begin, long long end, int n, double (*score)(const double*, int),
-                  bool batched, ModelScore model_score, const PositionSampler& sampler, Buffers& buf, Best& mine) {
+// Programs begin..end-1 of one chunk. `score` is the criterion's score_information<C>; `batched` its
+// kDeterminantOnly path; a non-null `model_score` (a model other than the paper's) replaces both.
+// Inlined into one entry per instruction set below.
+SCALCAL_KERNEL void search_chunk_body(Xoshiro256x4& rng, long long begin, long long end, int n,
+                                      double (*score)(const double*, int), bool batched, ModelScore model_score,
+                                      const PositionSampler& sampler, Buffers& buf, Best& mine) {
   const int np = padded_size(n);
   alignas(32) double m[45][kLanes];
   double m45[45];
@@ -116,6 +112,43 @@ void search_chunk(Xoshiro256x4& rng, long long begin, long long end, int n, doub
   }
 }
 
+using SearchChunk = void (*)(Xoshiro256x4&, long long, long long, int, double (*)(const double*, int), bool, ModelScore,
+                             const PositionSampler&, Buffers&, Best&);
+
+#define SCALCAL_SEARCH_CHUNK_ARGS                                                                                       \
+  Xoshiro256x4 &rng, long long begin, long long end, int n, double (*score)(const double*, int), bool batched,      \
+      ModelScore model_score, const PositionSampler &sampler, Buffers &buf, Best &mine
+void search_chunk_baseline(SCALCAL_SEARCH_CHUNK_ARGS) {
+  search_chunk_body(rng, begin, end, n, score, batched, model_score, sampler, buf, mine);
+}
+
+// The search loop compiled once per instruction set and chosen at run time (x86-64: AVX-512, AVX2 + FMA
+// or the baseline). Not target_clones: its ifunc resolver picked the baseline on the development
+// machine (an AMD EPYC with AVX-512), where __builtin_cpu_supports, asked after start-up, knows better.
+// All draw the same programs; values may differ in the last bits (FMA), so only programs within
+// rounding of each other could swap places.
+#if defined(__GNUC__) && defined(__x86_64__)
+__attribute__((target("avx512f,avx512dq,avx512vl,avx512bw,avx2,fma,bmi,bmi2"))) void search_chunk_avx512(
+    SCALCAL_SEARCH_CHUNK_ARGS) {
+  search_chunk_body(rng, begin, end, n, score, batched, model_score, sampler, buf, mine);
+}
+__attribute__((target("avx2,fma,bmi,bmi2"))) void search_chunk_avx2(SCALCAL_SEARCH_CHUNK_ARGS) {
+  search_chunk_body(rng, begin, end, n, score, batched, model_score, sampler, buf, mine);
+}
+SearchChunk pick_search_chunk() {
+  __builtin_cpu_init();
+  if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("avx512vl") &&
+      __builtin_cpu_supports("avx512bw") && __builtin_cpu_supports("fma") && __builtin_cpu_supports("bmi2"))
+    return &search_chunk_avx512;
+  if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma") && __builtin_cpu_supports("bmi2"))
+    return &search_chunk_avx2;
+  return &search_chunk_baseline;
+}
+#else
+SearchChunk pick_search_chunk() { return &search_chunk_baseline; }
+#endif
+#undef SCALCAL_SEARCH_CHUNK_ARGS
+
 }  // namespace
 
 RandomSearchResult random_search(int positions, long long count, CriterionKind criterion, std::uint64_t seed,
@@ -134,6 +167,7 @@ RandomSearchResult random_search(int positions, long long count, CriterionKind c
           return &score_model_positions<decltype(M), decltype(C)>;
         });
       });
+  static const SearchChunk search_chunk = pick_search_chunk();
   const int nthreads = static_cast<int>(std::min<long long>(thread_count(threads), chunks));
   std::vector<Best> best(static_cast<std::size_t>(nthreads));
   std::atomic<long long> next{0};

@@ -18,6 +18,14 @@
 
 namespace scalcal {
 
+// The kernels below are forced inline, so that each machine-specific clone of the search loop
+// (random_search.cpp: target_clones) compiles them for its own instruction set.
+#if defined(__GNUC__)
+#define SCALCAL_KERNEL inline __attribute__((always_inline))
+#else
+#define SCALCAL_KERNEL inline
+#endif
+
 // Positions are processed kLanes at a time; buffers hold a multiple of kLanes (padded with zero
 // vectors, which add nothing to H^T H: every entry is a monomial of degree 2 to 4).
 inline constexpr int kLanes = 4;
@@ -57,7 +65,7 @@ class Xoshiro256x4 {
 // one candidate: u from its high and v from its low 32 bits, as 2^-31 fixed point in [-1, 1) (put
 // into the mantissa of a double in [2, 4), minus 3). Candidates go in order (draw, stream); the
 // accepted ones are kept by branch-free compaction, and those past the n-th are dropped.
-inline void sample_sphere(Xoshiro256x4& rng, int n, double* x, double* y, double* z) {
+SCALCAL_KERNEL void sample_sphere(Xoshiro256x4& rng, int n, double* x, double* y, double* z) {
   typedef double Reals __attribute__((vector_size(4 * sizeof(double))));
   typedef std::int64_t Mask __attribute__((vector_size(4 * sizeof(std::int64_t))));
   const Xoshiro256x4::Words two = Xoshiro256x4::Words{} + 0x4000000000000000ull;
@@ -147,7 +155,7 @@ constexpr int packed(int a, int b) { return a * (a + 1) / 2 + b; }
 // in a fixed order. Only 24 of the 31 moments are accumulated (fewer registers spilled): on the
 // sphere x^2 + y^2 + z^2 = 1, so sum z^2 = count - sum x^2 - sum y^2 and every quartic moment with
 // a factor z^2 is m - m x^2 - m y^2 for a quadratic monomial m.
-inline void accumulate_information(const double* x, const double* y, const double* z, int n, int count,
+SCALCAL_KERNEL void accumulate_information(const double* x, const double* y, const double* z, int n, int count,
                                    double* m45) {
   typedef double Lanes __attribute__((vector_size(kLanes * sizeof(double))));
   Lanes acc[24] = {};
@@ -194,7 +202,7 @@ inline void accumulate_information(const double* x, const double* y, const doubl
 // the Schur complement S; in floating point too, since every update only subtracts d_j l^2 >= 0 from
 // a diagonal entry and products of smaller positive factors are smaller). When that bound is below
 // `det_needed` for every program, none of them can be a new best, and all get +infinity.
-inline void d_criterion_batch(double (*m)[kLanes], int n, double det_needed, double* out) {
+SCALCAL_KERNEL void d_criterion_batch(double (*m)[kLanes], int n, double det_needed, double* out) {
   const double N = n;
   double n9 = 1.0;
   for (int k = 0; k < 9; ++k) n9 *= N;
@@ -233,7 +241,7 @@ inline void d_criterion_batch(double (*m)[kLanes], int n, double det_needed, dou
 
 // The determinant a program must exceed to have D below `best` (with a relative margin of 1e-12,
 // so that rounding can never exit early on a program that would win).
-inline double det_needed_for(double best, int n) {
+SCALCAL_KERNEL double det_needed_for(double best, int n) {
   if (!(best < std::numeric_limits<double>::infinity())) return 0.0;
   double n9 = 1.0;
   for (int k = 0; k < 9; ++k) n9 *= n;

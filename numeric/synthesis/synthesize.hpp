@@ -1,11 +1,12 @@
 // The multistart for one criterion and model: start k is the uniform random program of seed
 // start_seed(seed, k) (for a registered model other than the paper's and a smooth criterion, every
-// second one exchanged onto a grid first), optimised by the local solver the criterion's form calls for, in worker
-// processes; the best program (lowest value, then lowest start index) never depends on scheduling.
+// second one exchanged onto a grid first), optimised by the local solver the criterion's form calls for, in
+// threads (Newton, L-BFGS) or worker processes (Ipopt); the best program (lowest value, then lowest start index) never depends on scheduling.
 // synthesize_with<Model> is compiled once per model (the criterion is a CriterionOps), in the model's
 // synthesis unit; synthesize<C, Model> is its name for one criterion type.
 #pragma once
 #include <chrono>
+#include <cstdio>
 #include <functional>
 #include <stdexcept>
 #include <string>
@@ -20,6 +21,7 @@
 #include "numeric/synthesis/multistart.hpp"
 #include "numeric/synthesis/newton_local.hpp"
 #include "numeric/synthesis/seeds.hpp"
+#include "numeric/synthesis/smooth_optimum_check.hpp"
 #include "numeric/synthesis/stopping_rule.hpp"
 #include "numeric/synthesis/synthesis_models.hpp"
 #include "numeric/synthesis/workers.hpp"
@@ -51,7 +53,10 @@ LocalResult local_start(const CriterionOps<Model>& criterion, const Program& sta
   if (criterion.form == CriterionForm::MaxDiagonal && kModelIndex<Model> > 0) {
     // The other models' S optima merge positions onto the axes, which Newton from a random program
     // cannot do without the exchange (see start_at); their S starts stay random, as documented in
-    // experiments/docs/sweep.md.
+    // experiments/docs/sweep.md. (Tried from N = 48 on: starts exchanged for A, D or S, or their A or
+    // D optima, were consistent and fast but ended above the random starts' best, cubic12's S at
+    // N = 132 at 28.3, 27.225 or 27.09 against 27.08; E from the A optimum of an A-exchanged program
+    // reached axis6's limit at N = 150 in 0.4 instead of 81 s but cubic12's E at 39.116 against 39.082.)
     return ipopt_local<Model>(criterion, start);
   }
   // The nonsmooth forms converge poorly from a random program (E at N = 9: random starts ended
@@ -93,22 +98,39 @@ inline void count_hits(const std::vector<LocalResult>& results, ProgramSymmetry 
   out.distinct = count_distinct(optima, symmetry, kSameProgramTolerance);
 }
 
-// Ipopt, from the best Newton or L-BFGS program, must find it a KKT point of the constrained
-// problem (same value); should it find a lower one, that is kept.
+// The best Newton or L-BFGS program is confirmed in double (smooth_optimum_check.hpp): a Riemannian
+// gradient below tolerance and a Hessian positive semidefinite to a margin. Where that check does not
+// pass, Ipopt from that program must find it a KKT point with the same value, as before the check
+// existed (in a worker process); should it find a lower one, that is kept.
 template <class Model>
 void confirm_best(const CriterionOps<Model>& criterion, int positions, SynthesisResult& out) {
+  const SmoothOptimumCheck check = check_smooth_optimum<Model>(criterion, out.program);
+  if (check.passed()) {
+    char text[160];
+    std::snprintf(text, sizeof text, " program is a local minimum (Riemannian gradient %.1e, Hessian + %.0e of its "
+                                     "scale positive definite; checked in double)", check.gradient_norm, check.margin);
+    out.summary.termination = Termination::converged;
+    out.summary.message = std::string("the best ") + out.local_solver + text;
+    return;
+  }
   const Program best_program = out.program;
-  const LocalResult check = run_in_workers(1, 1, positions, [&](int) { return ipopt_local<Model>(criterion, best_program); })[0];
-  const bool confirmed = check.summary.converged() && check.value <= out.value * (1 + kHitTolerance);
+  const LocalResult ipopt = run_in_workers(1, 1, positions, [&](int) { return ipopt_local<Model>(criterion, best_program); })[0];
+  const bool confirmed = ipopt.summary.converged() && ipopt.value <= out.value * (1 + kHitTolerance);
   out.summary.termination = confirmed ? Termination::converged : Termination::not_converged;
   out.summary.message = confirmed ? std::string("Ipopt confirmed the best ") + out.local_solver + " program as a KKT point"
                                   : std::string("Ipopt did not confirm the best ") + out.local_solver +
                                         " program as a converged optimum";
-  out.summary.iterations = check.summary.iterations;
-  if (check.value < out.value) {
-    out.program = check.program;
-    out.value = check.value;
+  out.summary.iterations = ipopt.summary.iterations;
+  if (ipopt.value < out.value) {
+    out.program = ipopt.program;
+    out.value = ipopt.value;
   }
+}
+
+// Whether the starts call Ipopt (then they run in worker processes, else in threads).
+template <class Model>
+bool starts_need_ipopt(const CriterionOps<Model>& criterion, LocalSolver requested, int positions) {
+  return starts_solver<Model>(criterion, requested, positions) == LocalSolver::Ipopt;
 }
 
 // The multistart of one criterion under the model (compiled once per model).
@@ -139,6 +161,7 @@ SynthesisResult synthesize_with(const CriterionOps<Model>& criterion, const Synt
       start = exchanged_start(*criterion.kind, ModelKind(kModelIndex<Model>), start);
     return local_start<Model>(criterion, start, options.local);
   };
+  const bool in_processes = starts_need_ipopt<Model>(criterion, options.local, options.positions);
   std::vector<LocalResult> results;
   std::string stopping = forced ? "forced " + std::to_string(cap) : "cap " + std::to_string(cap);
   while (static_cast<int>(results.size()) < cap) {
@@ -146,8 +169,9 @@ SynthesisResult synthesize_with(const CriterionOps<Model>& criterion, const Synt
     const int batch = forced ? cap : std::min(rule.batch, cap - offset);
     std::function<void(int, int)> progress;
     if (options.progress) progress = [&](int done, int) { options.progress(offset + done, cap); };
-    const std::vector<LocalResult> done =
-        run_in_workers(batch, workers, options.positions, [&](int k) { return start_at(offset + k); }, progress);
+    const auto task = [&](int k) { return start_at(offset + k); };
+    const std::vector<LocalResult> done = in_processes ? run_in_workers(batch, workers, options.positions, task, progress)
+                                                       : run_in_threads(batch, workers, task, progress);
     results.insert(results.end(), done.begin(), done.end());
     if (!forced && static_cast<int>(results.size()) < cap &&
         static_cast<int>(results.size()) >= criterion.minimum_starts(options.positions) && rule.satisfied(results)) {
@@ -167,9 +191,9 @@ SynthesisResult synthesize_with(const CriterionOps<Model>& criterion, const Synt
     out.summary.message = out.summary.converged() ? "the best Ipopt start converged"
                                                   : "the best Ipopt start did not converge";
   }
-  if (criterion.form == CriterionForm::MaxDiagonal) {
+  if (criterion.form == CriterionForm::MaxDiagonal && options.positions < kLiftedFromPositions) {
     // Ipopt's tolerance leaves S about 1e-12 above its optimum; Newton on the active conditions
-    // takes it to rounding.
+    // takes it to rounding (a dense step: from the lifted form's N on, Ipopt's value stands).
     const LocalResult refined = refine_active_diagonal<Model>(criterion, LocalResult{out.program, out.value, out.summary});
     if (refined.value < out.value) {
       out.program = refined.program;

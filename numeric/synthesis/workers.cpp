@@ -1,17 +1,21 @@
-// Local optimisations in forked worker processes (workers.hpp).
+// The two ways of running a batch of starts: threads (no Ipopt) and forked workers (Ipopt).
 #include "numeric/synthesis/workers.hpp"
 
 #include <csignal>
 #include <exception>
 
 #include <algorithm>
+#include <atomic>
 #include <cerrno>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <iostream>
 #include <stdexcept>
+#include <exception>
+#include <mutex>
 #include <string>
+#include <thread>
 
 #include <poll.h>
 #include <sys/wait.h>
@@ -159,6 +163,38 @@ std::vector<LocalResult> run_in_workers(int tasks, int workers, int positions,
   if (failed || done != tasks)
     throw std::runtime_error("synthesize: a worker process failed (" + std::to_string(done) + " of " + std::to_string(tasks) +
                              " starts returned)");
+  return results;
+}
+
+std::vector<LocalResult> run_in_threads(int tasks, int threads, const std::function<LocalResult(int)>& task,
+                                        const std::function<void(int, int)>& progress) {
+  std::vector<LocalResult> results(static_cast<std::size_t>(std::max(tasks, 0)));
+  threads = std::max(1, std::min(threads, tasks));
+  std::atomic<int> next{0};
+  std::mutex lock;  // guards done, failure and the progress callback
+  int done = 0;
+  std::exception_ptr failure;
+  auto work = [&] {
+    for (int k; (k = next.fetch_add(1)) < tasks;) {
+      try {
+        results[static_cast<std::size_t>(k)] = task(k);
+        const std::lock_guard<std::mutex> g(lock);
+        ++done;
+        // A progress callback may throw (Python's Ctrl-C): it ends the batch like a failed task.
+        if (progress && tasks > 1 && !failure) progress(done, tasks);
+      } catch (...) {
+        const std::lock_guard<std::mutex> g(lock);
+        if (!failure) failure = std::current_exception();
+        next.store(tasks);  // no new tasks
+        return;
+      }
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int t = 1; t < threads; ++t) pool.emplace_back(work);
+  work();
+  for (auto& th : pool) th.join();
+  if (failure) std::rethrow_exception(failure);
   return results;
 }
 

@@ -1,6 +1,7 @@
-// Local optimisations in forked worker processes: Ipopt's linear solver (sequential MUMPS) is not
-// thread-safe. Tasks are dealt round-robin and results stored by index, so nothing depends on
-// scheduling; each result crosses the pipe as one typed record.
+// Local optimisations on several cores: in threads of this process for work that never calls Ipopt
+// (Newton, L-BFGS, the exchange), in forked worker processes for work that does (Ipopt's linear
+// solver, sequential MUMPS, is not thread-safe). Results are stored by task index, so nothing
+// depends on scheduling; from a worker process each result crosses the pipe as one typed record.
 #pragma once
 #include <functional>
 #include <vector>
@@ -14,6 +15,12 @@ namespace scalcal {
 // has `positions` positions. Throws std::runtime_error when a worker fails.
 std::vector<LocalResult> run_in_workers(int tasks, int workers, int positions,
                                         const std::function<LocalResult(int)>& task,
+                                        const std::function<void(int done, int total)>& progress = {});
+
+// task(k) for k < tasks on min(threads, tasks) threads of this process (the caller's thread is one
+// of them), taking tasks from a shared counter; progress is called from one thread at a time. An
+// exception thrown by a task is rethrown here once every thread has stopped.
+std::vector<LocalResult> run_in_threads(int tasks, int threads, const std::function<LocalResult(int)>& task,
                                         const std::function<void(int done, int total)>& progress = {});
 
 // f() in one child process (for work that initialises Ipopt, whose MUMPS state a later fork must
