@@ -11,6 +11,7 @@
 #include "commands/catalogue.hpp"
 #include "commands/certify.hpp"
 #include "commands/evaluate.hpp"
+#include "commands/export.hpp"
 #include "commands/family.hpp"
 #include "commands/jig.hpp"
 #include "commands/limits.hpp"
@@ -92,6 +93,7 @@ const std::vector<Binding>& bindings() {
       bind(commands::certify_table(), commands::certify_request, commands::certify),
       bind(commands::augment_table(), commands::augment_request, commands::augment),
       bind(commands::plan_table(), commands::plan_request, commands::plan),
+      bind(commands::export_table(), commands::export_request, commands::export_calibration),
       bind(commands::family_table(), commands::family_request,
            [](const commands::FamilyRequest& q) { return commands::family(q); }),
       bind(commands::limits_table(), commands::limits_request, commands::limits),

@@ -10,7 +10,7 @@
 
 namespace scalcal {
 
-// Input limits (README, "Input limits"). Far above any real program or bench file (a bench
+// Input limits (docs/evaluate.md, "Input limits"). Far above any real program or bench file (a bench
 // file of 100000 positions x 10 samples is ~10^6 rows, ~60 MB), far below what hurts.
 struct CsvLimits {
   static constexpr std::size_t max_file_bytes = 64u << 20;  // 64 MiB

@@ -145,7 +145,7 @@ def test_calibrate_grouped_samples(tmp_path):
 
 
 def test_calibrate_raw_log():
-    # The real log of the README, read by NumPy: a text log has no header, so its lines are the rows.
+    # The real log of docs/calibrate.md, read by NumPy: a text log has no header, so its lines are the rows.
     path = os.path.join(DATA, "xsens_acc.txt")
     log = np.loadtxt(path)
     r = scalcal.calibrate(measurements={"t": log[:, 0], "ix": log[:, 1], "iy": log[:, 2], "iz": log[:, 3]},
@@ -186,3 +186,13 @@ def test_same_seed_same_program():
     a = scalcal.optimize(positions=10, criterion="E", starts=3, seed=11, threads=2)
     b = scalcal.optimize(positions=10, criterion="E", starts=3, seed=11, threads=1)
     assert np.array_equal(a["program"], b["program"]) and a["value"] == b["value"]
+
+
+def test_export_is_the_cli_export(tmp_path):
+    # A calibration file written by the CLI, exported by both to PX4's parameters and imu_tk's text.
+    cal = tmp_path / "cal.json"
+    cli("calibrate", "--measurements", os.path.join(DATA, "xsens_acc.txt"), "--magnitude", "9.81744", "--out", str(cal))
+    for fmt in ("px4", "imu_tk"):
+        r = scalcal.export(str(cal), format=fmt)
+        same(r, cli_json("export", str(cal), "--format", fmt))
+        assert r["text"], fmt
