@@ -101,8 +101,11 @@ FamilyResult family(const FamilyRequest& q) {
     r.positions_integer = GiNaC::is_a<GiNaC::numeric>(inst.N) && GiNaC::ex_to<GiNaC::numeric>(inst.N).is_integer();
     r.positions_value = GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(inst.N)).to_double();
   }
+  // A criterion without a closed form here (E's eigenvalue of a block that does not split, for a symbolic
+  // orientation) is a row that says so, not a missing line.
   for (CriterionKind k : kCriteria)
-    if (c.of(k)) r.rows.push_back(row_of(std::string(criterion_name(k)), *c.of(k)));
+    r.rows.push_back(c.of(k) ? row_of(std::string(criterion_name(k)), *c.of(k))
+                             : ExactRow{std::string(criterion_name(k)), false, std::string(), std::nullopt});
   const std::pair<const char*, const symbolic::ExactValue*> thetas[] = {{"theta_bias", &c.theta_bias},
                                                                          {"theta_scale", &c.theta_scale},
                                                                          {"theta_nonorth", &c.theta_nonorth},

@@ -68,6 +68,60 @@ std::optional<std::pair<int, double>> smallest_n(const Region& region, double li
   return std::nullopt;
 }
 
+// fig12's gnuplot script: three panels on the page width over fig12.csv, fig12_thetas.csv and
+// fig12_n.csv; largest_n is the N scan's end, drawn as a line in panel (c).
+std::string fig12_script(const std::vector<Family>& fams, int largest_n) {
+  // Three panels on the page width. Colour and point say the criterion (a), the error group (b) or the
+  // family (c); the dash says the family, so the keys need seven lines, not twelve.
+  using namespace plots::style;
+  const char* dashes[] = {"1", "2", "3"};  // cap solid, band dashed, faces dotted
+  const char* family_colours[] = {black, dark, medium};
+  std::string body =
+      "set multiplot\nset grid\nset xrange [0:185]\nset xtics 30\nset xlabel 'half-angle θ (degrees)'\n"
+      "set key top right Left reverse samplen 2.5 width -1\nset tmargin at screen 0.91\nset bmargin at screen 0.16\n"
+      "set lmargin at screen 0.075\nset rmargin at screen 0.325\nset label 1 '(a)' at graph 0, graph 1.04 left front\n"
+      "set logscale y\nset format y '10" + plots::sup("%T") + "'\nset ylabel 'limit on the region / on the sphere'\nplot ";
+  int k = 0;
+  for (std::size_t fi = 0; fi < fams.size(); ++fi)
+    for (std::size_t ci = 0; ci < kCriteria.size(); ++ci) {
+      const std::string cn(criterion_name(kCriteria[ci]));
+      body += std::string(k++ ? ", \\\n     " : "") + "'fig12.csv' skip 1 using 2:((strcol(1) eq '" + fams[fi].name +
+              "' && strcol(4) eq '" + cn + "') ? $6 : NaN) with linespoints dt " + dashes[fi] + " pt " +
+              std::to_string(criterion_point[ci]) + " ps 0.6 lw 1.5 lc rgb '" + criterion[ci] + "' " +
+              (fi == 0 ? "title " + plots::gp_quote(cn) : std::string("notitle"));
+    }
+  auto family_keys = [&] {
+    std::string keys;
+    for (std::size_t fi = 0; fi < fams.size(); ++fi)
+      keys += ", \\\n     NaN with lines dt " + std::string(dashes[fi]) + " lw 1.5 lc rgb 'black' title " +
+              plots::gp_quote(fams[fi].label);
+    return keys;
+  };
+  body += family_keys();
+  body += "\nset lmargin at screen 0.41\nset rmargin at screen 0.66\nset label 1 '(b)'\nset ylabel '" +
+          std::string(theta_q) + " on the region / on the sphere'\nplot ";
+  const char* thetas[] = {theta_bias, theta_scale, theta_nonorth};
+  k = 0;
+  for (std::size_t fi = 0; fi < fams.size(); ++fi)
+    for (int g = 0; g < 3; ++g)
+      body += std::string(k++ ? ", \\\n     " : "") + "'fig12_thetas.csv' skip 1 using 2:(strcol(1) eq '" + fams[fi].name +
+              "' ? $" + std::to_string(7 + g) + " : NaN) with linespoints dt " + dashes[fi] + " pt " +
+              std::to_string(criterion_point[g + 1]) + " ps 0.6 lw 1.5 lc rgb '" + group[g] + "' " +
+              (fi == 0 ? "title " + plots::gp_quote(thetas[g]) : std::string("notitle"));
+  body += family_keys();
+  // The scan's largest N as a line: the panel has a point to draw even when no region was reached.
+  body += "\nset lmargin at screen 0.745\nset rmargin at screen 0.985\nset label 1 '(c)'\nunset logscale y\n"
+          "set format y '%g'\nset ylabel 'smallest N within 1 % of the D limit'\nset yrange [0:" +
+          std::to_string(largest_n * 3 / 2 + 2) + "]\nplot " + std::to_string(largest_n) +
+          " with lines dt 4 lw 1.5 lc rgb '" + grey + "' title 'largest N tried'";
+  for (std::size_t fi = 0; fi < fams.size(); ++fi)
+    body += std::string(", \\\n     ") + "'fig12_n.csv' skip 1 using 2:(strcol(1) eq '" + fams[fi].name +
+            "' ? $4 : NaN) with linespoints dt " + dashes[fi] + " pt " + std::to_string(criterion_point[fi]) +
+            " ps 0.6 lw 1.5 lc rgb '" + family_colours[fi] + "' title " + plots::gp_quote(fams[fi].label);
+  body += "\nunset multiplot\n";
+  return body;
+}
+
 }  // namespace
 
 using plots::CsvWriter;
@@ -135,55 +189,7 @@ void figure_regions(Context& ctx) {
   errors.close();
   sizes.close();
 
-  // Three panels on the page width. Colour and point say the criterion (a), the error group (b) or the
-  // family (c); the dash says the family, so the keys need seven lines, not twelve.
-  using namespace plots::style;
-  const char* dashes[] = {"1", "2", "3"};  // cap solid, band dashed, faces dotted
-  const char* family_colours[] = {black, dark, medium};
-  std::string body =
-      "set multiplot\nset grid\nset xrange [0:185]\nset xtics 30\nset xlabel 'half-angle θ (degrees)'\n"
-      "set key top right Left reverse samplen 2.5 width -1\nset tmargin at screen 0.91\nset bmargin at screen 0.16\n"
-      "set lmargin at screen 0.075\nset rmargin at screen 0.325\nset label 1 '(a)' at graph 0, graph 1.04 left front\n"
-      "set logscale y\nset format y '10" + plots::sup("%T") + "'\nset ylabel 'limit on the region / on the sphere'\nplot ";
-  int k = 0;
-  const auto fams = families(ctx.options.quick);
-  for (std::size_t fi = 0; fi < fams.size(); ++fi)
-    for (std::size_t ci = 0; ci < kCriteria.size(); ++ci) {
-      const std::string cn(criterion_name(kCriteria[ci]));
-      body += std::string(k++ ? ", \\\n     " : "") + "'fig12.csv' skip 1 using 2:((strcol(1) eq '" + fams[fi].name +
-              "' && strcol(4) eq '" + cn + "') ? $6 : NaN) with linespoints dt " + dashes[fi] + " pt " +
-              std::to_string(criterion_point[ci]) + " ps 0.6 lw 1.5 lc rgb '" + criterion[ci] + "' " +
-              (fi == 0 ? "title " + plots::gp_quote(cn) : std::string("notitle"));
-    }
-  auto family_keys = [&] {
-    std::string keys;
-    for (std::size_t fi = 0; fi < fams.size(); ++fi)
-      keys += ", \\\n     NaN with lines dt " + std::string(dashes[fi]) + " lw 1.5 lc rgb 'black' title " +
-              plots::gp_quote(fams[fi].label);
-    return keys;
-  };
-  body += family_keys();
-  body += "\nset lmargin at screen 0.41\nset rmargin at screen 0.66\nset label 1 '(b)'\nset ylabel '" +
-          std::string(theta_q) + " on the region / on the sphere'\nplot ";
-  const char* thetas[] = {theta_bias, theta_scale, theta_nonorth};
-  k = 0;
-  for (std::size_t fi = 0; fi < fams.size(); ++fi)
-    for (int g = 0; g < 3; ++g)
-      body += std::string(k++ ? ", \\\n     " : "") + "'fig12_thetas.csv' skip 1 using 2:(strcol(1) eq '" + fams[fi].name +
-              "' ? $" + std::to_string(7 + g) + " : NaN) with linespoints dt " + dashes[fi] + " pt " +
-              std::to_string(criterion_point[g + 1]) + " ps 0.6 lw 1.5 lc rgb '" + group[g] + "' " +
-              (fi == 0 ? "title " + plots::gp_quote(thetas[g]) : std::string("notitle"));
-  body += family_keys();
-  // The scan's largest N as a line: the panel has a point to draw even when no region was reached.
-  body += "\nset lmargin at screen 0.745\nset rmargin at screen 0.985\nset label 1 '(c)'\nunset logscale y\n"
-          "set format y '%g'\nset ylabel 'smallest N within 1 % of the D limit'\nset yrange [0:" +
-          std::to_string(n_scan.back() * 3 / 2 + 2) + "]\nplot " + std::to_string(n_scan.back()) +
-          " with lines dt 4 lw 1.5 lc rgb '" + grey + "' title 'largest N tried'";
-  for (std::size_t fi = 0; fi < fams.size(); ++fi)
-    body += std::string(", \\\n     ") + "'fig12_n.csv' skip 1 using 2:(strcol(1) eq '" + fams[fi].name +
-            "' ? $4 : NaN) with linespoints dt " + dashes[fi] + " pt " + std::to_string(criterion_point[fi]) +
-            " ps 0.6 lw 1.5 lc rgb '" + family_colours[fi] + "' title " + plots::gp_quote(fams[fi].label);
-  body += "\nunset multiplot\n";
+  const std::string body = fig12_script(families(ctx.options.quick), n_scan.back());
   render_figure(ctx, "fig12", "what a restricted bench costs: region limits, RMS errors and the N to reach them", body,
                 plots::kPageWidthCm, 6.5);
   rep.figure("fig12", "fig12: (a) each criterion's limit on a cap (solid), a band (dashed) and the six faces (dotted) "

@@ -17,14 +17,10 @@ using plots::CsvWriter;
 namespace {
 // Relative distance above which an optimum counts as missing the limit.
 constexpr double kLimitTolerance = 1e-5;
-}  // namespace
 
-void figures_4_5_6(Context& ctx) {
-  const double limit = criterion_limit(CriterionKind::D).value;
-  std::vector<const Entry*> drawn;
-  for (const auto* group : {&ctx.uniform, &ctx.rotation, &ctx.jigs, &ctx.printable})
-    for (const auto& e : *group) drawn.push_back(&e);
-  for (int n : ctx.optimised_sizes(CriterionKind::D)) drawn.push_back(ctx.optimum(CriterionKind::D, n));
+// fig4_programs.csv (every program drawn, with the optimised ones that miss the limit marked) and
+// fig4_random.csv (the best random program per N), which Figs. 4-6 plot.
+void write_fig4_data(Context& ctx, const std::vector<const Entry*>& drawn, double limit) {
   {
     auto header = entry_header();
     header.push_back("misses_limit");
@@ -41,6 +37,62 @@ void figures_4_5_6(Context& ctx) {
       csv.row({std::to_string(n), std::to_string(ctx.random_count), std::to_string(ctx.options.seed),
                csv_num(e.ev.raw(CriterionKind::D)), csv_num(e.ev.value(CriterionKind::D))});
   }
+}
+
+// The report's section on Figs. 4-6: captions, the data files, the table of optimised programs and
+// the claim about which N miss the limit.
+void report_figures_4_5_6(Context& ctx, double limit) {
+  auto& r = ctx.report;
+  r.heading(2, "Figs. 4-6: generalized variance");
+  const std::string random_n = ctx.random_best.empty() ? std::string("")
+                                                       : " (run for N = " + std::to_string(ctx.random_best.begin()->first) +
+                                                             " to " + std::to_string(ctx.random_best.rbegin()->first) +
+                                                             " only)";
+  r.figure("fig4", "Fig. 4: det K (K for unit-vector rows, dimensionless) against N: uniform projections (squares), "
+                   "rotation about each axis [12] (stars), scalcal's D-optimal programs (triangles), the dodecahedral "
+                   "and icosahedral jigs (open circle, diamond), the " + std::to_string(ctx.printable.size()) +
+                   " printable jigs of full rank in their default mounting (open squares; experiments/docs/jigs.md) "
+                   "and the best of " + std::to_string(ctx.random_count) +
+                   " random programs per N (dashed" + random_n + ")");
+  r.figure("fig5", "Fig. 5: det K normalised by N^9, symbols as in Fig. 4; the arrow marks the one program above the "
+                   "range, with its value");
+  r.figure("fig6", "Fig. 6: lower part of N^9 det K, symbols as in Fig. 4, with the analytic limit 61509375/4; circled "
+                   "and numbered: the N whose optimum misses the limit");
+  r.paragraph("Data: [fig4_programs.csv](fig4_programs.csv) (every program drawn, with all criteria) and "
+              "[fig4_random.csv](fig4_random.csv) (the best of " + std::to_string(ctx.random_count) +
+              " programs uniform on the sphere per N; `scalcal random --positions N --count " +
+              std::to_string(ctx.random_count) + " --seed " + std::to_string(ctx.options.seed) + "` regenerates each).");
+  std::vector<std::vector<std::string>> rows;
+  std::string missed;
+  for (int n : ctx.optimised_sizes(CriterionKind::D)) {
+    const Entry& e = *ctx.optimum(CriterionKind::D, n);
+    const bool misses = e.ev.value(CriterionKind::D) > limit * (1 + kLimitTolerance);
+    if (misses) missed += (missed.empty() ? "" : ", ") + std::to_string(n);
+    rows.push_back({std::to_string(n), decimal(e.ev.value(CriterionKind::D), 8), decimal(e.ev.value(CriterionKind::D) / limit - 1, 3), misses ? "misses" : "reaches",
+                    std::to_string(e.hits) + "/" + std::to_string(e.starts), decimal(e.seconds, 3)});
+  }
+  r.paragraph("The optimised D-criterion programs (scalcal's multistart; `hits` = starts that reached the best value):");
+  r.table({"N", "N^9 det K", "relative excess over the limit", "limit", "hits/starts", "seconds"}, rows);
+  // Compare on the N this run optimised only.
+  std::string expected;
+  for (int n : ctx.optimised_sizes(CriterionKind::D))
+    if (n == 9 || n == 10 || n == 11 || n == 13 || n == 15) expected += (expected.empty() ? "" : ", ") + std::to_string(n);
+  const auto sizes = ctx.optimised_sizes(CriterionKind::D);
+  r.claim("N whose optimum misses the limit (Fig. 6)", "9, 10, 11, 13, 15",
+          (missed.empty() ? std::string("none") : missed) + " (of N = " + std::to_string(sizes.front()) + ".." +
+              std::to_string(sizes.back()) + " optimised here, " + std::to_string(sizes.size()) + " sizes)",
+          missed == expected ? "same on these N" : "differs: paper's set on these N is {" + expected + "}");
+}
+
+}  // namespace
+
+void figures_4_5_6(Context& ctx) {
+  const double limit = criterion_limit(CriterionKind::D).value;
+  std::vector<const Entry*> drawn;
+  for (const auto* group : {&ctx.uniform, &ctx.rotation, &ctx.jigs, &ctx.printable})
+    for (const auto& e : *group) drawn.push_back(&e);
+  for (int n : ctx.optimised_sizes(CriterionKind::D)) drawn.push_back(ctx.optimum(CriterionKind::D, n));
+  write_fig4_data(ctx, drawn, limit);
   const std::string common =
       "set grid\nset xlabel 'number of measurement positions N'\nset xrange [8:49]\nset xtics 4\nset mxtics 4\n";
   using namespace plots::style;
@@ -128,46 +180,7 @@ void figures_4_5_6(Context& ctx) {
   render_figure(ctx, "fig6", "lower part of N^9 det K with the analytic limit (the paper's Fig. 6)", body6 + plot,
                 plots::kColumnWidthCm, 6.5);
 
-  auto& r = ctx.report;
-  r.heading(2, "Figs. 4-6: generalized variance");
-  const std::string random_n = ctx.random_best.empty() ? std::string("")
-                                                       : " (run for N = " + std::to_string(ctx.random_best.begin()->first) +
-                                                             " to " + std::to_string(ctx.random_best.rbegin()->first) +
-                                                             " only)";
-  r.figure("fig4", "Fig. 4: det K (K for unit-vector rows, dimensionless) against N: uniform projections (squares), "
-                   "rotation about each axis [12] (stars), scalcal's D-optimal programs (triangles), the dodecahedral "
-                   "and icosahedral jigs (open circle, diamond), the " + std::to_string(ctx.printable.size()) +
-                   " printable jigs of full rank in their default mounting (open squares; experiments/docs/jigs.md) "
-                   "and the best of " + std::to_string(ctx.random_count) +
-                   " random programs per N (dashed" + random_n + ")");
-  r.figure("fig5", "Fig. 5: det K normalised by N^9, symbols as in Fig. 4; the arrow marks the one program above the "
-                   "range, with its value");
-  r.figure("fig6", "Fig. 6: lower part of N^9 det K, symbols as in Fig. 4, with the analytic limit 61509375/4; circled "
-                   "and numbered: the N whose optimum misses the limit");
-  r.paragraph("Data: [fig4_programs.csv](fig4_programs.csv) (every program drawn, with all criteria) and "
-              "[fig4_random.csv](fig4_random.csv) (the best of " + std::to_string(ctx.random_count) +
-              " programs uniform on the sphere per N; `scalcal random --positions N --count " +
-              std::to_string(ctx.random_count) + " --seed " + std::to_string(ctx.options.seed) + "` regenerates each).");
-  std::vector<std::vector<std::string>> rows;
-  std::string missed;
-  for (int n : ctx.optimised_sizes(CriterionKind::D)) {
-    const Entry& e = *ctx.optimum(CriterionKind::D, n);
-    const bool misses = e.ev.value(CriterionKind::D) > limit * (1 + kLimitTolerance);
-    if (misses) missed += (missed.empty() ? "" : ", ") + std::to_string(n);
-    rows.push_back({std::to_string(n), decimal(e.ev.value(CriterionKind::D), 8), decimal(e.ev.value(CriterionKind::D) / limit - 1, 3), misses ? "misses" : "reaches",
-                    std::to_string(e.hits) + "/" + std::to_string(e.starts), decimal(e.seconds, 3)});
-  }
-  r.paragraph("The optimised D-criterion programs (scalcal's multistart; `hits` = starts that reached the best value):");
-  r.table({"N", "N^9 det K", "relative excess over the limit", "limit", "hits/starts", "seconds"}, rows);
-  // Compare on the N this run optimised only.
-  std::string expected;
-  for (int n : ctx.optimised_sizes(CriterionKind::D))
-    if (n == 9 || n == 10 || n == 11 || n == 13 || n == 15) expected += (expected.empty() ? "" : ", ") + std::to_string(n);
-  const auto sizes = ctx.optimised_sizes(CriterionKind::D);
-  r.claim("N whose optimum misses the limit (Fig. 6)", "9, 10, 11, 13, 15",
-          (missed.empty() ? std::string("none") : missed) + " (of N = " + std::to_string(sizes.front()) + ".." +
-              std::to_string(sizes.back()) + " optimised here, " + std::to_string(sizes.size()) + " sizes)",
-          missed == expected ? "same on these N" : "differs: paper's set on these N is {" + expected + "}");
+  report_figures_4_5_6(ctx, limit);
 }
 
 }  // namespace scalcal::reproduce

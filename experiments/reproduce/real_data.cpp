@@ -20,6 +20,42 @@ namespace scalcal::reproduce {
 
 using plots::CsvWriter;
 
+namespace {
+
+// The report's table of the estimated parameters with their standard errors, and the program the
+// log's positions turned out to be, with the positions worth adding.
+void report_parameters_and_program(Report& rep, const AnyUnitsCalibration& a, const ProgramAdvice& advice) {
+  const Evaluation& ev = advice.evaluation;
+  std::vector<std::vector<std::string>> rows;
+  const char* names[3] = {"x", "y", "z"};
+  const char* pairs[3] = {"xy", "yz", "zx"};
+  for (int k = 0; k < 3; ++k) {
+    rows.push_back({std::string("offset ") + names[k] + " (counts)", decimal(a.correction.offset(k), 8), decimal(a.bias_std(k), 3)});
+  }
+  for (int k = 0; k < 3; ++k)
+    rows.push_back({std::string("scale ") + names[k] + " (counts per m/s²)", decimal(a.correction.scale(k), 7),
+                    decimal(a.scale_deviation_std(k) * a.nominal_gain, 3)});
+  for (int k = 0; k < 3; ++k)
+    rows.push_back({std::string("γ_") + pairs[k] + " (rad)", decimal(a.correction.nonorthogonality(k), 5),
+                    decimal(a.nonorthogonality_std(k), 3)});
+  rep.table({"parameter", "estimate", "standard error (the larger of noise- and residual-based)"}, rows);
+  std::string suggestions;
+  for (const auto& s : advice.suggested)
+    suggestions += (suggestions.empty() ? "" : "; ") + std::string("(") + decimal(s.position(0), 3) + ", " +
+                   decimal(s.position(1), 3) + ", " + decimal(s.position(2), 3) + ") → D " + decimal(s.value, 4);
+  rep.paragraph("The program the positions turned out to be: N = " + std::to_string(ev.positions) + ", D = " +
+                decimal(ev.value(CriterionKind::D), 4) + ", A = " + decimal(ev.value(CriterionKind::A), 4) + ", E = " + decimal(ev.value(CriterionKind::E), 4) + ", S = " +
+                decimal(ev.value(CriterionKind::S), 4) + ", θ = " + decimal(ev.theta_bias, 3) + ", " + decimal(ev.theta_scale, 3) + ", " +
+                decimal(ev.theta_nonorth, 3) + "; efficiency against the sphere's limits D " +
+                decimal(advice.efficiency[0], 3) + ", A " + decimal(advice.efficiency[1], 3) + ", E " +
+                decimal(advice.efficiency[2], 3) + ", S " + decimal(advice.efficiency[3], 3) +
+                ". The three positions that would improve D most (gravity's direction in the meter's frame): " +
+                suggestions + ". The comparison with an independent SciPy fit is in "
+                "[experiments/docs/real_data.md](../experiments/docs/real_data.md).");
+}
+
+}  // namespace
+
 void real_data(Context& ctx) {
   constexpr double kG = 9.81744;  // the publishers' local gravity
   auto& rep = ctx.report;
@@ -98,7 +134,6 @@ void real_data(Context& ctx) {
                       "| |a| − g | of each interval's mean before calibration (zero at 32768, one gain for all three "
                       "axes) and after");
   const ProgramAdvice advice = advise_program(Program{a.directions}, sphere_region(), CriterionKind::D, 3);
-  const Evaluation& ev = advice.evaluation;
   rep.paragraph("`scalcal calibrate --measurements data/xsens_acc.txt --magnitude 9.81744` on the log of IMU-TK (" +
                 std::to_string(log.size()) + " rows, 100 Hz; BSD licence, data/README.md): " +
                 std::to_string(d.intervals.size()) + " static intervals (window " + std::to_string(d.window) +
@@ -107,32 +142,7 @@ void real_data(Context& ctx) {
                 "intervals: " + decimal(rms_before, 3) + " of g before (one gain " + decimal(one_gain, 5) +
                 " counts per m/s²), " + decimal(rms_after, 3) + " after. Data: [real_intervals.csv](real_intervals.csv), "
                 "[real_log.csv](real_log.csv) (every 5th row).");
-  std::vector<std::vector<std::string>> rows;
-  const char* names[3] = {"x", "y", "z"};
-  const char* pairs[3] = {"xy", "yz", "zx"};
-  for (int k = 0; k < 3; ++k) {
-    rows.push_back({std::string("offset ") + names[k] + " (counts)", decimal(a.correction.offset(k), 8), decimal(a.bias_std(k), 3)});
-  }
-  for (int k = 0; k < 3; ++k)
-    rows.push_back({std::string("scale ") + names[k] + " (counts per m/s²)", decimal(a.correction.scale(k), 7),
-                    decimal(a.scale_deviation_std(k) * a.nominal_gain, 3)});
-  for (int k = 0; k < 3; ++k)
-    rows.push_back({std::string("γ_") + pairs[k] + " (rad)", decimal(a.correction.nonorthogonality(k), 5),
-                    decimal(a.nonorthogonality_std(k), 3)});
-  rep.table({"parameter", "estimate", "standard error (the larger of noise- and residual-based)"}, rows);
-  std::string suggestions;
-  for (const auto& s : advice.suggested)
-    suggestions += (suggestions.empty() ? "" : "; ") + std::string("(") + decimal(s.position(0), 3) + ", " +
-                   decimal(s.position(1), 3) + ", " + decimal(s.position(2), 3) + ") → D " + decimal(s.value, 4);
-  rep.paragraph("The program the positions turned out to be: N = " + std::to_string(ev.positions) + ", D = " +
-                decimal(ev.value(CriterionKind::D), 4) + ", A = " + decimal(ev.value(CriterionKind::A), 4) + ", E = " + decimal(ev.value(CriterionKind::E), 4) + ", S = " +
-                decimal(ev.value(CriterionKind::S), 4) + ", θ = " + decimal(ev.theta_bias, 3) + ", " + decimal(ev.theta_scale, 3) + ", " +
-                decimal(ev.theta_nonorth, 3) + "; efficiency against the sphere's limits D " +
-                decimal(advice.efficiency[0], 3) + ", A " + decimal(advice.efficiency[1], 3) + ", E " +
-                decimal(advice.efficiency[2], 3) + ", S " + decimal(advice.efficiency[3], 3) +
-                ". The three positions that would improve D most (gravity's direction in the meter's frame): " +
-                suggestions + ". The comparison with an independent SciPy fit is in "
-                "[experiments/docs/real_data.md](../experiments/docs/real_data.md).");
+  report_parameters_and_program(rep, a, advice);
 }
 
 }  // namespace scalcal::reproduce
