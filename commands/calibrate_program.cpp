@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "commands/calibrate.hpp"
+#include "numeric/criteria/registry.hpp"
 #include "numeric/criteria/identifiability.hpp"
 #include "numeric/io/input_error.hpp"
 #include "numeric/region/augment.hpp"
@@ -119,7 +120,7 @@ ProgramQuality program_quality(const CalibrateRequest& q, CalibrateResult& r, co
     const double v = out.evaluation.value(c);
     double limit = NAN;
     if (paper9) {
-      limit = limit_value(c, region);
+      if (has_limit(c)) limit = limit_value(c, region);  // a registered criterion may have no known limit: NaN
     } else if (const auto stated = stated_limit(r.model, criterion_name(c))) {
       limit = stated->value;
     }

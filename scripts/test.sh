@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Installs what is missing, builds, and runs the whole test suite (GoogleTest and proof checks);
+# Installs what is missing, builds, and runs the whole test suite (GoogleTest, proof checks, docs examples),
+# then the CLI with a fifth criterion registered (scripts/fifth_criterion.sh);
 # then the same suite under AddressSanitizer + UndefinedBehaviorSanitizer (scripts/sanitize.sh) and
 # libFuzzer on every reader for 30 s each (scripts/fuzz.sh). SCALCAL_SANITIZERS=0 skips those two.
 # Arguments go to ctest.
@@ -7,6 +8,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/build.sh
 ctest --test-dir build --output-on-failure -j"$(nproc)" "$@"
+# "Registered means everywhere": the CLI built with a fifth criterion, run through every subcommand.
+bash scripts/fifth_criterion.sh
 if [ "${SCALCAL_SANITIZERS:-1}" != 0 ]; then
   bash scripts/sanitize.sh "$@"
   bash scripts/fuzz.sh 30
