@@ -3,17 +3,18 @@
 // confirmation of the best, the distinct-optimum count), per start.
 #include <benchmark/benchmark.h>
 
-#include "numeric/synthesis/multistart.hpp"
-#include "numeric/synthesis/random_search.hpp"
 #include "numeric/synthesis/ipopt_local.hpp"
+#include "numeric/synthesis/multistart.hpp"
 #include "numeric/synthesis/newton_local.hpp"
+#include "numeric/synthesis/random_search.hpp"
 
 namespace {
 
 void BM_RandomSearchD18(benchmark::State& state) {
   const long long count = 200000;
   for (auto _ : state) benchmark::DoNotOptimize(scalcal::random_search(18, count, scalcal::CriterionKind::D, 1, 1));
-  state.counters["programs_per_s"] = benchmark::Counter(double(count) * double(state.iterations()), benchmark::Counter::kIsRate);
+  state.counters["programs_per_s"] =
+      benchmark::Counter(double(count) * double(state.iterations()), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_RandomSearchD18)->Unit(benchmark::kMillisecond)->UseRealTime();
 

@@ -31,18 +31,25 @@ int main(int argc, char** argv) {
   int repeats = 1;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string key = argv[i], value = argv[i + 1];
-    if (key == "--positions") o.positions = std::stoi(value);
-    else if (key == "--criterion") o.criterion = *scalcal::parse_criterion(value);
-    else if (key == "--model") o.model = *scalcal::parse_model(value);
-    else if (key == "--starts") o.starts = std::stoi(value);
-    else if (key == "--seed") o.seed = std::stoull(value);
-    else if (key == "--threads") o.threads = std::stoi(value);
-    else if (key == "--repeats") repeats = std::stoi(value);
+    if (key == "--positions")
+      o.positions = std::stoi(value);
+    else if (key == "--criterion")
+      o.criterion = *scalcal::parse_criterion(value);
+    else if (key == "--model")
+      o.model = *scalcal::parse_model(value);
+    else if (key == "--starts")
+      o.starts = std::stoi(value);
+    else if (key == "--seed")
+      o.seed = std::stoull(value);
+    else if (key == "--threads")
+      o.threads = std::stoi(value);
+    else if (key == "--repeats")
+      repeats = std::stoi(value);
     else if (key == "--local")
-      o.local = value == "newton" ? scalcal::LocalSolver::Newton
-              : value == "lbfgs"  ? scalcal::LocalSolver::Lbfgs
-              : value == "ipopt"  ? scalcal::LocalSolver::Ipopt
-                                  : scalcal::LocalSolver::Automatic;
+      o.local = value == "newton"  ? scalcal::LocalSolver::Newton
+                : value == "lbfgs" ? scalcal::LocalSolver::Lbfgs
+                : value == "ipopt" ? scalcal::LocalSolver::Ipopt
+                                   : scalcal::LocalSolver::Automatic;
     else {
       std::fprintf(stderr, "bench_inprocess: unknown option %s\n", key.c_str());
       return 2;
@@ -56,11 +63,11 @@ int main(int argc, char** argv) {
     const double cpu = cpu_seconds() - c0;
     rusage u{};
     getrusage(RUSAGE_SELF, &u);
-    std::printf("{\"positions\": %d, \"criterion\": \"%s\", \"value\": %.17g, \"starts\": %d, \"hits\": %d, "
-                "\"seconds\": %.6f, \"cpu_seconds\": %.6f, \"peak_mib\": %.1f, \"confirmed\": %s, \"message\": \"%s\"}\n",
-                o.positions, std::string(scalcal::criterion_name(o.criterion)).c_str(), s.value, s.starts, s.hits, wall,
-                cpu, static_cast<double>(u.ru_maxrss) / 1024.0, s.summary.converged() ? "true" : "false",
-                s.summary.message.c_str());
+    std::printf(
+        "{\"positions\": %d, \"criterion\": \"%s\", \"value\": %.17g, \"starts\": %d, \"hits\": %d, "
+        "\"seconds\": %.6f, \"cpu_seconds\": %.6f, \"peak_mib\": %.1f, \"confirmed\": %s, \"message\": \"%s\"}\n",
+        o.positions, std::string(scalcal::criterion_name(o.criterion)).c_str(), s.value, s.starts, s.hits, wall, cpu,
+        static_cast<double>(u.ru_maxrss) / 1024.0, s.summary.converged() ? "true" : "false", s.summary.message.c_str());
     std::fflush(stdout);
   }
   return 0;

@@ -26,7 +26,8 @@ const CommandTable& augment_table() {
                             "starts", "8"),
              "K"),
        seed_option(), threads_option(),
-       out_option("write the whole program (given, then added) as CSV, with its region line"), json_option("print one JSON object")}};
+       out_option("write the whole program (given, then added) as CSV, with its region line"),
+       json_option("print one JSON object")}};
   return table;
 }
 

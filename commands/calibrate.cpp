@@ -28,8 +28,9 @@ std::string not_estimated_text(ModelKind model) {
       "the rotation part of the misalignment (three angles) leaves every modulus unchanged and is not estimated";
   const std::string_view name = model_name(model);
   if (name == "bias3")
-    return rotation + "; the scale factors are taken as equal (one gain, from the start) and the axes as orthogonal: "
-                      "their errors go into the residual";
+    return rotation +
+           "; the scale factors are taken as equal (one gain, from the start) and the axes as orthogonal: "
+           "their errors go into the residual";
   if (name == "axis6") return rotation + "; the axes are taken as orthogonal: non-orthogonality goes into the residual";
   if (name == "cubic12")
     return rotation +
@@ -41,7 +42,8 @@ std::string not_estimated_text(ModelKind model) {
 
 // The model: the requested one if the layout carries it (InputError naming what would work
 // otherwise), or the richest the layout carries.
-void choose(const CalibrateRequest& q, const std::vector<PositionSamples>& data, double magnitude, CalibrateResult& out) {
+void choose(const CalibrateRequest& q, const std::vector<PositionSamples>& data, double magnitude,
+            CalibrateResult& out) {
   const auto directions = layout_directions(data, magnitude, q.magnitude == "auto", q.modulus);
   if (!directions)
     throw InputError(q.file, 0,
@@ -111,7 +113,8 @@ void collect_warnings(const CalibrateResult& r, Warnings& w) {
   const AnyUnitsCalibration& a = r.fit;
   const auto& s = a.estimate.summary;
   if (!s.converged())
-    w.push_back({r.file, "the fit did not converge after " + std::to_string(s.iterations) + " iterations (" + s.message +
+    w.push_back({r.file, "the fit did not converge after " + std::to_string(s.iterations) + " iterations (" +
+                             s.message +
                              "): the calibration is not to be used (its file says \"converged\": false; `scalcal "
                              "correct` refuses it)"});
   if (a.estimate.noise_source == NoiseSource::none && a.dof == 0)
@@ -121,7 +124,8 @@ void collect_warnings(const CalibrateResult& r, Warnings& w) {
   else if (a.dof < 5 && a.dof > 0)
     w.push_back({r.file, "only " + std::to_string(a.dof) +
                              " degrees of freedom (positions minus parameters): the standard errors are themselves "
-                             "uncertain; 95 % intervals are +- " + number(r.t95, 4) + " standard errors (Student's t)"});
+                             "uncertain; 95 % intervals are +- " +
+                             number(r.t95, 4) + " standard errors (Student's t)"});
   if (a.chi_square && a.chi_square_p < 1e-3) {
     // Which positions disagree: |z| > 3 standard errors of their mean by the noise within positions.
     std::vector<std::pair<double, int>> worst;
@@ -133,10 +137,11 @@ void collect_warnings(const CalibrateResult& r, Warnings& w) {
     std::sort(worst.rbegin(), worst.rend());
     std::string list;
     for (std::size_t k = 0; k < worst.size() && k < 8; ++k)
-      list += std::string(k ? "," : "") + " line " + std::to_string(worst[k].second) + " (" + number(worst[k].first) + ")";
+      list +=
+          std::string(k ? "," : "") + " line " + std::to_string(worst[k].second) + " (" + number(worst[k].first) + ")";
     if (worst.size() > 8) list += " and " + std::to_string(worst.size() - 8) + " more";
-    w.push_back({r.file, "the fit contradicts its own noise estimate: chi-square " + number(*a.chi_square, 4) + " for " +
-                             std::to_string(a.dof) + " degrees of freedom (p = " + number(a.chi_square_p, 2) +
+    w.push_back({r.file, "the fit contradicts its own noise estimate: chi-square " + number(*a.chi_square, 4) +
+                             " for " + std::to_string(a.dof) + " degrees of freedom (p = " + number(a.chi_square_p, 2) +
                              "), the residuals between positions " + number(std::sqrt(*a.chi_square / a.dof)) +
                              " times what the noise within positions predicts; " +
                              (worst.empty() ? std::string("no single position stands out (systematic errors the model "
@@ -179,9 +184,10 @@ CalibrateResult calibrate(const CalibrateRequest& q, CalibrationInput in, const 
     out.warnings.push_back({q.file, "model " + std::string(model_name(out.model)) + " (auto): " + out.model_reason});
   out.not_estimated = not_estimated_text(out.model);
   if (magnitude_auto)
-    out.not_identifiable.emplace_back("the field's strength and the mean scale factor: one unknown, so the correction "
-                                      "maps to unit modulus and the scale deviations are relative to their geometric "
-                                      "mean");
+    out.not_identifiable.emplace_back(
+        "the field's strength and the mean scale factor: one unknown, so the correction "
+        "maps to unit modulus and the scale deviations are relative to their geometric "
+        "mean");
   AnyUnitsOptions ao;
   ao.modulus = q.modulus;
   ao.magnitude = magnitude;

@@ -14,10 +14,10 @@
 #include "commands/warning.hpp"
 #include "numeric/calibration/any_units.hpp"
 #include "numeric/calibration/outlier_samples.hpp"
+#include "numeric/calibration/raw_log.hpp"
 #include "numeric/calibration/static_intervals.hpp"
 #include "numeric/criteria/model_evaluation.hpp"
 #include "numeric/criteria/registry.hpp"
-#include "numeric/calibration/raw_log.hpp"
 #include "numeric/model/registry.hpp"
 
 namespace scalcal::commands {
@@ -26,25 +26,25 @@ inline constexpr int kMaxSuggestions = 100;  // positions to suggest adding, at 
 inline constexpr double kOutlierSigmas = 5;  // a position's standardised residual above this is flagged
 
 struct CalibrateRequest {
-  std::string file;                  // the data's name in messages (and the file calibrate(request) reads)
-  std::string magnitude = "auto";    // |I| as the user wrote it (a positive number), or "auto"
+  std::string file;                // the data's name in messages (and the file calibrate(request) reads)
+  std::string magnitude = "auto";  // |I| as the user wrote it (a positive number), or "auto"
   Modulus modulus = Modulus::norm;
-  std::string format = "auto";       // of the file: auto, csv or text
-  double rate = 0;                   // Hz: a raw log whose row k is at k / rate (0: its time column)
-  StaticIntervalOptions intervals;   // for a raw log
-  std::string weights = "auto";      // auto, samples or positions
+  std::string format = "auto";      // of the file: auto, csv or text
+  double rate = 0;                  // Hz: a raw log whose row k is at k / rate (0: its time column)
+  StaticIntervalOptions intervals;  // for a raw log
+  std::string weights = "auto";     // auto, samples or positions
   bool keep_outliers = false;
-  int suggest = 3;                   // positions to suggest adding
+  int suggest = 3;  // positions to suggest adding
   CriterionKind criterion = CriterionKind::D;
-  std::vector<std::string> regions;  // where positions may be added: --region, else the region line of --program
-                                     // or of the measurements file; none: the sphere
-  std::string program;               // --program: the program the data measured (its region line is used)
-  double tolerance_deg = 0.05;       // a measured position this far outside the region still counts as inside
-  std::string sensor;                // --sensor: a label for the calibration file
+  std::vector<std::string> regions;       // where positions may be added: --region, else the region line of --program
+                                          // or of the measurements file; none: the sphere
+  std::string program;                    // --program: the program the data measured (its region line is used)
+  double tolerance_deg = 0.05;            // a measured position this far outside the region still counts as inside
+  std::string sensor;                     // --sensor: a label for the calibration file
   std::string raw_units, physical_units;  // --units RAW,PHYSICAL for the calibration file ("": not given)
-  Warnings warnings;                 // found while reading the request
-  std::optional<ModelKind> model;    // empty: auto, the richest linear model the layout carries
-  std::optional<CsvTable> table;     // the data given as columns (Python), instead of reading `file`
+  Warnings warnings;                      // found while reading the request
+  std::optional<ModelKind> model;         // empty: auto, the richest linear model the layout carries
+  std::optional<CsvTable> table;          // the data given as columns (Python), instead of reading `file`
 };
 
 // What the data held: positions, and for a raw log how they were found.
@@ -57,8 +57,8 @@ struct CalibrationInput {
 
 // One measured position as a bench engineer reads it.
 struct PositionResult {
-  int line = 0;                      // its first sample's line
-  double start = NAN, end = NAN;     // a raw log's interval, seconds (NaN for bench data)
+  int line = 0;                   // its first sample's line
+  double start = NAN, end = NAN;  // a raw log's interval, seconds (NaN for bench data)
   int samples = 0;
   Vec3 mean = Vec3::Zero();          // raw, file units
   Vec3 direction = Vec3::Zero();     // unit vector in the meter's frame after calibration
@@ -67,16 +67,16 @@ struct PositionResult {
 };
 
 struct SuggestedAddition {
-  Vec3 position = Vec3::Zero();      // the field's direction in the meter's frame
-  double value = 0;                  // the criterion with this and every earlier suggestion added
-  std::vector<double> errors;        // sqrt(max K(r,r)) per parameter group of the model, not normalised by N
+  Vec3 position = Vec3::Zero();  // the field's direction in the meter's frame
+  double value = 0;              // the criterion with this and every earlier suggestion added
+  std::vector<double> errors;    // sqrt(max K(r,r)) per parameter group of the model, not normalised by N
 };
 
 // The measured program judged under the chosen model.
 struct ProgramQuality {
   ModelEvaluation evaluation;
-  std::string region;                // the region the efficiencies and suggestions refer to
-  std::vector<double> efficiency;    // per registered criterion (NaN: no known limit)
+  std::string region;              // the region the efficiencies and suggestions refer to
+  std::vector<double> efficiency;  // per registered criterion (NaN: no known limit)
   std::vector<SuggestedAddition> suggested;
 };
 
@@ -89,15 +89,15 @@ struct CalibrateResult {
   std::vector<std::string> not_identifiable;  // what the layout or the data cannot determine
   std::string not_estimated;                  // what the model itself leaves out, one sentence
   AnyUnitsCalibration fit;
-  double field_strength = NAN;                // --magnitude auto: |I| in file units (gain's geometric mean)
-  double field_strength_std = NAN;            // its standard error
+  double field_strength = NAN;      // --magnitude auto: |I| in file units (gain's geometric mean)
+  double field_strength_std = NAN;  // its standard error
   std::vector<PositionResult> positions;
-  std::vector<int> outliers;                  // indices into positions, |standardised| > kOutlierSigmas, worst first
+  std::vector<int> outliers;  // indices into positions, |standardised| > kOutlierSigmas, worst first
   std::vector<ExcludedSample> excluded;
   std::optional<IntervalDetection> detection;  // a raw log's
   int rows = 0;                                // a raw log's rows
   ProgramQuality program;
-  double t95 = NAN;                           // Student's t at 97.5 % for dof (95 % two-sided), NaN for dof < 1
+  double t95 = NAN;  // Student's t at 97.5 % for dof (95 % two-sided), NaN for dof < 1
   Warnings warnings;
 
   bool converged() const { return fit.estimate.summary.converged(); }

@@ -6,8 +6,8 @@
 
 #include "commands/calibrate.hpp"
 #include "commands/usage_error.hpp"
-#include "numeric/io/input_error.hpp"
 #include "numeric/calibration/measurements_csv.hpp"
+#include "numeric/io/input_error.hpp"
 
 namespace scalcal::commands {
 namespace {
@@ -27,8 +27,9 @@ std::string shortest(double v) {
 // Too few intervals: what the detector did, and what would actually help for this log.
 std::string too_few_message(const IntervalDetection& d, const StaticIntervalOptions& o, const std::string& need) {
   std::ostringstream s;
-  s << std::setprecision(4) << "found " << d.intervals.size() << " static intervals; " << need << ". A window of " << d.window << " samples is static when its variance norm stays below "
-    << d.threshold << " = --threshold-factor " << o.threshold_factor << " x the noise floor " << d.still_variance << " ("
+  s << std::setprecision(4) << "found " << d.intervals.size() << " static intervals; " << need << ". A window of "
+    << d.window << " samples is static when its variance norm stays below " << d.threshold << " = --threshold-factor "
+    << o.threshold_factor << " x the noise floor " << d.still_variance << " ("
     << (d.floor_from_still ? "the variance of the first --still " + shortest(o.still_seconds) + " s"
                            : std::string("the median of the log's quiet windows"))
     << "), for at least --min-interval " << o.min_seconds << " s. ";
@@ -100,14 +101,17 @@ CalibrationInput calibration_input(RawLog log, const CalibrateRequest& o) {
   in.detection = detect_static_intervals(*in.log, o.intervals);
   const auto& d = in.detection;
   if (d.nonfinite > 0)
-    in.warnings.push_back({o.file, std::to_string(d.nonfinite) + " rows with a NaN or infinite value are not used (lines " +
+    in.warnings.push_back({o.file, std::to_string(d.nonfinite) +
+                                       " rows with a NaN or infinite value are not used (lines " +
                                        lines_text(d.nonfinite_lines, d.nonfinite) + ")"});
   if (d.saturated > 0)
-    in.warnings.push_back({o.file, std::to_string(d.saturated) +
-                                       " samples sit at an output's extreme in runs of three or more (saturated) and are "
-                                       "not used (lines " +
-                                       lines_text(d.saturated_lines, d.saturated) + ")"});
-  if (d.intervals.size() < static_cast<std::size_t>(needed)) throw InputError(o.file, 0, too_few_message(d, o.intervals, need));
+    in.warnings.push_back(
+        {o.file, std::to_string(d.saturated) +
+                     " samples sit at an output's extreme in runs of three or more (saturated) and are "
+                     "not used (lines " +
+                     lines_text(d.saturated_lines, d.saturated) + ")"});
+  if (d.intervals.size() < static_cast<std::size_t>(needed))
+    throw InputError(o.file, 0, too_few_message(d, o.intervals, need));
   for (const auto& iv : d.intervals) {
     PositionSamples p;
     p.line = in.log->lines[static_cast<std::size_t>(iv.begin)];
@@ -136,8 +140,9 @@ void check_calibrate_request(const CalibrateRequest& o) {
   if (const std::string problem = magnitude_problem(o.magnitude); !problem.empty())
     throw UsageError("calibrate: --magnitude " + problem);
   if (o.model && model_name(*o.model) == "cubic12" && o.magnitude == "auto")
-    throw UsageError("calibrate: --magnitude auto does not work with --model cubic12: its cubic term is relative to "
-                     "|I|, which would be one more unknown; give |I|");
+    throw UsageError(
+        "calibrate: --magnitude auto does not work with --model cubic12: its cubic term is relative to "
+        "|I|, which would be one more unknown; give |I|");
   if (o.model && *o.model != ModelKind::paper9 && !o.regions.empty())
     throw UsageError("calibrate: --region (the advice on what to add) works with the paper9 model only");
   if (!(o.rate >= 0) || !std::isfinite(o.rate)) throw UsageError("calibrate: --rate must be a positive number");

@@ -48,9 +48,9 @@ Json std_from(const CalibrateResult& r) {
   for (std::size_t k = 0; k < ev.parameter_names.size(); ++k) {
     const auto i = static_cast<Eigen::Index>(k);
     const double p = a.predicted_std(i), q = a.achieved_std(i);
-    j[std::string(ev.parameter_names[k])] = std::isnan(p) && std::isnan(q) ? Json()
+    j[std::string(ev.parameter_names[k])] = std::isnan(p) && std::isnan(q)                ? Json()
                                             : std::isnan(q) || (!std::isnan(p) && p >= q) ? Json("predicted")
-                                                                                           : Json("achieved");
+                                                                                          : Json("achieved");
   }
   return j;
 }
@@ -97,7 +97,8 @@ Json suggested_json(const CalibrateResult& r) {
   Json list = Json::array();
   for (const auto& s : r.program.suggested) {
     Json errors = Json::object();
-    for (std::size_t g = 0; g < groups.size() && g < s.errors.size(); ++g) errors[groups[g]] = number_or_null(s.errors[g]);
+    for (std::size_t g = 0; g < groups.size() && g < s.errors.size(); ++g)
+      errors[groups[g]] = number_or_null(s.errors[g]);
     list.push_back(Json{{"position", triple(s.position)},
                         {std::string(criterion_name(r.request.criterion)), number_or_null(s.value)},
                         {"errors", errors}});

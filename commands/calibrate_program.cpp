@@ -1,13 +1,13 @@
 // The measured program of `calibrate` under the chosen model: its criteria and efficiency, and the
 // positions worth adding, never one twice.
 #include <cmath>
-#include <optional>
 #include <iomanip>
+#include <optional>
 #include <sstream>
 
 #include "commands/calibrate.hpp"
-#include "numeric/criteria/registry.hpp"
 #include "numeric/criteria/identifiability.hpp"
+#include "numeric/criteria/registry.hpp"
 #include "numeric/io/input_error.hpp"
 #include "numeric/region/augment.hpp"
 #include "numeric/region/region_limit.hpp"
@@ -33,8 +33,8 @@ Region region_of(const std::vector<std::string>& specs, Warnings& warnings) {
                          ", beyond what double precision resolves (1e14): bias and scale factor are confounded there "
                          "(a cap narrower than about 4 degrees)");
   if (condition > kIllConditioned)
-    warnings.push_back({"--region", "on " + region.text() + " even the uniform measure has condition number " + c.str() +
-                                        " (bias and scale factor are nearly confounded there)"});
+    warnings.push_back({"--region", "on " + region.text() + " even the uniform measure has condition number " +
+                                        c.str() + " (bias and scale factor are nearly confounded there)"});
   return region;
 }
 

@@ -49,15 +49,19 @@ const CommandTable& calibrate_table() {
       "identify: bias, scale factors, non-orthogonality with honest standard errors, the full correction, each "
       "position's residual, the program's quality and what to add",
       20,
-      {measurements, magnitude, model,
+      {measurements,
+       magnitude,
+       model,
        choice_option("--modulus", {"norm", "projection"},
                      "the modulus: norm (m_I, |measured|) or projection (m_II, onto the nominal direction)", "norm"),
        choice_option("--format", {"auto", "csv", "text"},
                      "the file: auto (text when the first line starts with a number), csv, or text (t ix iy iz, no "
                      "header)",
                      "auto"),
-       rate, still,
-       positive_option("--window", "the moving variance's window in a raw log", "seconds", shortest_text(d.window_seconds)),
+       rate,
+       still,
+       positive_option("--window", "the moving variance's window in a raw log", "seconds",
+                       shortest_text(d.window_seconds)),
        positive_option("--threshold-factor",
                        "static where the window's variance norm stays below this times the noise floor", "none",
                        shortest_text(d.threshold_factor)),
@@ -72,7 +76,8 @@ const CommandTable& calibrate_table() {
        named(integer_option("--suggest", 0, kMaxSuggestions, "how many positions to suggest adding (never one twice)",
                             "positions", "3"),
              "K"),
-       criterion_option(), region_option(),
+       criterion_option(),
+       region_option(),
        text_option("--program", "FILE",
                    "the program the data measured (a program or plan file): its '# region:' line judges the efficiency "
                    "and the suggestions (without it, the measurements file's own region line does)",
@@ -104,8 +109,10 @@ CalibrateRequest calibrate_request(const Values& v) {
   q.suggest = static_cast<int>(v.integer("--suggest"));
   q.criterion = criterion_of(v);
   q.program = v.text("--program");
-  if (!v.given("--region") && !v.given("--program") && !q.table) q.regions = regions_for({}, q.file, q.warnings);
-  else q.regions = regions_for(v.list("--region"), q.program, q.warnings);
+  if (!v.given("--region") && !v.given("--program") && !q.table)
+    q.regions = regions_for({}, q.file, q.warnings);
+  else
+    q.regions = regions_for(v.list("--region"), q.program, q.warnings);
   q.tolerance_deg = v.number("--tolerance");
   q.sensor = v.text("--sensor");
   if (const std::string units = v.text("--units"); !units.empty()) {

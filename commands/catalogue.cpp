@@ -18,7 +18,8 @@ const CommandTable& catalogue_table() {
 
 CatalogueResult catalogue() {
   CatalogueResult r;
-  for (const auto& e : scalcal::catalogue()) r.entries.push_back({e.name, e.description, e.source, evaluate(e.program)});
+  for (const auto& e : scalcal::catalogue())
+    r.entries.push_back({e.name, e.description, e.source, evaluate(e.program)});
   return r;
 }
 

@@ -14,8 +14,9 @@ const CommandTable& certify_table() {
       "(value enclosed), by interval arithmetic",
       44,
       {program_argument(), criterion_option(kRequired),
-       named(integer_option("--digits", 30, 400, "working precision of the interval arithmetic", "decimal digits", "60"),
-             "P"),
+       named(
+           integer_option("--digits", 30, 400, "working precision of the interval arithmetic", "decimal digits", "60"),
+           "P"),
        json_option("print one JSON object")}};
   return table;
 }

@@ -57,8 +57,7 @@ Option positive_option(std::string name, std::string what, std::string unit, std
   return o;
 }
 
-Option text_option(std::string name, std::string value_name, std::string what, std::string unit,
-                   std::string fallback) {
+Option text_option(std::string name, std::string value_name, std::string what, std::string unit, std::string fallback) {
   Option o;
   o.name = std::move(name);
   o.kind = OptionKind::text;
@@ -198,7 +197,7 @@ ModelKind model_of(const Values& v) {
 
 LocalSolver local_solver_of(const Values& v) {
   const std::string name = v.text("--local");
-  return name == "newton" ? LocalSolver::Newton
+  return name == "newton"  ? LocalSolver::Newton
          : name == "lbfgs" ? LocalSolver::Lbfgs
          : name == "ipopt" ? LocalSolver::Ipopt
                            : LocalSolver::Automatic;

@@ -20,18 +20,18 @@ inline constexpr IntegerRange kSeeds{0, 1LL << 62}, kStarts{1, 1000000}, kThread
 std::vector<std::string> criterion_names();  // the registry's, in its order
 std::vector<std::string> model_names();
 std::vector<std::string> local_solver_names();  // auto, newton, lbfgs, ipopt
-std::string criterion_names_text();              // "D, A, E, S"
-std::string shortest_text(double x);             // the shortest text that reads back to x ("0.5")
+std::string criterion_names_text();             // "D, A, E, S"
+std::string shortest_text(double x);            // the shortest text that reads back to x ("0.5")
 
 // --criterion: every registered criterion, with its normalised form in the help ("D = N^9 det K").
 Option criterion_option(const std::string& fallback = "D");
-Option model_option();    // --model, default paper9
-Option region_option();   // --region SPEC, repeatable (their union)
+Option model_option();      // --model, default paper9
+Option region_option();     // --region SPEC, repeatable (their union)
 Option tolerance_option();  // --tolerance DEG: how far outside the region a position still counts as inside
-Option seed_option();     // --seed, default 1
-Option starts_option();   // --starts, default adaptive
-Option threads_option();  // --threads, default 0 = all cores
-Option local_option();    // --local auto|newton|lbfgs|ipopt
+Option seed_option();       // --seed, default 1
+Option starts_option();     // --starts, default adaptive
+Option threads_option();    // --threads, default 0 = all cores
+Option local_option();      // --local auto|newton|lbfgs|ipopt
 Option program_argument(const std::string& what = "");  // PROGRAM: a catalogue name or a CSV file
 Option json_option(const std::string& what);            // --json (the CLI's output form)
 Option out_option(const std::string& what, const std::string& value_name = "FILE");  // --out (the CLI writes it)
@@ -46,7 +46,8 @@ Option text_option(std::string name, std::string value_name, std::string what, s
 Option choice_option(std::string name, std::vector<std::string> choices, std::string what, std::string fallback);
 Option flag_option(std::string name, std::string what);
 Option named(Option option, std::string value_name);
-Option positions_option(Option option);  // a program option: Python may give an (N, 3) array too  // the option shown as `--name VALUE_NAME` in usage lines
+Option positions_option(Option option);  // a program option: Python may give an (N, 3) array too  // the option shown
+                                         // as `--name VALUE_NAME` in usage lines
 
 CriterionKind criterion_of(const Values& values, const std::string& option = "--criterion");
 ModelKind model_of(const Values& values);

@@ -9,9 +9,9 @@
 #include <nlohmann/json.hpp>
 
 #include "commands/common_options.hpp"
+#include "numeric/calibration/raw_log.hpp"
 #include "numeric/io/csv_table.hpp"
 #include "numeric/io/input_error.hpp"
-#include "numeric/calibration/raw_log.hpp"
 
 namespace scalcal::commands {
 namespace {
@@ -37,8 +37,8 @@ std::string distrust(const nlohmann::json& j, const FullCorrection& c) {
   const double condition = svd.singularValues()(0) / svd.singularValues()(2);
   if (!(condition <= kCorrectionCondition)) {
     std::ostringstream s;
-    s << std::setprecision(3) << "its matrix is ill-conditioned (condition " << condition << " > " << kCorrectionCondition
-      << ": the axes' gains differ that much, or two axes are nearly parallel)";
+    s << std::setprecision(3) << "its matrix is ill-conditioned (condition " << condition << " > "
+      << kCorrectionCondition << ": the axes' gains differ that much, or two axes are nearly parallel)";
     return s.str();
   }
   return "";
@@ -60,10 +60,13 @@ FullCorrection read_calibration(const std::string& file, bool force, Warnings& w
 FullCorrection calibration_of(const Json& document, const std::string& file, bool force, Warnings& warnings) {
   const nlohmann::json j = nlohmann::json::parse(document.dump(-1, ' ', false, Json::error_handler_t::replace));
   if (j.is_object() && j.contains("model") && j.contains("offset") && (!j.contains("matrix") || j["matrix"].is_null()))
-    throw InputError(file, 0, "the " + j["model"].dump() + " calibration has no linear correction (its cubic term "
-                              "makes the correction nonlinear); `correct` applies linear ones only");
+    throw InputError(file, 0,
+                     "the " + j["model"].dump() +
+                         " calibration has no linear correction (its cubic term "
+                         "makes the correction nonlinear); `correct` applies linear ones only");
   if (!j.is_object() || !j.contains("offset") || !j.contains("matrix"))
-    throw InputError(file, 0, "needs the keys 'offset' and 'matrix' (write it with `scalcal calibrate ... --out FILE`)");
+    throw InputError(file, 0,
+                     "needs the keys 'offset' and 'matrix' (write it with `scalcal calibrate ... --out FILE`)");
   const auto& o = j["offset"];
   const auto& m = j["matrix"];
   if (!o.is_array() || o.size() != 3) throw InputError(file, 0, "'offset' must be three numbers");
@@ -100,12 +103,13 @@ CsvTable read_data(const CorrectRequest& q) {
 }  // namespace
 
 const CommandTable& correct_table() {
-  Option calibration = text_option("--calibration", "CAL.json", "a calibration written by `scalcal calibrate ... --out CAL.json`",
-                                   "file path", kRequired);
+  Option calibration =
+      text_option("--calibration", "CAL.json", "a calibration written by `scalcal calibrate ... --out CAL.json`",
+                  "file path", kRequired);
   calibration.takes_document = true;
-  Option measurements = text_option("--measurements", "FILE",
-                                    "raw data: CSV with ix,iy,iz (and a time column or position, kept), or text t ix iy iz",
-                                    "file path", kRequired);
+  Option measurements = text_option(
+      "--measurements", "FILE", "raw data: CSV with ix,iy,iz (and a time column or position, kept), or text t ix iy iz",
+      "file path", kRequired);
   measurements.takes_columns = true;
   static const CommandTable table{
       "correct",
@@ -113,9 +117,11 @@ const CommandTable& correct_table() {
       21,
       {calibration, measurements,
        choice_option("--format", {"auto", "csv", "text"},
-                     "the file: auto (text when the first line starts with a number), csv, or text (t ix iy iz)", "auto"),
-       flag_option("--force",
-                   "apply a calibration that would be refused (its fit did not converge, or its matrix is ill-conditioned)"),
+                     "the file: auto (text when the first line starts with a number), csv, or text (t ix iy iz)",
+                     "auto"),
+       flag_option(
+           "--force",
+           "apply a calibration that would be refused (its fit did not converge, or its matrix is ill-conditioned)"),
        out_option("write the corrected CSV there instead of to standard output")}};
   return table;
 }
@@ -148,8 +154,9 @@ Json to_json(const CorrectResult& r) {
 
 CorrectResult correct(const CorrectRequest& q) {
   CorrectResult out;
-  out.correction = q.calibration_document ? calibration_of(*q.calibration_document, q.calibration, q.force, out.warnings)
-                                          : read_calibration(q.calibration, q.force, out.warnings);
+  out.correction = q.calibration_document
+                       ? calibration_of(*q.calibration_document, q.calibration, q.force, out.warnings)
+                       : read_calibration(q.calibration, q.force, out.warnings);
   const CsvTable table = read_data(q);
   for (const char* col : {"ix", "iy", "iz"})
     if (!table.has(col)) throw InputError(q.file, 1, std::string("missing column '") + col + "' (need ix,iy,iz)");

@@ -12,8 +12,8 @@
 #include "commands/option_table.hpp"
 #include "commands/values.hpp"
 #include "commands/warning.hpp"
-#include "numeric/io/csv_table.hpp"
 #include "numeric/calibration/full_correction.hpp"
+#include "numeric/io/csv_table.hpp"
 
 namespace scalcal::commands {
 
@@ -22,10 +22,10 @@ namespace scalcal::commands {
 inline constexpr double kCorrectionCondition = 100;
 
 struct CorrectRequest {
-  std::string calibration;   // the file written by `calibrate --out`
-  std::string file;          // the raw data
-  std::string format = "auto";  // auto, csv or text
-  bool force = false;        // apply a calibration that would be refused, with a warning
+  std::string calibration;                   // the file written by `calibrate --out`
+  std::string file;                          // the raw data
+  std::string format = "auto";               // auto, csv or text
+  bool force = false;                        // apply a calibration that would be refused, with a warning
   std::optional<Json> calibration_document;  // the calibration given as an object (Python), not read
   std::optional<CsvTable> table;             // the raw data given as columns (Python), not read
 };

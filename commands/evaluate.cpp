@@ -50,7 +50,8 @@ EvaluateResult evaluate(const EvaluateRequest& q, const Progress& progress) {
   refuse_outside(q.name, q.program, *r.region, q.tolerance_deg);
   r.columns = region_columns(*r.region, q.program);
   for (auto c : kCriteria) {
-    if (progress) progress("the " + std::string(criterion_name(c)) + " limit on " + r.region->text(), c.index(), kCriterionCount);
+    if (progress)
+      progress("the " + std::string(criterion_name(c)) + " limit on " + r.region->text(), c.index(), kCriterionCount);
     try {
       r.efficiency[static_cast<std::size_t>(c.index())] =
           efficiency(c, limit_value(c, *r.region), r.evaluation.value(c), r.evaluation.parameters);

@@ -8,8 +8,8 @@
 
 #include "commands/json.hpp"
 #include "commands/option_table.hpp"
-#include "commands/values.hpp"
 #include "commands/progress.hpp"
+#include "commands/values.hpp"
 #include "commands/warning.hpp"
 #include "numeric/criteria/model_evaluation.hpp"
 #include "numeric/program/program_csv.hpp"

@@ -15,8 +15,8 @@ namespace scalcal::commands {
 namespace {
 
 // The metadata a calibration file carries (calibrate --out), kept in the json target.
-constexpr const char* kKept[] = {"format_version", "created", "tool", "sensor", "units", "magnitude",
-                                 "model", "region", "converged"};
+constexpr const char* kKept[] = {"format_version", "created", "tool",   "sensor",   "units",
+                                 "magnitude",      "model",   "region", "converged"};
 
 void write_json(const ExportRequest& q, ExportResult& r) {
   Json doc = Json::object();
@@ -32,7 +32,8 @@ void write_json(const ExportRequest& q, ExportResult& r) {
   const Vec3& o = r.correction.offset;
   const Mat3& C = r.correction.matrix;
   out["offset"] = Json{o(0), o(1), o(2)};
-  out["matrix"] = Json{Json{C(0, 0), C(0, 1), C(0, 2)}, Json{C(1, 0), C(1, 1), C(1, 2)}, Json{C(2, 0), C(2, 1), C(2, 2)}};
+  out["matrix"] =
+      Json{Json{C(0, 0), C(0, 1), C(0, 2)}, Json{C(1, 0), C(1, 1), C(1, 2)}, Json{C(2, 0), C(2, 1), C(2, 2)}};
   r.text = json_text(out, 2) + "\n";
 }
 
@@ -54,9 +55,10 @@ const CommandTable& export_table() {
                      "px4, ardupilot: the accelerometer's parameters (offsets and scales: the non-orthogonality is "
                      "dropped) or the magnetometer's (offsets and a symmetric matrix)",
                      "accel"),
-       named(integer_option("--instance", 0, 3, "px4, ardupilot: which sensor (px4 CAL_ACC0.., ardupilot INS_ACC, INS_ACC2..)",
-                            "index", "0"),
-             "N"),
+       named(
+           integer_option("--instance", 0, 3,
+                          "px4, ardupilot: which sensor (px4 CAL_ACC0.., ardupilot INS_ACC, INS_ACC2..)", "index", "0"),
+           "N"),
        flag_option("--force", "export a calibration that correct would refuse (not converged, ill-conditioned)"),
        out_option("write the target's file here instead of standard output"),
        json_option("print one JSON object (format, instrument, rotation_rad, dropped_relative, text)")}};
@@ -79,18 +81,26 @@ ExportResult export_calibration(const ExportRequest& q) {
   if (q.instrument != "accel" && q.format != "px4" && q.format != "ardupilot" && q.format != "kalibr")
     throw UsageError("--instrument belongs to --format px4 and ardupilot");
   r.correction = read_calibration(q.calibration, q.force, r.warnings);
-  if (q.format == "json") write_json(q, r);
-  else if (q.format == "magcal") write_magcal(q, r);
-  else if (q.format == "imu_tk") write_imu_tk(q, r);
-  else if (q.format == "kalibr") write_kalibr(q, r);
-  else if (q.format == "px4") write_px4(q, r);
-  else write_ardupilot(q, r);
+  if (q.format == "json")
+    write_json(q, r);
+  else if (q.format == "magcal")
+    write_magcal(q, r);
+  else if (q.format == "imu_tk")
+    write_imu_tk(q, r);
+  else if (q.format == "kalibr")
+    write_kalibr(q, r);
+  else if (q.format == "px4")
+    write_px4(q, r);
+  else
+    write_ardupilot(q, r);
   char share[64];
   if (r.dropped_relative > 1e-7) {  // beyond a float parameter's precision
     std::snprintf(share, sizeof share, "%.2g", r.dropped_relative);
-    r.warnings.push_back({q.calibration, std::string("--format ") + q.format +
-                                             " has no non-orthogonality terms for an accelerometer: dropping them moves a "
-                                             "corrected vector by up to " + share + " of its length"});
+    r.warnings.push_back(
+        {q.calibration, std::string("--format ") + q.format +
+                            " has no non-orthogonality terms for an accelerometer: dropping them moves a "
+                            "corrected vector by up to " +
+                            share + " of its length"});
   }
   return r;
 }

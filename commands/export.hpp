@@ -32,11 +32,11 @@
 namespace scalcal::commands {
 
 struct ExportRequest {
-  std::string calibration;         // the file written by calibrate --out
-  std::string format = "json";     // json, magcal, imu_tk, kalibr, px4, ardupilot
+  std::string calibration;           // the file written by calibrate --out
+  std::string format = "json";       // json, magcal, imu_tk, kalibr, px4, ardupilot
   std::string instrument = "accel";  // px4, ardupilot: accel or mag
-  int instance = 0;                // px4 CAL_ACC0, ardupilot INS_ACC (0), INS_ACC2 (1), ...
-  bool force = false;              // export a calibration correct would refuse, with a warning
+  int instance = 0;                  // px4 CAL_ACC0, ardupilot INS_ACC (0), INS_ACC2 (1), ...
+  bool force = false;                // export a calibration correct would refuse, with a warning
 };
 
 struct ExportResult {

@@ -28,7 +28,8 @@ double rotation_angle(const Mat3& R) { return std::acos(std::clamp((R.trace() - 
 const char* kAxes[3] = {"X", "Y", "Z"};
 
 void require_accel(const ExportRequest& q, const char* format) {
-  if (q.instrument != "accel") throw UsageError(std::string("--format ") + format + " has an accelerometer model only (--instrument accel)");
+  if (q.instrument != "accel")
+    throw UsageError(std::string("--format ") + format + " has an accelerometer model only (--instrument accel)");
 }
 
 // The diagonal-only forms: the largest |C_off v| / |C v| over directions v (spectral norms).
@@ -49,9 +50,10 @@ Mat3 symmetric_factor(const Mat3& C) {
 void write_magcal(const ExportRequest&, ExportResult& r) {
   const Mat3& C = r.correction.matrix;
   const Vec3& o = r.correction.offset;
-  std::string s = "% scalcal export --format magcal: MATLAB magcal's convention for rows d of raw data,\n"
-                  "% corrected = (d - b) * A; A = matrix' and b = offset' of physical = matrix (raw - offset).\n"
-                  "A = [";
+  std::string s =
+      "% scalcal export --format magcal: MATLAB magcal's convention for rows d of raw data,\n"
+      "% corrected = (d - b) * A; A = matrix' and b = offset' of physical = matrix (raw - offset).\n"
+      "A = [";
   for (int i = 0; i < 3; ++i)
     s += exact(C(0, i)) + " " + exact(C(1, i)) + " " + exact(C(2, i)) + (i < 2 ? "; " : "];\n");
   s += "b = [" + exact(o(0)) + " " + exact(o(1)) + " " + exact(o(2)) + "];\n";
@@ -85,11 +87,14 @@ void write_kalibr(const ExportRequest& q, ExportResult& r) {
   M = M * sign.asDiagonal();
   R = sign.asDiagonal() * R;
   r.rotation_rad = rotation_angle(R);
-  const auto row = [](const Mat3& m, int i) { return "[" + exact(m(i, 0)) + ", " + exact(m(i, 1)) + ", " + exact(m(i, 2)) + "]"; };
-  std::string s = "# scalcal export --format kalibr: kalibr's scale-misalignment accelerometer model,\n"
-                  "# raw = M a + b with M lower triangular. a = R physical, where physical = matrix (raw - offset)\n"
-                  "# is scalcal's correction and R a rotation (kalibr keeps it in the IMU's orientation).\n"
-                  "accelerometers:\n  model: scale-misalignment\n  M:\n";
+  const auto row = [](const Mat3& m, int i) {
+    return "[" + exact(m(i, 0)) + ", " + exact(m(i, 1)) + ", " + exact(m(i, 2)) + "]";
+  };
+  std::string s =
+      "# scalcal export --format kalibr: kalibr's scale-misalignment accelerometer model,\n"
+      "# raw = M a + b with M lower triangular. a = R physical, where physical = matrix (raw - offset)\n"
+      "# is scalcal's correction and R a rotation (kalibr keeps it in the IMU's orientation).\n"
+      "accelerometers:\n  model: scale-misalignment\n  M:\n";
   for (int i = 0; i < 3; ++i) s += "    - " + row(M, i) + "\n";
   s += "  b: [" + exact(r.correction.offset(0)) + ", " + exact(r.correction.offset(1)) + ", " +
        exact(r.correction.offset(2)) + "]\n  R:\n";
@@ -137,8 +142,8 @@ void write_ardupilot(const ExportRequest& q, ExportResult& r) {
   } else {
     const Mat3 S = symmetric_factor(C);
     r.rotation_rad = rotation_angle(C * S.inverse());
-    s += "# corrected = M (raw + COMPASS_OFS" + n + "_?), M symmetric: diagonal COMPASS_DIA" + n + "_?, COMPASS_ODI" + n +
-         "_X = M01, _Y = M02, _Z = M12\n";
+    s += "# corrected = M (raw + COMPASS_OFS" + n + "_?), M symmetric: diagonal COMPASS_DIA" + n + "_?, COMPASS_ODI" +
+         n + "_X = M01, _Y = M02, _Z = M12\n";
     for (int k = 0; k < 3; ++k) param("COMPASS_OFS" + n + "_" + kAxes[k], -o(k));
     for (int k = 0; k < 3; ++k) param("COMPASS_DIA" + n + "_" + kAxes[k], S(k, k));
     param("COMPASS_ODI" + n + "_X", S(0, 1));

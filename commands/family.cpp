@@ -22,7 +22,8 @@ std::string family_names() {
     u += " " + f.name;
     if (!f.params.empty()) {
       u += "[";
-      for (std::size_t i = 0; i < f.params.size(); ++i) u += (i ? "," : "") + f.params[i].key + "=" + f.params[i].fallback;
+      for (std::size_t i = 0; i < f.params.size(); ++i)
+        u += (i ? "," : "") + f.params[i].key + "=" + f.params[i].fallback;
       u += "]";
     }
   }
@@ -33,9 +34,10 @@ symbolic::ExactCriteria exact_of(const FamilyRequest& q, const symbolic::FamilyI
   const bool paper9 = q.model == ModelKind::paper9;
   const int P = model_parameters(q.model);
   if (!paper9 && !inst.moment)
-    throw InputError(q.name, 0, "the family gives only the paper's H^T H (no moment function), so --model " +
-                                    std::string(model_name(q.model)) +
-                                    " cannot be evaluated: give FamilyInstance a MomentFunction");
+    throw InputError(q.name, 0,
+                     "the family gives only the paper's H^T H (no moment function), so --model " +
+                         std::string(model_name(q.model)) +
+                         " cannot be evaluated: give FamilyInstance a MomentFunction");
   try {
     return paper9 ? symbolic::exact_criteria(inst.M, inst.N)
                   : symbolic::exact_criteria(symbolic::model_moment_matrix(q.model, inst.moment), inst.N,
@@ -48,8 +50,9 @@ symbolic::ExactCriteria exact_of(const FamilyRequest& q, const symbolic::FamilyI
   } catch (const InputError&) {
     throw;
   } catch (const std::runtime_error& e) {  // GiNaC's: e.g. a nested radical under a symbolic rotation
-    throw InputError(q.name, 0, std::string("no closed form for these symbolic parameters (GiNaC: ") + e.what() +
-                                    "); give numbers instead");
+    throw InputError(
+        q.name, 0,
+        std::string("no closed form for these symbolic parameters (GiNaC: ") + e.what() + "); give numbers instead");
   }
 }
 
@@ -70,11 +73,11 @@ const CommandTable& family_table() {
                               "positions for multiplicities, degrees for a phase");
   params.kind = OptionKind::repeated;
   params.fallback_text = "the family's own, listed above";
-  static const CommandTable table{
-      "family",
-      "exact closed forms of " + criterion_names_text() + " and the thetas for a program family; symbolic values allowed",
-      60,
-      {name, params, model_option(), json_option("print one JSON object")}};
+  static const CommandTable table{"family",
+                                  "exact closed forms of " + criterion_names_text() +
+                                      " and the thetas for a program family; symbolic values allowed",
+                                  60,
+                                  {name, params, model_option(), json_option("print one JSON object")}};
   return table;
 }
 
@@ -88,8 +91,9 @@ FamilyResult family(const FamilyRequest& q) {
     inst = fam.instance(params);
   } catch (const std::runtime_error& e) {
     if (dynamic_cast<const InputError*>(&e)) throw;
-    throw InputError(q.name, 0, std::string("no closed form for these symbolic parameters (GiNaC: ") + e.what() +
-                                    "); give numbers instead");
+    throw InputError(
+        q.name, 0,
+        std::string("no closed form for these symbolic parameters (GiNaC: ") + e.what() + "); give numbers instead");
   }
   const symbolic::ExactCriteria c = exact_of(q, inst);
   FamilyResult r;
@@ -107,9 +111,9 @@ FamilyResult family(const FamilyRequest& q) {
     r.rows.push_back(c.of(k) ? row_of(std::string(criterion_name(k)), *c.of(k))
                              : ExactRow{std::string(criterion_name(k)), false, std::string(), std::nullopt});
   const std::pair<const char*, const symbolic::ExactValue*> thetas[] = {{"theta_bias", &c.theta_bias},
-                                                                         {"theta_scale", &c.theta_scale},
-                                                                         {"theta_nonorth", &c.theta_nonorth},
-                                                                         {"theta_cubic", &c.theta_cubic}};
+                                                                        {"theta_scale", &c.theta_scale},
+                                                                        {"theta_nonorth", &c.theta_nonorth},
+                                                                        {"theta_cubic", &c.theta_cubic}};
   for (const auto& [key, v] : thetas)
     if (!v->candidates.empty()) r.rows.push_back(row_of(key, *v));  // only the groups the model has
   return r;
@@ -121,7 +125,7 @@ Json to_json(const FamilyResult& r) {
   // positions is always the exact text; positions_value the number, null when N is symbolic.
   Json out{{"family", r.family}, {"params", ps}, {"positions", r.positions}};
   if (r.model != ModelKind::paper9) out["model"] = std::string(model_name(r.model));
-  out["positions_value"] = !r.positions_value ? Json(nullptr)
+  out["positions_value"] = !r.positions_value    ? Json(nullptr)
                            : r.positions_integer ? Json(static_cast<long>(*r.positions_value))
                                                  : Json(*r.positions_value);
   for (const auto& row : r.rows) out[row.key] = row.number ? Json(*row.number) : Json(nullptr);

@@ -23,7 +23,7 @@ struct FamilyRequest {
 
 // One criterion or theta: its closed form (or why there is none) and its number when it has one.
 struct ExactRow {
-  std::string key;   // "D", ..., "theta_bias"
+  std::string key;    // "D", ..., "theta_bias"
   bool exact = true;  // false: no closed form (an eigenvalue of an irregular block)
   std::string text;   // canonical text, "max(c1, c2)" while symbols leave the order open
   std::optional<double> number;
@@ -33,8 +33,8 @@ struct FamilyResult {
   std::string family;
   std::vector<std::pair<std::string, std::string>> params;  // key, canonical text
   ModelKind model = ModelKind::paper9;
-  std::string positions;                 // N, exact text
-  std::optional<double> positions_value; // N as a number; none when symbolic
+  std::string positions;                  // N, exact text
+  std::optional<double> positions_value;  // N as a number; none when symbolic
   bool positions_integer = false;
   std::vector<ExactRow> rows;  // every registered criterion with a closed form, then the model's thetas
   Warnings warnings;

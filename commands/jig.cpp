@@ -120,8 +120,9 @@ const CommandTable& jig_table() {
       "the best way to mount the meter in a printable jig, proven where the closed forms decide",
       62,
       {name, criterion_option(),
-       named(integer_option("--starts", 1, 100000, "starts of the search over rotations (the first is the default mounting)",
-                      "starts", "64"), "K"),
+       named(integer_option("--starts", 1, 100000,
+                            "starts of the search over rotations (the first is the default mounting)", "starts", "64"),
+             "K"),
        seed_option(), json_option("print one JSON object")}};
   return table;
 }
@@ -141,8 +142,8 @@ JigResult jig(const JigRequest& q, const Progress& progress) {
   r.faces = normals.size();
   r.before = evaluate(normals);
   if (!r.before.full_rank())
-    throw InputError(family.name, 0, "rank-deficient in every orientation (a rotation keeps the rank): " +
-                                         rank_deficiency(r.before));
+    throw InputError(family.name, 0,
+                     "rank-deficient in every orientation (a rotation keeps the rank): " + rank_deficiency(r.before));
   const symbolic::JigAnalysis facts = symbolic::analyse_jig(family.points(params));
   const symbolic::JigLimitClaim& claim = facts.claim[static_cast<std::size_t>(q.criterion.index())];
   r.claim_status = claim.status, r.claim_reason = claim.reason, r.claim_proven = claim.proven;
@@ -175,7 +176,8 @@ JigResult jig(const JigRequest& q, const Progress& progress) {
 
 Json to_json(const JigResult& r) {
   Json rows = Json::array();
-  for (int i = 0; i < 3; ++i) rows.push_back(Json::array({r.orientation(i, 0), r.orientation(i, 1), r.orientation(i, 2)}));
+  for (int i = 0; i < 3; ++i)
+    rows.push_back(Json::array({r.orientation(i, 0), r.orientation(i, 1), r.orientation(i, 2)}));
   const auto criteria = [](const Evaluation& ev) {
     Json j = Json::object();
     add_criteria(j, erase_model(ev));

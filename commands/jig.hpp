@@ -30,11 +30,11 @@ struct JigResult {
   int faces = 0;
   Eigen::Matrix3d orientation = Eigen::Matrix3d::Identity();  // the meter's axes (rows) in jig coordinates
   double value = 0, value_default = 0;
-  Program program;             // the normals at the best mounting
-  std::string status, method;  // "proven" or "numerical", and how
-  bool invariant = false;      // the criterion is the same in every orientation
-  int starts = 0, hits = 0;    // the search's, when there was one
-  std::string exact;           // the exact value when known ("" otherwise)
+  Program program;                // the normals at the best mounting
+  std::string status, method;     // "proven" or "numerical", and how
+  bool invariant = false;         // the criterion is the same in every orientation
+  int starts = 0, hits = 0;       // the search's, when there was one
+  std::string exact;              // the exact value when known ("" otherwise)
   std::string orientation_exact;  // the exact rotation found near the numerical one ("" if none)
   bool at_limit = false;
   std::optional<double> limit;  // none: no known limit for the criterion

@@ -23,21 +23,21 @@ struct LimitsRequest {
 struct SphereLimit {
   std::string exact;  // canonical text, "61509375/4"
   double value = 0;
-  std::string x4, x2y2, x6;  // E[x^4], E[x^2 y^2], E[x^6] as exact text ("" when not stated)
-  std::optional<double> b;   // E[x^2 y^2] as a number
+  std::string x4, x2y2, x6;              // E[x^4], E[x^2 y^2], E[x^6] as exact text ("" when not stated)
+  std::optional<double> b;               // E[x^2 y^2] as a number
   std::string measure, attained, proof;  // a model's own statement (empty for the paper's model)
 };
 
 struct CriterionLimits {
   CriterionKind criterion = CriterionKind::D;
-  std::optional<SphereLimit> sphere;  // on the sphere (none: no known limit)
-  std::optional<RegionLimit> region;  // on the region, when one was given
-  std::optional<double> sphere_value; // the sphere's limit the region's is compared with
+  std::optional<SphereLimit> sphere;   // on the sphere (none: no known limit)
+  std::optional<RegionLimit> region;   // on the region, when one was given
+  std::optional<double> sphere_value;  // the sphere's limit the region's is compared with
 };
 
 struct LimitsResult {
   ModelKind model = ModelKind::paper9;
-  std::optional<Region> region;  // when the request names one other than the sphere
+  std::optional<Region> region;           // when the request names one other than the sphere
   std::vector<CriterionLimits> criteria;  // every registered criterion, in the registry's order
   Warnings warnings;
 };

@@ -45,7 +45,8 @@ void start_from(const OptimizeRequest& q, SynthesisOptions& o) {
   // report an infinite value as its optimum.
   const ModelEvaluation ev = evaluate(o.model, start);
   if (!ev.full_rank())
-    throw InputError(display_name(q.from), 0, rank_deficiency(ev) + "; --from needs a start of full rank (or give --positions N alone)");
+    throw InputError(display_name(q.from), 0,
+                     rank_deficiency(ev) + "; --from needs a start of full rank (or give --positions N alone)");
   o.positions = start.size();
   o.first_start = std::move(start);
 }
@@ -58,8 +59,9 @@ const CommandTable& optimize_table() {
       "the optimal program for a criterion (Newton/Ipopt multistart, optional high-precision polish)",
       40,
       {named(integer_option("--positions", kOptimizePositions.lo, kOptimizePositions.hi,
-                      "number of positions N (at least the model's number of parameters)", "positions", "0",
-                      "required, unless --from gives it"), "N"),
+                            "number of positions N (at least the model's number of parameters)", "positions", "0",
+                            "required, unless --from gives it"),
+             "N"),
        positions_option(text_option("--from", "PROGRAM",
                                     "start 0 of the multistart is this program (a catalogue name, a family member "
                                     "such as jig:cuboctahedron, or a CSV file); N is its size",
@@ -71,8 +73,10 @@ const CommandTable& optimize_table() {
                            "degrees", "0"),
              "DEG"),
        starts_option(), seed_option(), threads_option(),
-       named(integer_option("--digits", kPolishDigits.lo, kPolishDigits.hi, "polish the optimum to this many digits in MPFR",
-                      "significant digits", "0", "none (no polish)"), "P"),
+       named(integer_option("--digits", kPolishDigits.lo, kPolishDigits.hi,
+                            "polish the optimum to this many digits in MPFR", "significant digits", "0",
+                            "none (no polish)"),
+             "P"),
        local_option(),
        out_option("write the program (the polished one with --digits) as CSV x,y,z,alpha1_deg,alpha2_deg, after a "
                   "'# region:' line with --region"),
@@ -116,7 +120,8 @@ OptimizeResult optimize(const OptimizeRequest& q, const Progress& progress) {
   if (restricted && q.digits > 0)
     throw InputError("--digits", 0,
                      "the polish solves the unconstrained optimality conditions; it cannot keep positions inside "
-                     "--region " + r.region->text());
+                     "--region " +
+                         r.region->text());
   r.synthesis = restricted ? synthesize_on_region(opt, r.designed_on ? *r.designed_on : *r.region) : synthesize(opt);
   if (!r.synthesis.summary.converged())
     r.warnings.push_back({"", r.synthesis.summary.message + " (" + r.synthesis.local_solver + " multistart)"});
@@ -136,7 +141,8 @@ OptimizeResult optimize(const OptimizeRequest& q, const Progress& progress) {
     if (opt.model != ModelKind::paper9) {
       if (const auto l = stated_limit(opt.model, criterion_name(opt.criterion))) r.limit = l->value;
     } else if (r.region) {
-      if (progress) progress("the " + std::string(criterion_name(opt.criterion)) + " limit on " + r.region->text(), 0, 0);
+      if (progress)
+        progress("the " + std::string(criterion_name(opt.criterion)) + " limit on " + r.region->text(), 0, 0);
       r.limit = limit_value(opt.criterion, *r.region);
     }
   } catch (const std::invalid_argument&) {  // no known limit for this criterion

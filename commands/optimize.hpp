@@ -9,8 +9,8 @@
 #include "commands/json.hpp"
 #include "commands/progress.hpp"
 #include "commands/warning.hpp"
-#include "numeric/program/program_csv.hpp"
 #include "numeric/polish/polish.hpp"
+#include "numeric/program/program_csv.hpp"
 #include "numeric/region/region.hpp"
 #include "numeric/synthesis/multistart.hpp"
 
@@ -31,10 +31,10 @@ struct OptimizeResult {
   int positions = 0;
   SynthesisResult synthesis;
   std::optional<PolishResult> polished;
-  Program program;               // the best: the polished one when there is a polish
-  std::optional<Region> region;  // with --region (as given: the limit and the program file's region line)
+  Program program;                    // the best: the polished one when there is a polish
+  std::optional<Region> region;       // with --region (as given: the limit and the program file's region line)
   std::optional<Region> designed_on;  // with --margin: the region inset by the margin, where positions lie
-  std::optional<double> limit;   // the region's, or the model's stated limit; none when unknown
+  std::optional<double> limit;        // the region's, or the model's stated limit; none when unknown
   std::optional<double> efficiency;
   std::vector<ExtraColumn> columns;  // for the program file on a one-zone region
   Warnings warnings;

@@ -51,10 +51,10 @@ std::string Option::python_name() const {
     out += c == '-' ? '_' : static_cast<char>(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
   }
   // A Python keyword takes a trailing underscore, as PEP 8 has it: --from is from_.
-  static const char* const keywords[] = {"and", "as", "assert", "async", "await", "break", "class", "continue",
-                                         "def", "del", "elif", "else", "except", "finally", "for", "from",
-                                         "global", "if", "import", "in", "is", "lambda", "nonlocal", "not", "or",
-                                         "pass", "raise", "return", "try", "while", "with", "yield"};
+  static const char* const keywords[] = {
+      "and",      "as",     "assert",  "async", "await", "break",  "class", "continue", "def",  "del",  "elif",
+      "else",     "except", "finally", "for",   "from",  "global", "if",    "import",   "in",   "is",   "lambda",
+      "nonlocal", "not",    "or",      "pass",  "raise", "return", "try",   "while",    "with", "yield"};
   for (const char* k : keywords)
     if (out == k) return out + "_";
   return out;
@@ -107,8 +107,12 @@ std::string CommandTable::usage() const {
   for (const auto& o : options) {
     std::string piece;
     switch (o.kind) {
-      case OptionKind::positional: piece = o.name; break;
-      case OptionKind::flag: piece = o.name; break;
+      case OptionKind::positional:
+        piece = o.name;
+        break;
+      case OptionKind::flag:
+        piece = o.name;
+        break;
       case OptionKind::choice: {
         std::string names;
         for (const auto& c : o.choices) names += (names.empty() ? "" : "|") + c;
@@ -121,11 +125,15 @@ std::string CommandTable::usage() const {
           break;
         }
         piece = o.name + " " +
-                (o.value_name.empty() ? (o.kind == OptionKind::integer ? "INT" : o.kind == OptionKind::number ? "NUM" : "TEXT")
+                (o.value_name.empty() ? (o.kind == OptionKind::integer  ? "INT"
+                                         : o.kind == OptionKind::number ? "NUM"
+                                                                        : "TEXT")
                                       : o.value_name);
     }
-    if (o.kind == OptionKind::repeated) piece = "[" + piece + "]...";
-    else if (!o.required()) piece = "[" + piece + "]";
+    if (o.kind == OptionKind::repeated)
+      piece = "[" + piece + "]...";
+    else if (!o.required())
+      piece = "[" + piece + "]";
     u += " " + piece;
   }
   return u;

@@ -28,14 +28,14 @@ struct Option {
   std::string value_name;  // shown in usage lines: N, FILE, SPEC (integer: INT, number: NUM by default)
   std::string what;        // what it sets, one line
   std::string unit = "none";
-  std::string fallback;    // the default as the user would write it ("" : none); kRequired: required
+  std::string fallback;       // the default as the user would write it ("" : none); kRequired: required
   std::string fallback_text;  // how --help shows the default when it is not a value ("0 = all cores")
   long long lo = 0, hi = 0;   // integer
   double low = -std::numeric_limits<double>::max(), high = std::numeric_limits<double>::max();
-  bool positive = false;      // number: x > 0
+  bool positive = false;  // number: x > 0
   std::vector<std::string> choices;
   std::function<std::string(const std::string&)> why_bad;  // text: the reason to refuse it, or ""
-  bool cli_only = false;  // how the CLI presents a result (--json, --out): not a Python argument
+  bool cli_only = false;         // how the CLI presents a result (--json, --out): not a Python argument
   bool takes_positions = false;  // a program: Python may also give an (N, 3) array of directions
   bool takes_columns = false;    // a data file: Python may also give its columns (a mapping name -> array)
   bool takes_document = false;   // a JSON file: Python may also give the object itself (a dict)

@@ -51,8 +51,10 @@ std::vector<PlannedStep> on_grid(const PlanRequest& q, const Bench& bench, const
     if (!rounded)
       throw InputError(q.name, 0,
                        "position " + std::to_string(s.position + 1) + ": no setting of " + bench.text() + " on its " +
-                           short_number(q.resolution_deg) + "-degree grid (within two steps of the exact angles) "
-                           "measures a position inside the region " + region.text());
+                           short_number(q.resolution_deg) +
+                           "-degree grid (within two steps of the exact angles) "
+                           "measures a position inside the region " +
+                           region.text());
     PlannedStep p{s.position, *rounded, bench.position(*rounded), 0};
     const Vec3& designed = q.program.positions[static_cast<std::size_t>(s.position)];
     p.rounding_deg = std::atan2(designed.cross(p.eta).norm(), designed.dot(p.eta)) / kDegree;
@@ -71,9 +73,12 @@ RunPlan as_run_plan(const std::vector<PlannedStep>& steps) {
 
 const char* order_name(RunOrder order) {
   switch (order) {
-    case RunOrder::travel: return "travel";
-    case RunOrder::remounts: return "remounts";
-    case RunOrder::given: return "given";
+    case RunOrder::travel:
+      return "travel";
+    case RunOrder::remounts:
+      return "remounts";
+    case RunOrder::given:
+      return "given";
   }
   return "?";
 }

@@ -22,18 +22,18 @@ namespace scalcal::commands {
 struct PlanRequest {
   std::string name;  // the program's name in messages
   Program program;
-  std::string bench;                 // the --bench spec
-  double resolution_deg = 0;         // 0: the angles as solved
+  std::string bench;          // the --bench spec
+  double resolution_deg = 0;  // 0: the angles as solved
   RunOrder order = RunOrder::travel;
   std::vector<std::string> regions;  // --region, else the program file's; none: no region to keep
   ModelKind model = ModelKind::paper9;
-  Warnings warnings;                 // found while reading the request
+  Warnings warnings;  // found while reading the request
 };
 
 struct PlannedStep {
-  int position = 0;       // index into the program (0-based; 1-based in text, JSON and CSV)
-  BenchSetting setting;   // on the resolution grid
-  Vec3 eta;               // the position the setting measures
+  int position = 0;         // index into the program (0-based; 1-based in text, JSON and CSV)
+  BenchSetting setting;     // on the resolution grid
+  Vec3 eta;                 // the position the setting measures
   double rounding_deg = 0;  // its angle from the designed position
 };
 
@@ -47,7 +47,7 @@ struct PlanResult {
   std::vector<PlannedStep> steps;  // in run order
   double travel_deg = 0;
   int remounts = 0;
-  double given_travel_deg = 0;     // the program's own order, with its best settings, rounded alike
+  double given_travel_deg = 0;  // the program's own order, with its best settings, rounded alike
   int given_remounts = 0;
   ModelKind model = ModelKind::paper9;
   ModelEvaluation designed, as_run;  // the criteria before and after rounding

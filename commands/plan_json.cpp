@@ -19,7 +19,8 @@ Json triple(const Vec3& v) { return Json{v(0), v(1), v(2)}; }
 // The bench's own settings of one step.
 void add_setting(Json& j, const Bench& bench, const BenchSetting& s) {
   const auto& mountings = bench.mountings();
-  if (mountings.size() > 1) j[std::string(bench.mounting_key())] = mountings[static_cast<std::size_t>(s.mounting)].value;
+  if (mountings.size() > 1)
+    j[std::string(bench.mounting_key())] = mountings[static_cast<std::size_t>(s.mounting)].value;
   const auto& axes = bench.axes();
   if (bench.angles_as_array()) {
     Json a = Json::array();
@@ -51,7 +52,8 @@ Json to_json(const PlanResult& r) {
   Json designed = Json::object(), as_run = Json::object(), lost = Json::object();
   add_criteria(designed, r.designed);
   add_criteria(as_run, r.as_run);
-  for (auto c : kCriteria) lost[std::string(criterion_name(c))] = r.efficiency_lost[static_cast<std::size_t>(c.index())];
+  for (auto c : kCriteria)
+    lost[std::string(criterion_name(c))] = r.efficiency_lost[static_cast<std::size_t>(c.index())];
   Json j{{"program", r.name},
          {"bench", r.bench.text()},
          {"region", r.region ? Json(r.region->text()) : Json(nullptr)},
@@ -89,7 +91,7 @@ PlanFile plan_file(const PlanResult& r) {
     position.values.push_back(s.position + 1);
     const Mounting& m = mountings[static_cast<std::size_t>(s.setting.mounting)];
     mounting.values.push_back(numbered && integer_text(m.value, value) ? static_cast<double>(value)
-                                                                        : static_cast<double>(s.setting.mounting));
+                                                                       : static_cast<double>(s.setting.mounting));
     for (std::size_t a = 0; a < angles.size(); ++a) angles[a].values.push_back(s.setting.angles[a]);
   }
   f.columns = {step, position};

@@ -93,7 +93,8 @@ std::string path_csv(const PlotRequest& q, const Zone* cap) {
     const int n = std::max(1, static_cast<int>(std::ceil(angle / (2 * kDeg))));
     for (int j = 0; j <= n; ++j) {
       const double f = static_cast<double>(j) / n;
-      const Vec3 x = angle < 1e-12 ? a : Vec3((std::sin((1 - f) * angle) * a + std::sin(f * angle) * b) / std::sin(angle));
+      const Vec3 x =
+          angle < 1e-12 ? a : Vec3((std::sin((1 - f) * angle) * a + std::sin(f * angle) * b) / std::sin(angle));
       const Placed p = place(x, cap);
       if (last >= 0 && p.panel != last) s += "\n";
       last = p.panel;
@@ -152,9 +153,16 @@ std::string grid_csv(const Zone* cap) {
   };
   const double outer = cap ? cap->max_tilt_deg : 1;
   std::vector<double> rings;
-  if (cap) for (double t = 10; t < cap->max_tilt_deg; t += 10) rings.push_back(t);
-  else for (double t : {30.0, 60.0, 90.0}) rings.push_back(std::sqrt(1 - std::cos(t * kDeg)));
-  for (double r : rings) polyline([r](double f) { return std::pair(r * std::cos(2 * std::numbers::pi * f), r * std::sin(2 * std::numbers::pi * f)); }, 120);
+  if (cap)
+    for (double t = 10; t < cap->max_tilt_deg; t += 10) rings.push_back(t);
+  else
+    for (double t : {30.0, 60.0, 90.0}) rings.push_back(std::sqrt(1 - std::cos(t * kDeg)));
+  for (double r : rings)
+    polyline(
+        [r](double f) {
+          return std::pair(r * std::cos(2 * std::numbers::pi * f), r * std::sin(2 * std::numbers::pi * f));
+        },
+        120);
   for (int m = 0; m < 8; ++m) {
     const double a = m * 45 * kDeg;
     polyline([a, outer](double f) { return std::pair(f * outer * std::cos(a), f * outer * std::sin(a)); }, 1);
@@ -169,12 +177,14 @@ std::string panel_plot(const std::string& stem, int panel, bool shaded, bool dis
   if (shaded && disks) s += "'" + stem + "_region" + p + ".csv' skip 1 using 1:2:3 with image, \\\n     ";
   s += "'" + stem + "_grid.csv' skip 1 using 1:2 with lines lw 0.5 lc rgb '" + kGrid + "'";
   if (shaded && disks)
-    s += ", \\\n     '" + stem + "_edges.csv' skip 1 using ($1==" + p + "?$2:NaN):3 with lines lw 1 lc rgb '" + kEdge + "'";
+    s += ", \\\n     '" + stem + "_edges.csv' skip 1 using ($1==" + p + "?$2:NaN):3 with lines lw 1 lc rgb '" + kEdge +
+         "'";
   if (path)
-    s += ", \\\n     '" + stem + "_path.csv' skip 1 using ($1==" + p + "?$2:NaN):3 with lines lw 1 lc rgb '" + kPath + "'";
-  s += ", \\\n     '" + stem + "_positions.csv' skip 1 using ($1==" + p + "?$2:NaN):3 with points pt 7 ps 0.8 lc rgb '" + kPositions +
-       "', \\\n     '' skip 1 using ($1==" + p + "?$2:NaN):3:(sprintf('%d', $4)) with labels offset 0.9,0.6 font ',7' tc rgb '" +
-       kPositions + "'\n";
+    s += ", \\\n     '" + stem + "_path.csv' skip 1 using ($1==" + p + "?$2:NaN):3 with lines lw 1 lc rgb '" + kPath +
+         "'";
+  s += ", \\\n     '" + stem + "_positions.csv' skip 1 using ($1==" + p +
+       "?$2:NaN):3 with points pt 7 ps 0.8 lc rgb '" + kPositions + "', \\\n     '' skip 1 using ($1==" + p +
+       "?$2:NaN):3:(sprintf('%d', $4)) with labels offset 0.9,0.6 font ',7' tc rgb '" + kPositions + "'\n";
   return s;
 }
 
@@ -182,7 +192,8 @@ std::string figure_stem(const std::string& out, std::string& folder) {
   const std::filesystem::path p(out);
   const std::string ext = p.extension().string();
   if (ext != ".pdf" && ext != ".png" && ext != ".svg")
-    throw UsageError("--out " + display_name(out) + ": the figure is FILE.pdf, FILE.png or FILE.svg (all three are made, with FILE.gp)");
+    throw UsageError("--out " + display_name(out) +
+                     ": the figure is FILE.pdf, FILE.png or FILE.svg (all three are made, with FILE.gp)");
   folder = p.parent_path().empty() ? "." : p.parent_path().string();
   return p.stem().string();
 }
@@ -198,8 +209,9 @@ std::string default_out(const std::string& program) {
 
 // PROGRAM is optional: --log draws a log instead.
 Option optional_program() {
-  Option o = program_argument("a catalogue name or a CSV file (a plan file from `plan --out`: numbered by step, its "
-                              "path drawn)");
+  Option o = program_argument(
+      "a catalogue name or a CSV file (a plan file from `plan --out`: numbered by step, its "
+      "path drawn)");
   o.kind = OptionKind::text;
   return o;
 }
@@ -211,7 +223,8 @@ const CommandTable& plot_table() {
       58,
       {optional_program(), region_option(),
        text_option("--log", "FILE", "instead of a program: a raw log (t,ix,iy,iz CSV or text t ix iy iz)", "file path"),
-       text_option("--calibration", "CAL.json", "with --log: the calibration of that log (calibrate --out)", "file path"),
+       text_option("--calibration", "CAL.json", "with --log: the calibration of that log (calibrate --out)",
+                   "file path"),
        out_option("the figure: FILE.pdf, .png or .svg (all three are made, with the gnuplot script FILE.gp and its "
                   "CSV data beside them)",
                   "FILE")}};
@@ -221,7 +234,8 @@ const CommandTable& plot_table() {
 PlotRequest plot_request(const Values& v) {
   PlotRequest q;
   if (v.given("--log") || v.given("--calibration")) {
-    if (!v.given("--log") || !v.given("--calibration")) throw UsageError("--log FILE and --calibration CAL.json go together");
+    if (!v.given("--log") || !v.given("--calibration"))
+      throw UsageError("--log FILE and --calibration CAL.json go together");
     if (v.given("PROGRAM") || v.program || v.given("--region"))
       throw UsageError("--log draws a log: it takes no PROGRAM or --region");
     q.log = v.text("--log");
@@ -239,7 +253,8 @@ PlotRequest plot_request(const Values& v) {
   if (!v.program && !named_program(q.name) && std::filesystem::is_regular_file(q.name, ec)) {
     const CsvTable t = read_csv(q.name);
     if (const int step = t.column("step"); step >= 0) {
-      for (std::size_t i = 0; i < t.rows.size(); ++i) q.labels[i] = static_cast<int>(std::lround(t.rows[i].values[static_cast<std::size_t>(step)]));
+      for (std::size_t i = 0; i < t.rows.size(); ++i)
+        q.labels[i] = static_cast<int>(std::lround(t.rows[i].values[static_cast<std::size_t>(step)]));
       q.run_order = true;
     }
   }
@@ -267,22 +282,28 @@ PlotResult draw(const PlotRequest& q) {
   r.data.push_back({r.stem + "_grid.csv", grid_csv(cap)});
   if (q.run_order) r.data.push_back({r.stem + "_path.csv", path_csv(q, cap)});
   if (shaded && !cap) {
-    for (int p = 0; p < 2; ++p) r.data.push_back({r.stem + "_region" + std::to_string(p) + ".csv", region_csv(region, p)});
+    for (int p = 0; p < 2; ++p)
+      r.data.push_back({r.stem + "_region" + std::to_string(p) + ".csv", region_csv(region, p)});
     r.data.push_back({r.stem + "_edges.csv", edges_csv(region)});
   }
-  std::string body = "set size ratio -1\nunset border\nunset tics\nunset key\nunset colorbox\nset cbrange [0:1]\n"
-                     "set palette defined (0 'white', 1 '" + std::string(kRegion) + "')\n";
+  std::string body =
+      "set size ratio -1\nunset border\nunset tics\nunset key\nunset colorbox\nset cbrange [0:1]\n"
+      "set palette defined (0 'white', 1 '" +
+      std::string(kRegion) + "')\n";
   if (cap) {
     const double e = cap->max_tilt_deg * 1.15;
     const Vec3 axis = cap->axis;
     r.width_cm = r.height_cm = 8.5;
-    body += "set xrange [" + num(-e) + ":" + num(e) + "]\nset yrange [" + num(-e) + ":" + num(e) + "]\n"
-            "set object 1 circle at 0,0 size " + num(cap->max_tilt_deg) + " fillcolor rgb '" + kRegion +
-            "' fillstyle solid border lc rgb '" + kEdge + "' behind\n"
-            "set label 1 'tilt from (" + num(axis.x()) + ", " + num(axis.y()) + ", " + num(axis.z()) +
+    body += "set xrange [" + num(-e) + ":" + num(e) + "]\nset yrange [" + num(-e) + ":" + num(e) +
+            "]\n"
+            "set object 1 circle at 0,0 size " +
+            num(cap->max_tilt_deg) + " fillcolor rgb '" + kRegion + "' fillstyle solid border lc rgb '" + kEdge +
+            "' behind\n"
+            "set label 1 'tilt from (" +
+            num(axis.x()) + ", " + num(axis.y()) + ", " + num(axis.z()) +
             "), azimuth from e_{/*1.1 1}' at graph 0, graph 1.02 left\n"
-            "set label 2 'e_{/*1.1 1}' at " + num(e * 0.97) + ",0 center front\nset label 3 'e_{/*1.1 2}' at 0," +
-            num(e * 0.97) + " center front\n";
+            "set label 2 'e_{/*1.1 1}' at " +
+            num(e * 0.97) + ",0 center front\nset label 3 'e_{/*1.1 2}' at 0," + num(e * 0.97) + " center front\n";
     int n = 4;
     for (double t = 10; t <= cap->max_tilt_deg; t += 10)
       body += "set label " + std::to_string(n++) + " '" + num(t) + "°' at " + num(t * std::cos(60 * kDeg)) + "," +
@@ -294,9 +315,11 @@ PlotResult draw(const PlotRequest& q) {
     body += "set xrange [-1.2:1.2]\nset yrange [-1.2:1.2]\nset multiplot layout 1,2\n";
     const char* titles[2] = {"(a) z ≥ 0, seen from +z", "(b) z < 0, seen from above through the meter"};
     for (int p = 0; p < 2; ++p) {
-      body += "set label 1 '" + std::string(titles[p]) + "' at graph 0, graph 1.02 left\n"
+      body += "set label 1 '" + std::string(titles[p]) +
+              "' at graph 0, graph 1.02 left\n"
               "set label 2 '+x' at 1.1,0 center\nset label 3 '+y' at 0,1.1 center\nset label 4 '−x' at -1.1,0 center\n"
-              "set label 5 '−y' at 0,-1.1 center\n" + panel_plot(r.stem, p, shaded, true, q.run_order);
+              "set label 5 '−y' at 0,-1.1 center\n" +
+              panel_plot(r.stem, p, shaded, true, q.run_order);
     }
     body += "unset multiplot\n";
   }
@@ -315,7 +338,8 @@ void refuse_overwriting(const PlotRequest& q, const PlotResult& r) {
     if (input.empty() || !fs::exists(input, ec)) continue;
     for (const auto& o : outputs)
       if (fs::exists(fs::path(r.folder) / o, ec) && fs::equivalent(fs::path(r.folder) / o, input, ec))
-        throw UsageError("--out " + display_name(q.out) + " would write " + o + " over the input " + display_name(input));
+        throw UsageError("--out " + display_name(q.out) + " would write " + o + " over the input " +
+                         display_name(input));
   }
 }
 

@@ -46,7 +46,7 @@ struct PlotResult {
   std::string comment;       // what the figure shows, one line
   std::string view;          // "cap", "hemispheres" or "log"
   double width_cm = 0, height_cm = 0;
-  std::string body;          // gnuplot commands
+  std::string body;  // gnuplot commands
   std::vector<PlotData> data;
   Warnings warnings;
 };

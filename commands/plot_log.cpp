@@ -6,9 +6,9 @@
 
 #include "commands/json.hpp"
 #include "commands/plot.hpp"
+#include "numeric/calibration/raw_log.hpp"
 #include "numeric/io/csv_table.hpp"
 #include "numeric/io/input_error.hpp"
-#include "numeric/calibration/raw_log.hpp"
 
 namespace scalcal::commands {
 namespace {
@@ -93,18 +93,30 @@ void plot_log(const PlotRequest& q, PlotResult& r) {
       "set multiplot\nset grid\nset lmargin at screen 0.1\nset rmargin at screen 0.78\n"
       "set key outside right top Left reverse samplen 2 width -1\nset label 1 '(a)' at graph 0, graph 1.04 left front\n"
       "set tmargin at screen 0.94\nset bmargin at screen 0.6\nset xlabel 't (s)'\nset ylabel 'raw'\n"
-      "set style fill solid 1.0 noborder\nset yrange [" + num(mid - half) + ":" + num(mid + half) + "]\n"
-      "plot '" + s + "_intervals.csv' skip 1 using (($2+$3)/2):(" + num(mid) + "):(($3-$2)/2):(" + num(half) +
+      "set style fill solid 1.0 noborder\nset yrange [" +
+      num(mid - half) + ":" + num(mid + half) +
+      "]\n"
+      "plot '" +
+      s + "_intervals.csv' skip 1 using (($2+$3)/2):(" + num(mid) + "):(($3-$2)/2):(" + num(half) +
       ") with boxxyerror lc rgb '#e3e3e3' title 'static', \\\n"
-      "     '" + s + "_log.csv' skip 1 using 1:2 with lines lw 1 lc rgb '" + kDark + "' title 'x', \\\n"
-      "     '" + s + "_log.csv' skip 1 using 1:3 with lines lw 1 lc rgb '" + kMedium + "' title 'y', \\\n"
-      "     '" + s + "_log.csv' skip 1 using 1:4 with lines lw 1 lc rgb '" + kLight + "' title 'z'\n"
+      "     '" +
+      s + "_log.csv' skip 1 using 1:2 with lines lw 1 lc rgb '" + kDark +
+      "' title 'x', \\\n"
+      "     '" +
+      s + "_log.csv' skip 1 using 1:3 with lines lw 1 lc rgb '" + kMedium +
+      "' title 'y', \\\n"
+      "     '" +
+      s + "_log.csv' skip 1 using 1:4 with lines lw 1 lc rgb '" + kLight +
+      "' title 'z'\n"
       "set label 1 '(b)'\nset tmargin at screen 0.44\nset bmargin at screen 0.12\nset xlabel 'static interval'\n"
-      "set ylabel '| |mean| − |I| |'\nset xrange [0:" + std::to_string(intervals.size() + 1) +
+      "set ylabel '| |mean| − |I| |'\nset xrange [0:" +
+      std::to_string(intervals.size() + 1) +
       "]\nset yrange [*:*]\nset logscale y\nset format y '10^{/*1.1 %T}'\n"
-      "plot '" + s + "_intervals.csv' skip 1 using 1:(abs($4)) with points pt 6 ps 0.9 lw 1.5 lc rgb '" + kGrey +
+      "plot '" +
+      s + "_intervals.csv' skip 1 using 1:(abs($4)) with points pt 6 ps 0.9 lw 1.5 lc rgb '" + kGrey +
       "' title 'before (one gain)', \\\n"
-      "     '" + s + "_intervals.csv' skip 1 using 1:(abs($5)) with points pt 7 ps 0.9 lc rgb '" + kDark +
+      "     '" +
+      s + "_intervals.csv' skip 1 using 1:(abs($5)) with points pt 7 ps 0.9 lc rgb '" + kDark +
       "' title 'after calibration'\nunset multiplot\n";
 }
 

@@ -15,9 +15,11 @@ const CommandTable& polish_table() {
       "a program polished to P digits by Newton's method in MPFR on its first-order conditions",
       43,
       {program_argument(), criterion_option(kRequired),
-       named(integer_option("--digits", 1, 1000, "significant digits of the polished value", "significant digits", "50"),
-             "P"),
-       out_option("write the polished program as CSV x,y,z,alpha1_deg,alpha2_deg"), json_option("print one JSON object")}};
+       named(
+           integer_option("--digits", 1, 1000, "significant digits of the polished value", "significant digits", "50"),
+           "P"),
+       out_option("write the polished program as CSV x,y,z,alpha1_deg,alpha2_deg"),
+       json_option("print one JSON object")}};
   return table;
 }
 

@@ -12,10 +12,13 @@ const CommandTable& random_table() {
       "random",
       "the best of R uniform random programs (the paper's dashed line), on all cores",
       41,
-      {named(integer_option("--positions", 3, 100000, "number of positions N (at least the model's number of parameters)",
-                      "positions", kRequired), "N"),
-       named(integer_option("--count", 1, 1000000000LL, "random programs drawn", "programs", kRequired), "R"), seed_option(),
-       criterion_option(), model_option(), region_option(), threads_option(), json_option("print one JSON object")}};
+      {named(
+           integer_option("--positions", 3, 100000, "number of positions N (at least the model's number of parameters)",
+                          "positions", kRequired),
+           "N"),
+       named(integer_option("--count", 1, 1000000000LL, "random programs drawn", "programs", kRequired), "R"),
+       seed_option(), criterion_option(), model_option(), region_option(), threads_option(),
+       json_option("print one JSON object")}};
   return table;
 }
 

@@ -48,7 +48,8 @@ Meter meter_from_file(const RehearsalRequest& q) {
   } catch (const Json::exception& e) {
     throw InputError(q.meter_file, 0, std::string("not JSON: ") + e.what());
   }
-  if (!j.is_object()) throw InputError(q.meter_file, 0, "expected a JSON object with bias, scale_deviation, nonorthogonality");
+  if (!j.is_object())
+    throw InputError(q.meter_file, 0, "expected a JSON object with bias, scale_deviation, nonorthogonality");
   Vec9 X;
   X << read_triple(j, "bias", q.meter_file) / q.magnitude, read_triple(j, "scale_deviation", q.meter_file),
       read_triple(j, "nonorthogonality", q.meter_file);
@@ -142,8 +143,8 @@ void write_raw_log(std::ostream& out, const RehearsalResult& r, bool text_format
     for (std::size_t k = 0; k < q.region.size(); ++k) out << (k ? ";" : "") << q.region[k];
     out << "\n";
   }
-  out << "# rehearsal of " << display_name(q.name) << " (scalcal simulate, seed " << q.seed << "): "
-      << q.program.size() << " positions, " << q.rate_hz << " Hz\n";
+  out << "# rehearsal of " << display_name(q.name) << " (scalcal simulate, seed " << q.seed << "): " << q.program.size()
+      << " positions, " << q.rate_hz << " Hz\n";
   if (!text_format) out << "t,ix,iy,iz\n";
   const char sep = text_format ? ' ' : ',';
   char line[160];

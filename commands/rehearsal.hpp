@@ -27,25 +27,25 @@
 namespace scalcal::commands {
 
 struct RehearsalRequest {
-  std::string name;                // the program's name in messages and in the log's comments
-  Program program;                 // in run order (a plan file is)
+  std::string name;                 // the program's name in messages and in the log's comments
+  Program program;                  // in run order (a plan file is)
   std::vector<std::string> region;  // the program file's region line, carried into the log
-  bool grouped = false;            // the grouped bench file instead of a raw log
+  bool grouped = false;             // the grouped bench file instead of a raw log
   double rate_hz = 100, dwell_s = 5, still_s = 30;
-  double noise = 1e-3;             // per output and sample, relative to |I|
-  double magnitude = 1;            // |I| in the log's units
-  double size = 1e-3;              // scale of a random meter's errors
-  std::string meter_file;          // a JSON file with bias, scale_deviation, nonorthogonality ("": random)
+  double noise = 1e-3;     // per output and sample, relative to |I|
+  double magnitude = 1;    // |I| in the log's units
+  double size = 1e-3;      // scale of a random meter's errors
+  std::string meter_file;  // a JSON file with bias, scale_deviation, nonorthogonality ("": random)
   std::uint64_t seed = 1;
 };
 
 struct RehearsalResult {
   RehearsalRequest request;
-  Meter meter;                 // the truth
-  FullCorrection correction;   // its correction: physical = matrix (raw - offset)
-  std::vector<double> t;       // seconds (the raw log)
-  std::vector<Vec3> samples;   // raw outputs, one per row
-  std::vector<int> position;   // 1-based position of each row, 0 while moving
+  Meter meter;                                   // the truth
+  FullCorrection correction;                     // its correction: physical = matrix (raw - offset)
+  std::vector<double> t;                         // seconds (the raw log)
+  std::vector<Vec3> samples;                     // raw outputs, one per row
+  std::vector<int> position;                     // 1-based position of each row, 0 while moving
   std::vector<std::pair<double, double>> rests;  // each position's resting time span (seconds)
   Warnings warnings;
 };

@@ -83,22 +83,25 @@ const CommandTable& simulate_table() {
   program.takes_positions = true;
   Option modulus = choice_option("--modulus", {"norm", "projection"}, "the modulus the estimator fits", "");
   modulus.fallback_text = "both, one after the other";
-  Option log = out_option("rehearsal: write the raw log (t,ix,iy,iz) a meter would give on the program run in its "
-                           "order, motion included (no Monte-Carlo)");
+  Option log = out_option(
+      "rehearsal: write the raw log (t,ix,iy,iz) a meter would give on the program run in its "
+      "order, motion included (no Monte-Carlo)");
   log.name = "--log";
   Option bench_file = out_option("rehearsal: write the grouped bench file (position,x,y,z,ix,iy,iz) instead");
   bench_file.name = "--bench-file";
-  Option truth = out_option("with --log or --bench-file: write the meter's true parameters as JSON (calibrate "
-                            "--json's keys and units)");
+  Option truth = out_option(
+      "with --log or --bench-file: write the meter's true parameters as JSON (calibrate "
+      "--json's keys and units)");
   truth.name = "--truth";
   static const CommandTable table{
       "simulate",
       "Monte-Carlo calibration of simulated meters (empirical covariance against sigma^2 K, bias, bench errors), or "
       "a rehearsal log of a program with its true parameters",
       41,
-      {program, named(integer_option("--trials", 2, 10000000, "simulated meters calibrated", "trials", "0",
-                                     "required, unless --log or --bench-file"),
-                      "T"),
+      {program,
+       named(integer_option("--trials", 2, 10000000, "simulated meters calibrated", "trials", "0",
+                            "required, unless --log or --bench-file"),
+             "T"),
        positive_option("--noise", "noise RMS sigma of each axis of each sample",
                        "|I| (the modulus of the measured vector)", kRequired),
        number_option("--bench-error", 0, 30, "every true position is the nominal one tipped by this angle", "degrees",
@@ -107,15 +110,17 @@ const CommandTable& simulate_table() {
        named(integer_option("--samples", 1, 100000, "samples per position", "samples", "1"), "K"),
        number_option("--size", 0, 0.2, "scale of the simulated meter's errors",
                      "relative (bias in |I|, angles in radians)", "0.001"),
-       log, bench_file, truth, rehearsal(text_option("--meter", "FILE",
-                                                     "rehearsal: the meter's parameters (bias, scale_deviation, "
-                                                     "nonorthogonality as calibrate --json writes them) instead of "
-                                                     "random ones",
-                                                     "file path")),
+       log, bench_file, truth,
+       rehearsal(text_option("--meter", "FILE",
+                             "rehearsal: the meter's parameters (bias, scale_deviation, "
+                             "nonorthogonality as calibrate --json writes them) instead of "
+                             "random ones",
+                             "file path")),
        rehearsal(positive_option("--rate", "rehearsal: samples per second", "Hz", "100")),
        rehearsal(positive_option("--dwell", "rehearsal: seconds at rest on each position", "seconds", "5")),
        rehearsal(number_option("--still", 0, 3600,
-                               "rehearsal: seconds at rest on the first position (calibrate's --still)", "seconds", "30")),
+                               "rehearsal: seconds at rest on the first position (calibrate's --still)", "seconds",
+                               "30")),
        rehearsal(positive_option("--magnitude", "rehearsal: |I| in the log's units", "log units", "1")),
        rehearsal(choice_option("--format", {"csv", "text"},
                                "rehearsal: the raw log as CSV with a header, or text t ix iy iz", "csv")),
@@ -212,8 +217,14 @@ SimulateResult simulate(const SimulateRequest& q, const Progress& progress) {
 
 Json to_json(const SimulateResult& result) {
   const SimulateRequest& q = result.request;
-  Json all{{"program", q.name},   {"positions", q.program.size()}, {"trials", q.trials},   {"noise", q.noise},
-           {"bench_error_deg", q.bench_error_deg}, {"seed", q.seed},  {"samples", q.samples}, {"size", q.size}};
+  Json all{{"program", q.name},
+           {"positions", q.program.size()},
+           {"trials", q.trials},
+           {"noise", q.noise},
+           {"bench_error_deg", q.bench_error_deg},
+           {"seed", q.seed},
+           {"samples", q.samples},
+           {"size", q.size}};
   if (q.model != ModelKind::paper9) all["model"] = std::string(model_name(q.model));
   Json results = Json::array();
   for (const auto& [m, r] : result.results) {

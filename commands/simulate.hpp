@@ -9,9 +9,9 @@
 #include "commands/common_options.hpp"
 #include "commands/json.hpp"
 #include "commands/progress.hpp"
+#include "commands/rehearsal.hpp"
 #include "commands/values.hpp"
 #include "commands/warning.hpp"
-#include "commands/rehearsal.hpp"
 #include "numeric/calibration/monte_carlo.hpp"
 
 namespace scalcal::commands {

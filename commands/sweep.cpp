@@ -23,7 +23,8 @@ bool read_int(const std::string& s, int& x) {
 std::optional<std::pair<int, int>> read_positions_range(const std::string& s) {
   const auto dots = s.find("..");
   int lo = 0, hi = 0;
-  if (dots == std::string::npos ? !read_int(s, lo) : !read_int(s.substr(0, dots), lo) || !read_int(s.substr(dots + 2), hi))
+  if (dots == std::string::npos ? !read_int(s, lo)
+                                : !read_int(s.substr(0, dots), lo) || !read_int(s.substr(dots + 2), hi))
     return std::nullopt;
   if (dots == std::string::npos) hi = lo;
   if (lo < kSweepMinN || hi < lo || hi > kSweepMaxN) return std::nullopt;
@@ -46,15 +47,16 @@ const CommandTable& sweep_table() {
   Option positions = text_option("--positions", "A..B", "N or a range A..B of N", "positions", "9..40");
   positions.why_bad = [](const std::string& s) -> std::string {
     return read_positions_range(s) ? ""
-                                   : "must be N or A..B with " + std::to_string(kSweepMinN) + " <= A <= B <= " +
-                                         std::to_string(kSweepMaxN) + " (and A at least the model's parameters), got '" +
-                                         s + "'";
+                                   : "must be N or A..B with " + std::to_string(kSweepMinN) +
+                                         " <= A <= B <= " + std::to_string(kSweepMaxN) +
+                                         " (and A at least the model's parameters), got '" + s + "'";
   };
   Option criteria = text_option("--criteria", "LIST", "comma-separated criteria", "none", criterion_names_text());
   criteria.fallback = scalcal::criterion_names(",");
   criteria.why_bad = [](const std::string& s) -> std::string {
-    return read_criteria_list(s).empty() ? "must be a comma-separated list of " + criterion_names_text() + ", got '" + s + "'"
-                                         : "";
+    return read_criteria_list(s).empty()
+               ? "must be a comma-separated list of " + criterion_names_text() + ", got '" + s + "'"
+               : "";
   };
   static const CommandTable table{
       "sweep",
@@ -97,9 +99,12 @@ std::optional<double> Sweep::limit(CriterionKind c) const {
   if (!slot) {
     std::optional<double> l;
     try {
-      if (restricted()) l = limit_value(c, *region_);
-      else if (request_.model == ModelKind::paper9) l = criterion_limit(c).value;
-      else if (const auto stated = stated_limit(request_.model, criterion_name(c))) l = stated->value;
+      if (restricted())
+        l = limit_value(c, *region_);
+      else if (request_.model == ModelKind::paper9)
+        l = criterion_limit(c).value;
+      else if (const auto stated = stated_limit(request_.model, criterion_name(c)))
+        l = stated->value;
     } catch (const std::invalid_argument&) {  // no known limit
     }
     slot = l;
@@ -118,16 +123,22 @@ SynthesisResult Sweep::compute(const SweepTask& t, int threads) const {
   return restricted() ? synthesize_on_region(opt, *region_) : synthesize(opt);
 }
 
-SweepRow Sweep::row(const SweepTask& t, SynthesisResult result) const { return {t, std::move(result), limit(t.criterion)}; }
+SweepRow Sweep::row(const SweepTask& t, SynthesisResult result) const {
+  return {t, std::move(result), limit(t.criterion)};
+}
 
 Json to_json(const Sweep& sweep, const SweepRow& row, bool timing) {
   const SynthesisResult& r = row.result;
   const auto ratio = row.limit ? Json(r.value / *row.limit) : Json(nullptr);
   const auto limit = row.limit ? Json(*row.limit) : Json(nullptr);
-  Json j{{"positions", row.task.positions}, {"criterion", std::string(criterion_name(row.task.criterion))},
-         {"value", r.value},                {"ratio", ratio},
-         {"program", program_json(r.program)}, {"hits", r.hits},
-         {"starts", r.starts},              {"stopping", r.stopping},
+  Json j{{"positions", row.task.positions},
+         {"criterion", std::string(criterion_name(row.task.criterion))},
+         {"value", r.value},
+         {"ratio", ratio},
+         {"program", program_json(r.program)},
+         {"hits", r.hits},
+         {"starts", r.starts},
+         {"stopping", r.stopping},
          {"distinct", r.distinct}};
   if (timing) j["seconds"] = r.seconds;
   if (sweep.request().model != ModelKind::paper9) {

@@ -5,8 +5,8 @@
 
 namespace scalcal::commands {
 
-std::string tool_version();  // "0.1"
-std::string tool_commit();   // git describe at build time ("3f2c1a9b0d4e", "...-dirty"), or "unknown"
+std::string tool_version();     // "0.1"
+std::string tool_commit();      // git describe at build time ("3f2c1a9b0d4e", "...-dirty"), or "unknown"
 std::string utc_now_iso8601();  // "2024-05-01T12:34:56Z"
 
 }  // namespace scalcal::commands

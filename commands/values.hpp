@@ -23,7 +23,7 @@ class Values {
   void set(const std::string& option, std::string text);
   void set_flag(const std::string& option, bool on);
 
-  bool given(const std::string& option) const;  // set by the user (not a default)
+  bool given(const std::string& option) const;        // set by the user (not a default)
   std::string text(const std::string& option) const;  // the value, the default, or ""
   long long integer(const std::string& option) const;
   double number(const std::string& option) const;

@@ -22,7 +22,7 @@ class CsvWriter {
 
   const std::filesystem::path& path() const { return path_; }
 
-  static std::string num(double x);  // %.17g, empty when not finite
+  static std::string num(double x);               // %.17g, empty when not finite
   static std::string text(const std::string& s);  // quoted when it holds a comma or a quote
 
  private:

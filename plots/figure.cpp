@@ -25,9 +25,12 @@ std::string gp_quote(const std::string& s) {
   std::string q = "'";
   for (char c : s) {
     const auto u = static_cast<unsigned char>(c);
-    if (c == '\'') q += "''";
-    else if (u < 0x20 || u == 0x7f) q += '?';
-    else q += c;
+    if (c == '\'')
+      q += "''";
+    else if (u < 0x20 || u == 0x7f)
+      q += '?';
+    else
+      q += c;
   }
   return q + "'";
 }
@@ -127,8 +130,8 @@ std::string figure_script(const FigureSpec& spec) {
          << "# " << spec.name << ".pdf is that size; " << spec.name << ".png the same drawing at "
          << num(kPngPixelsPerInch) << " pixels per inch, " << spec.name << ".svg at " << num(kSvgPixelsPerInch)
          << " (CSS pixels)\n"
-         << "# Written by `" << one_line(spec.written_by) << "`; re-make the figure with: cd <this folder> && gnuplot " << spec.name
-         << ".gp\n";
+         << "# Written by `" << one_line(spec.written_by) << "`; re-make the figure with: cd <this folder> && gnuplot "
+         << spec.name << ".gp\n";
   for (const auto& f : formats(spec))
     script << "\n# ---- " << f.extension << " ----\nreset\nset terminal " << f.terminal << "\nset output "
            << gp_quote(spec.name + "." + f.extension) << "\nset datafile separator ','\n"
@@ -143,8 +146,8 @@ RenderedFigure render(const std::filesystem::path& dir, const FigureSpec& spec) 
   if (!(spec.width_cm > 0 && spec.height_cm > 0))
     throw std::invalid_argument(spec.name + ": the print size must be positive");
   if (!(spec.font_pt * kIndexScale >= kMinTextPt))
-    throw std::invalid_argument(spec.name + ": " + num(spec.font_pt) + " pt text has indices below " +
-                                num(kMinTextPt) + " pt");
+    throw std::invalid_argument(spec.name + ": " + num(spec.font_pt) + " pt text has indices below " + num(kMinTextPt) +
+                                " pt");
   RenderedFigure out{dir / (spec.name + ".gp"), dir / (spec.name + ".pdf"), dir / (spec.name + ".png"),
                      dir / (spec.name + ".svg")};
   {

@@ -2,7 +2,8 @@
 // it) is written once per output format into NAME.gp, so `cd DIR && gnuplot NAME.gp` re-makes
 // NAME.pdf (pdfcairo), NAME.png (pngcairo) and NAME.svg exactly. A figure is drawn at the size a
 // journal prints it, with its text in points at that size; render() writes the script and runs it
-// through gnuplot (no shell: the folder is gnuplot's working directory), and throws with gnuplot's own messages when an output is missing.
+// through gnuplot (no shell: the folder is gnuplot's working directory), and throws with gnuplot's own messages when an
+// output is missing.
 #pragma once
 #include <filesystem>
 #include <string>
@@ -22,12 +23,12 @@ inline constexpr double kPngPixelsPerInch = 300;  // sharp when printed at the i
 inline constexpr double kSvgPixelsPerInch = 96;   // CSS pixels: the SVG opens at its print size
 
 struct FigureSpec {
-  std::string name;     // file stem: fig4 -> fig4.gp, fig4.pdf, fig4.png, fig4.svg
-  std::string comment;  // one line at the top of the script: what the figure shows
+  std::string name;                  // file stem: fig4 -> fig4.gp, fig4.pdf, fig4.png, fig4.svg
+  std::string comment;               // one line at the top of the script: what the figure shows
   double width_cm = kColumnWidthCm;  // at print size
   double height_cm = 6.5;
-  double font_pt = 8;   // at print size; render() refuses indices below kMinTextPt
-  std::string body;     // gnuplot commands; data files are named relative to the output folder
+  double font_pt = 8;                            // at print size; render() refuses indices below kMinTextPt
+  std::string body;                              // gnuplot commands; data files are named relative to the output folder
   std::string written_by = "scalcal reproduce";  // the command named in the script's header
 };
 
@@ -65,17 +66,17 @@ inline constexpr const char* grey = "#777777";    // reference marks: dashed or 
 
 // Program classes (Figs. 4-7). The many uniform programs are drawn first and lightest; the jigs,
 // which equal the optimum at their N, are open and drawn last so the triangle shows inside them.
-inline constexpr const char* uniform = light;     // filled squares, pt 5
-inline constexpr const char* rotation = medium;   // asterisks, pt 3
-inline constexpr const char* optimised = dark;    // filled triangles, pt 9
-inline constexpr const char* jig = black;         // open circle (pt 6) and diamond (pt 12)
-inline constexpr const char* random = grey;       // dashed line
-inline constexpr const char* limit = black;       // solid line, drawn under the points
-inline constexpr const char* paper = medium;      // open circles: the paper's Tables 1-3 programs
+inline constexpr const char* uniform = light;    // filled squares, pt 5
+inline constexpr const char* rotation = medium;  // asterisks, pt 3
+inline constexpr const char* optimised = dark;   // filled triangles, pt 9
+inline constexpr const char* jig = black;        // open circle (pt 6) and diamond (pt 12)
+inline constexpr const char* random = grey;      // dashed line
+inline constexpr const char* limit = black;      // solid line, drawn under the points
+inline constexpr const char* paper = medium;     // open circles: the paper's Tables 1-3 programs
 
 // One colour and point type per criterion D, A, E, S (kCriteria order), one colour per error group.
 inline constexpr const char* criterion[4] = {black, dark, medium, light};
-inline constexpr int criterion_point[4] = {5, 7, 9, 13};  // square, disc, triangle, diamond
+inline constexpr int criterion_point[4] = {5, 7, 9, 13};        // square, disc, triangle, diamond
 inline constexpr const char* group[3] = {dark, medium, light};  // theta_bias, theta_scale, theta_nonorth
 
 // The error groups as figures and REPORT.md write them: the CLI's JSON keys theta_bias, theta_scale,

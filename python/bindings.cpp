@@ -7,9 +7,9 @@
 #include "commands/augment.hpp"
 #include "commands/calibrate.hpp"
 #include "commands/calibrate_json.hpp"
-#include "commands/correct.hpp"
 #include "commands/catalogue.hpp"
 #include "commands/certify.hpp"
+#include "commands/correct.hpp"
 #include "commands/evaluate.hpp"
 #include "commands/export.hpp"
 #include "commands/family.hpp"
@@ -80,7 +80,8 @@ Binding calibrate_binding() {
 
 const std::vector<Binding>& bindings() {
   static const std::vector<Binding> all = {
-      bind(commands::catalogue_table(), [](const Values&) { return 0; }, [](int) { return commands::catalogue(); }),
+      bind(
+          commands::catalogue_table(), [](const Values&) { return 0; }, [](int) { return commands::catalogue(); }),
       bind(commands::evaluate_table(), commands::evaluate_request, commands::evaluate),
       calibrate_binding(),
       bind(commands::correct_table(), commands::correct_request,
@@ -101,8 +102,8 @@ const std::vector<Binding>& bindings() {
 #ifdef SCALCAL_PYTHON_REPRODUCE
       {&reproduce::reproduce_table(),
        [](const Values& v, const Progress&) {
-         return Output{reproduce::to_json(reproduce::run(reproduce::reproduce_options(v), reproduce::ProgressMode::off)),
-                       {}, 0};
+         return Output{
+             reproduce::to_json(reproduce::run(reproduce::reproduce_options(v), reproduce::ProgressMode::off)), {}, 0};
        }},
 #endif
   };

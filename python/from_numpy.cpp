@@ -5,8 +5,8 @@
 #include <sstream>
 
 #include "numeric/io/input_error.hpp"
-#include "numeric/program/program_csv.hpp"
 #include "numeric/program/catalogue.hpp"
+#include "numeric/program/program_csv.hpp"
 
 namespace py = pybind11;
 

@@ -13,8 +13,8 @@
 #include <pybind11/stl.h>
 
 #include "commands/usage_error.hpp"
-#include "numeric/io/input_error.hpp"
 #include "numeric/calibration/measurements_csv.hpp"
+#include "numeric/io/input_error.hpp"
 #include "numeric/program/catalogue.hpp"
 #include "python/arguments.hpp"
 #include "python/bindings.hpp"
@@ -29,13 +29,20 @@ namespace {
 
 const char* kind_name(commands::OptionKind k) {
   switch (k) {
-    case commands::OptionKind::positional: return "positional";
-    case commands::OptionKind::integer: return "integer";
-    case commands::OptionKind::number: return "number";
-    case commands::OptionKind::text: return "text";
-    case commands::OptionKind::choice: return "choice";
-    case commands::OptionKind::flag: return "flag";
-    case commands::OptionKind::repeated: return "repeated";
+    case commands::OptionKind::positional:
+      return "positional";
+    case commands::OptionKind::integer:
+      return "integer";
+    case commands::OptionKind::number:
+      return "number";
+    case commands::OptionKind::text:
+      return "text";
+    case commands::OptionKind::choice:
+      return "choice";
+    case commands::OptionKind::flag:
+      return "flag";
+    case commands::OptionKind::repeated:
+      return "repeated";
   }
   return "text";
 }
@@ -111,6 +118,10 @@ PYBIND11_MODULE(_scalcal, m) {
   });
   m.def("tables", &sp::tables);
   m.def("run", &sp::run, py::arg("name"), py::arg("args"), py::arg("kwargs"));
-  m.def("program", [](const std::string& name) { return sp::to_python(scalcal::commands::program_json(scalcal::resolve_program(name))); },
-        py::arg("name"));
+  m.def(
+      "program",
+      [](const std::string& name) {
+        return sp::to_python(scalcal::commands::program_json(scalcal::resolve_program(name)));
+      },
+      py::arg("name"));
 }

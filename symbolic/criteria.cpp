@@ -141,7 +141,8 @@ std::vector<ex> numeric_eigenvalues(const matrix& B) {
   for (unsigned i = 0; i < s; ++i)
     for (unsigned j = 0; j < s; ++j) {
       const ex v = GiNaC::evalf(B(i, j));
-      if (!GiNaC::is_a<GiNaC::numeric>(v)) throw std::invalid_argument("exact_criteria: eigenvalues of a symbolic block");
+      if (!GiNaC::is_a<GiNaC::numeric>(v))
+        throw std::invalid_argument("exact_criteria: eigenvalues of a symbolic block");
       A(i, j) = GiNaC::ex_to<GiNaC::numeric>(v).to_double();
     }
   Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(A);

@@ -21,10 +21,10 @@ struct ExactValue {
   std::vector<GiNaC::ex> candidates;
   bool exact = true;  // false: the candidates are floating-point values (an eigenvalue had no closed form)
 
-  bool resolved() const;           // every candidate evaluates to a real number
-  GiNaC::ex value() const;         // the largest candidate; requires resolved()
-  double number() const;           // value() as a double; NaN when not resolved
-  std::string str() const;         // "c" or "max(c1, c2, ...)"
+  bool resolved() const;    // every candidate evaluates to a real number
+  GiNaC::ex value() const;  // the largest candidate; requires resolved()
+  double number() const;    // value() as a double; NaN when not resolved
+  std::string str() const;  // "c" or "max(c1, c2, ...)"
 };
 
 struct ExactCriteria {
@@ -33,7 +33,7 @@ struct ExactCriteria {
   std::array<ExactValue, kCriterionCount> values;
   ExactValue theta_bias, theta_scale, theta_nonorth, theta_cubic;  // no candidates: the model lacks the group
   std::vector<GiNaC::ex> eigenvalues;  // of M (one per eigenvalue with multiplicity) when exact
-  std::vector<GiNaC::ex> K_diagonal;    // K(r, r), r = 0..P-1
+  std::vector<GiNaC::ex> K_diagonal;   // K(r, r), r = 0..P-1
 
   // A criterion's exact value; nullptr where it has no closed form here.
   const ExactValue* of(CriterionKind c) const {

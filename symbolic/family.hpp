@@ -29,8 +29,8 @@ struct FamilyParam {
 using ParamMap = std::map<std::string, GiNaC::ex>;
 
 struct FamilyInstance {
-  GiNaC::ex N;       // number of positions (a closed form when multiplicities are symbols)
-  GiNaC::matrix M;   // H^T H of the paper's model, exact
+  GiNaC::ex N;            // number of positions (a closed form when multiplicities are symbols)
+  GiNaC::matrix M;        // H^T H of the paper's model, exact
   MomentFunction moment;  // any moment of the program, for the other models (--model)
 };
 
@@ -42,7 +42,7 @@ struct Family {
   // ("octa-{k}"); any parameter may also follow as @key=value ("jig:cube@orientation=aa:0,0,1,30").
   // Empty: the family has no program names of its own (the paper's four, whose names numeric owns).
   std::string pattern;
-  std::string group = "family";  // "jig" puts it among the printable jigs of the figures and tables
+  std::string group = "family";    // "jig" puts it among the printable jigs of the figures and tables
   std::string source = "scalcal";  // where it comes from, for the catalogue
   // The exact positions with their multiplicities (integers for a program). A family that gives
   // them needs nothing else: instance and numeric below are derived when left empty.

@@ -71,7 +71,8 @@ std::string regex_escaped(const std::string& s) {
 std::vector<std::string> split(const std::string& s, char sep) {
   std::vector<std::string> parts;
   std::size_t from = 0;
-  for (std::size_t at; (at = s.find(sep, from)) != std::string::npos; from = at + 1) parts.push_back(s.substr(from, at - from));
+  for (std::size_t at; (at = s.find(sep, from)) != std::string::npos; from = at + 1)
+    parts.push_back(s.substr(from, at - from));
   parts.push_back(s.substr(from));
   return parts;
 }
@@ -110,7 +111,8 @@ std::function<std::optional<Program>(const std::string&)> name_resolver(const Fa
         // A name is a number's text, not a computation: GiNaC evaluates powers and factorials of
         // numbers eagerly, and 9^9^9 would take the machine's memory.
         if (s.find_first_of("^!") != std::string::npos)
-          throw InputError(name, 0, "'" + display_name(s) + "': powers (^) and factorials (!) are not taken in a program name");
+          throw InputError(name, 0,
+                           "'" + display_name(s) + "': powers (^) and factorials (!) are not taken in a program name");
         overrides.push_back(s);
       }
     std::vector<std::string> settings;
@@ -134,8 +136,8 @@ std::function<std::optional<Program>(const std::string&)> name_resolver(const Fa
     }
     if (!p) throw InputError(name, 0, "family " + family_name + " gives no numeric program for these parameters");
     if (p->size() < 1 || p->size() > kMaximumPositions)
-      throw InputError(name, 0, std::to_string(p->size()) + " positions; a program holds 1.." +
-                                    std::to_string(kMaximumPositions));
+      throw InputError(
+          name, 0, std::to_string(p->size()) + " positions; a program holds 1.." + std::to_string(kMaximumPositions));
     return p;
   };
 }
@@ -215,8 +217,8 @@ ParamMap parse_params(const Family& family, const std::vector<std::string>& sett
     try {
       const GiNaC::ex value = p.read ? p.read(text, reader) : reader(text);
       // Every family is a set of real directions: an imaginary parameter would give complex positions.
-      const bool imaginary = GiNaC::is_a<GiNaC::numeric>(value) ? !GiNaC::ex_to<GiNaC::numeric>(value).is_real()
-                                                                 : value.has(GiNaC::I);
+      const bool imaginary =
+          GiNaC::is_a<GiNaC::numeric>(value) ? !GiNaC::ex_to<GiNaC::numeric>(value).is_real() : value.has(GiNaC::I);
       if (imaginary) throw InputError("--param", 0, p.key + "=" + display_name(text) + ": not a real number");
       out[p.key] = value;
     } catch (const InputError&) {
@@ -224,8 +226,9 @@ ParamMap parse_params(const Family& family, const std::vector<std::string>& sett
     } catch (const std::exception& e) {
       // GiNaC's parser appends its own source location on a second line: one line, without it.
       const std::string what = e.what();
-      throw InputError("--param", 0, p.key + "=" + display_name(text) + ": not an expression (" +
-                                         what.substr(0, what.find('\n')) + ")");
+      throw InputError(
+          "--param", 0,
+          p.key + "=" + display_name(text) + ": not an expression (" + what.substr(0, what.find('\n')) + ")");
     }
   };
   for (const auto& p : family.params) read(p, p.fallback);
@@ -238,7 +241,8 @@ ParamMap parse_params(const Family& family, const std::vector<std::string>& sett
     const FamilyParam* param = nullptr;
     for (const auto& p : family.params)
       if (p.key == key) param = &p;
-    if (!param) throw InputError("--param", 0, "family " + family.name + " has no parameter '" + display_name(key) + "'");
+    if (!param)
+      throw InputError("--param", 0, "family " + family.name + " has no parameter '" + display_name(key) + "'");
     if (std::find(given.begin(), given.end(), key) != given.end())
       throw InputError("--param", 0, key + " is given twice");  // as a repeated option is refused
     given.push_back(key);

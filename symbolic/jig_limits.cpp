@@ -77,11 +77,12 @@ JigAnalysis analyse_jig(const std::vector<WeightedPoint>& normals) {
     const bool equal = exact_value && is_zero_exact(v->value() - limit);
     if (out.four_design) {
       if (exact_value)
-        claim = equal ? JigLimitClaim{"reached in every orientation", true,
-                                      "a 4-design: the sphere's moments up to degree 4 in every orientation, "
-                                      "and its exact value is the limit"}
-                      : JigLimitClaim{"never reached", true,
-                                      "a 4-design: the same value " + v->str() + " in every orientation, above the limit"};
+        claim =
+            equal ? JigLimitClaim{"reached in every orientation", true,
+                                  "a 4-design: the sphere's moments up to degree 4 in every orientation, "
+                                  "and its exact value is the limit"}
+                  : JigLimitClaim{"never reached", true,
+                                  "a 4-design: the same value " + v->str() + " in every orientation, above the limit"};
       else
         claim = {"not decided exactly", false, "a 4-design, but the criterion has no closed form here"};
       continue;

@@ -37,8 +37,8 @@ struct JigLimitClaim {
 };
 
 struct JigAnalysis {
-  bool four_design = false;  // every criterion is the same in every orientation
-  std::optional<ExactCriteria> at_default;  // nullopt when the jig is rank-deficient
+  bool four_design = false;                          // every criterion is the same in every orientation
+  std::optional<ExactCriteria> at_default;           // nullopt when the jig is rank-deficient
   std::array<JigLimitClaim, kCriterionCount> claim;  // by CriterionKind index
 };
 

@@ -86,7 +86,8 @@ SymbolicLimit minimise_max(const std::vector<ex>& pieces, const symbol& b) {
     }
     if (top_v < best_v) best_v = top_v, best = {top, p, canonical(ex(1) / 3 - 2 * p)};
   }
-  if (!(best_v < std::numeric_limits<double>::infinity())) throw std::runtime_error("minimise_max: no interior minimiser");
+  if (!(best_v < std::numeric_limits<double>::infinity()))
+    throw std::runtime_error("minimise_max: no interior minimiser");
   return best;
 }
 

@@ -31,8 +31,7 @@ std::vector<ParameterGroup> model_groups(ModelKind model) {
 
 GiNaC::matrix model_moment_matrix(ModelKind model, const MomentFunction& moment) {
   const auto expo = model_exponents(model);
-  if (!expo)
-    throw std::invalid_argument("model " + std::string(model_name(model)) + " has no table of monomials");
+  if (!expo) throw std::invalid_argument("model " + std::string(model_name(model)) + " has no table of monomials");
   const unsigned P = static_cast<unsigned>(expo->size());
   GiNaC::matrix M(P, P);
   for (unsigned r = 0; r < P; ++r)

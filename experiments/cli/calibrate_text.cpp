@@ -31,8 +31,8 @@ void header(const CalibrateResult& r, std::ostream& t) {
       << ")\n";
   }
   t << "model " << model_name(r.model) << ": " << r.model_reason << "\n";
-  t << a.estimate.positions << " positions, " << a.estimate.samples << " samples, " << a.dof
-    << " degrees of freedom, " << a.estimate.summary.iterations << " iterations"
+  t << a.estimate.positions << " positions, " << a.estimate.samples << " samples, " << a.dof << " degrees of freedom, "
+    << a.estimate.summary.iterations << " iterations"
     << (r.converged() ? "" : " (NOT converged: " + a.estimate.summary.message + ")")
     << (a.started ? ", from an ellipsoid start" : "") << "\n";
 }
@@ -47,8 +47,10 @@ void parameters(const CalibrateResult& r, std::ostream& t) {
   for (std::size_t k = 0; k < names.size(); ++k) {
     const auto i = static_cast<Eigen::Index>(k);
     const int m = index[k];
-    const double v = m < 3 ? a.correction.offset(m) : m < 6 ? a.scale_deviation(m - 3)
-                                                : m < 9 ? a.correction.nonorthogonality(m - 6) : a.estimate.X(i);
+    const double v = m < 3   ? a.correction.offset(m)
+                     : m < 6 ? a.scale_deviation(m - 3)
+                     : m < 9 ? a.correction.nonorthogonality(m - 6)
+                             : a.estimate.X(i);
     const double p = a.predicted_std(i), q = a.achieved_std(i), s = a.standard_error(i);
     t << "  " << std::left << std::setw(11) << names[k] << std::right << std::setw(14) << v;
     if (std::isfinite(s)) {
@@ -91,9 +93,8 @@ void quality(const CalibrateResult& r, std::ostream& t) {
   // The worst positions, so a bench engineer sees where the model and the data disagree.
   std::vector<std::size_t> order(r.positions.size());
   for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
-  std::sort(order.begin(), order.end(), [&](auto x, auto y) {
-    return std::abs(r.positions[x].residual) > std::abs(r.positions[y].residual);
-  });
+  std::sort(order.begin(), order.end(),
+            [&](auto x, auto y) { return std::abs(r.positions[x].residual) > std::abs(r.positions[y].residual); });
   t << "worst positions (line, |corrected| - |I|, standardised):";
   for (std::size_t k = 0; k < order.size() && k < 3; ++k) {
     const auto& p = r.positions[order[k]];
@@ -124,6 +125,5 @@ std::string calibrate_text(const CalibrateResult& r) {
   quality(r, t);
   return t.str();
 }
-
 
 }  // namespace scalcal::cli

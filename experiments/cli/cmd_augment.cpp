@@ -40,8 +40,8 @@ int run(const commands::Values& v) {
     std::cout << line;
   }
   std::cout << "joint optimisation of the added positions: " << a.starts << (a.starts == 1 ? " start" : " starts")
-            << ", the best from start " << a.best_start << " (start 0, from the greedy exchange: "
-            << value_text(a.value_greedy) << ")\n";
+            << ", the best from start " << a.best_start
+            << " (start 0, from the greedy exchange: " << value_text(a.value_greedy) << ")\n";
   if (r.efficiency) {
     char numbers[96];
     std::snprintf(numbers, sizeof numbers, "efficiency %.6f against the limit %.10g", *r.efficiency, *r.limit);

@@ -16,12 +16,15 @@ namespace scalcal::cli {
 namespace {
 
 int run(const commands::Values& v) {
-  const commands::CalibrateResult r = commands::calibrate(commands::calibrate_request(v), terminal_progress("calibrate"));
+  const commands::CalibrateResult r =
+      commands::calibrate(commands::calibrate_request(v), terminal_progress("calibrate"));
   print_warnings("calibrate", r.warnings);
   if (v.given("--out"))
     write_output_file(v.text("--out"), [&](std::ostream& f) { write_json(f, commands::calibration_file_json(r)); });
-  if (v.flag("--json")) print_json(commands::to_json(r));
-  else std::cout << calibrate_text(r);
+  if (v.flag("--json"))
+    print_json(commands::to_json(r));
+  else
+    std::cout << calibrate_text(r);
   return r.status();
 }
 

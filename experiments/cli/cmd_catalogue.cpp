@@ -33,8 +33,10 @@ void print_text(const commands::CatalogueResult& r) {
 int run(const commands::Values& v) {
   const auto r = commands::catalogue();
   print_warnings("catalogue", r.warnings);
-  if (v.flag("--json")) print_json(commands::to_json(r));
-  else print_text(r);
+  if (v.flag("--json"))
+    print_json(commands::to_json(r));
+  else
+    print_text(r);
   return 0;
 }
 

@@ -25,7 +25,8 @@ int run(const commands::Values& v) {
             << c.limit << "), N = " << r.positions << "\n";
   if (!c.radius.empty()) std::cout << "radius     " << c.radius << "\n";
   if (r.local())
-    std::cout << "enclosure  [" << c.enclosure_lo << ", " << c.enclosure_hi << "] (" << c.enclosure_digits << " digits)\n";
+    std::cout << "enclosure  [" << c.enclosure_lo << ", " << c.enclosure_hi << "] (" << c.enclosure_digits
+              << " digits)\n";
   std::cout << "method     " << c.method << " (" << c.unknowns << " unknowns)\n"
             << "reason     " << c.reason << "\n"
             << "seconds    " << std::setprecision(3) << c.seconds << "\n";

@@ -27,8 +27,10 @@ int run(const commands::Values& v) {
         << shortest_text(row.corrected(2)) << ',' << shortest_text(row.modulus) << '\n';
     }
   };
-  if (v.given("--out")) write_output_file(v.text("--out"), write);
-  else write(std::cout);
+  if (v.given("--out"))
+    write_output_file(v.text("--out"), write);
+  else
+    write(std::cout);
   return 0;
 }
 

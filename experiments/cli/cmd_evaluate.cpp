@@ -34,9 +34,12 @@ int run(const commands::Values& v) {
   const auto r = commands::evaluate(commands::evaluate_request(v), terminal_progress("evaluate"));
   print_warnings("evaluate", r.warnings);
   if (v.given("--out"))
-    write_program_file(v.text("--out"), r.program, r.columns, {r.region ? r.region->specs : std::vector<std::string>{}, {}});
-  if (v.flag("--json")) print_json(commands::to_json(r));
-  else print_text(r);
+    write_program_file(v.text("--out"), r.program, r.columns,
+                       {r.region ? r.region->specs : std::vector<std::string>{}, {}});
+  if (v.flag("--json"))
+    print_json(commands::to_json(r));
+  else
+    print_text(r);
   return 0;
 }
 

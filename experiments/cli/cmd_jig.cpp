@@ -21,7 +21,8 @@ void print_limit(const commands::JigResult& r) {
   std::snprintf(number, sizeof number, "%.10g", *r.limit);
   const bool same = r.limit_exact == number;
   std::printf("limit %s%s%s, ratio %.10g: %s, %s (%s)\n", r.limit_exact.c_str(), same ? "" : " = ", same ? "" : number,
-              r.value / *r.limit, r.claim_status.c_str(), r.claim_proven ? "proven" : "numerical", r.claim_reason.c_str());
+              r.value / *r.limit, r.claim_status.c_str(), r.claim_proven ? "proven" : "numerical",
+              r.claim_reason.c_str());
 }
 
 void print_text(const commands::JigResult& r) {
@@ -51,8 +52,10 @@ void print_text(const commands::JigResult& r) {
 int run(const commands::Values& v) {
   const auto r = commands::jig(commands::jig_request(v), terminal_progress("jig"));
   print_warnings("jig", r.warnings);
-  if (v.flag("--json")) print_json(commands::to_json(r));
-  else print_text(r);
+  if (v.flag("--json"))
+    print_json(commands::to_json(r));
+  else
+    print_text(r);
   return 0;
 }
 

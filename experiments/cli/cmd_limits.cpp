@@ -60,16 +60,19 @@ void print_sphere(const commands::LimitsResult& r) {
       std::cout << "   optimal measure: " << s.measure << "; attained: " << s.attained << "\n";
   }
   if (!paper9)
-    std::cout << "(model " << model_name(r.model) << ", " << model_parameters(r.model) << " parameters; proofs: "
-              << visit_model(r.model, [](auto M) { return decltype(M)::proof; }) << ")\n";
+    std::cout << "(model " << model_name(r.model) << ", " << model_parameters(r.model)
+              << " parameters; proofs: " << visit_model(r.model, [](auto M) { return decltype(M)::proof; }) << ")\n";
 }
 
 int run(const commands::Values& v) {
   const auto r = commands::limits(commands::limits_request(v), terminal_progress("limits"));
   print_warnings("limits", r.warnings);
-  if (v.flag("--json")) print_json(commands::to_json(r));
-  else if (r.region) print_region(r);
-  else print_sphere(r);
+  if (v.flag("--json"))
+    print_json(commands::to_json(r));
+  else if (r.region)
+    print_region(r);
+  else
+    print_sphere(r);
   return 0;
 }
 

@@ -39,8 +39,10 @@ int run(const commands::Values& v) {
   if (v.given("--out"))
     write_program_file(v.text("--out"), r.program, r.columns,
                        {r.region && !r.region->is_sphere() ? r.region->specs : std::vector<std::string>{}, {}});
-  if (v.flag("--json")) print_json(commands::to_json(r));
-  else print_text(r);
+  if (v.flag("--json"))
+    print_json(commands::to_json(r));
+  else
+    print_text(r);
   return 0;
 }
 

@@ -35,11 +35,12 @@ std::string percent(double share) {
 
 void print_header(std::ostream& out, const commands::PlanResult& r) {
   out << "plan of " << r.name << " on the bench " << r.bench.text() << " (order " << commands::order_name(r.order)
-      << ", resolution " << (r.resolution_deg > 0 ? fixed(r.resolution_deg, decimals(r.resolution_deg), 0) + " deg" : "exact")
+      << ", resolution "
+      << (r.resolution_deg > 0 ? fixed(r.resolution_deg, decimals(r.resolution_deg), 0) + " deg" : "exact")
       << (r.region ? ", region " + r.region->text() : std::string()) << ")\n";
-  out << r.steps.size() << " steps, " << r.remounts << (r.remounts == 1 ? " remount" : " remounts") << ", the axes travel "
-      << fixed(r.travel_deg, 1, 0) << " deg (the program's own order: " << r.given_remounts << " remounts, "
-      << fixed(r.given_travel_deg, 1, 0) << " deg";
+  out << r.steps.size() << " steps, " << r.remounts << (r.remounts == 1 ? " remount" : " remounts")
+      << ", the axes travel " << fixed(r.travel_deg, 1, 0) << " deg (the program's own order: " << r.given_remounts
+      << " remounts, " << fixed(r.given_travel_deg, 1, 0) << " deg";
   if (r.given_travel_deg > 0 && r.travel_deg < r.given_travel_deg)
     out << "; " << percent(1 - r.travel_deg / r.given_travel_deg) << " less travel";
   out << ")\n";
@@ -59,7 +60,8 @@ void print_steps(std::ostream& out, const commands::PlanResult& r) {
     const commands::PlannedStep& s = r.steps[k];
     if (headings && s.setting.mounting != last)
       out << (last < 0 ? "\nmount the meter: " : "\nremount the meter: ")
-          << mountings[static_cast<std::size_t>(s.setting.mounting)].label << "\n" << head;
+          << mountings[static_cast<std::size_t>(s.setting.mounting)].label << "\n"
+          << head;
     else if (k == 0)
       out << "\n" << head;
     last = s.setting.mounting;

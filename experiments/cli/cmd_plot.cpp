@@ -16,8 +16,7 @@ int run(const commands::Values& v) {
   const commands::PlotResult r = commands::plot(commands::plot_request(v));
   print_warnings("plot", r.warnings);
   const std::filesystem::path folder(r.folder);
-  for (const auto& d : r.data)
-    write_output_file((folder / d.file).string(), [&](std::ostream& out) { out << d.text; });
+  for (const auto& d : r.data) write_output_file((folder / d.file).string(), [&](std::ostream& out) { out << d.text; });
   plots::FigureSpec spec;
   spec.name = r.stem;
   spec.comment = r.comment;

@@ -22,8 +22,8 @@ int run(const commands::Values& v) {
   } else {
     const SecondOrder& s = r.second_order;
     std::cout << criterion_name(r.criterion) << " = " << p.value_digits << "  (" << p.digits << " digits, residual "
-              << std::setprecision(3) << p.residual << ", " << p.summary.iterations << " Newton steps, N = "
-              << r.positions << (p.converged() ? "" : ", not converged") << ")\n"
+              << std::setprecision(3) << p.residual << ", " << p.summary.iterations
+              << " Newton steps, N = " << r.positions << (p.converged() ? "" : ", not converged") << ")\n"
               << "second order: " << s.text << (s.reason.empty() ? "" : " (" + s.reason + ")") << "\n";
   }
   // Not converged: the digits printed are fewer than asked, and a script must notice.

@@ -14,7 +14,8 @@ namespace {
 int run(const commands::Values& v) {
   reproduce::RunSummary s;
   try {
-    s = reproduce::run(reproduce::reproduce_options(v), reproduce::progress_mode(v.flag("--quiet"), progress_enabled()));
+    s = reproduce::run(reproduce::reproduce_options(v),
+                       reproduce::progress_mode(v.flag("--quiet"), progress_enabled()));
   } catch (const InputError&) {
     throw;
   } catch (const std::runtime_error& e) {  // the pipeline's files: the folder, a CSV, REPORT.md

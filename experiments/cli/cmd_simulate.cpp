@@ -25,8 +25,8 @@ void print_result(std::ostream& out, const MonteCarloResult& r, Modulus m) {
     out << "  " << std::left << std::setw(11) << r.names[static_cast<std::size_t>(k)] << std::right
         << std::setprecision(4) << std::setw(12) << r.truth(k) << std::setw(13) << r.mean(k) - r.truth(k)
         << std::setw(10) << std::setprecision(2) << (r.mean(k) - r.truth(k)) / se_mean << std::setprecision(4)
-        << std::setw(12) << r.noise_free(k) - r.truth(k) << std::setw(11) << emp << std::setw(12) << th
-        << std::setw(8) << std::setprecision(3) << emp / th << "\n";
+        << std::setw(12) << r.noise_free(k) - r.truth(k) << std::setw(11) << emp << std::setw(12) << th << std::setw(8)
+        << std::setprecision(3) << emp / th << "\n";
   }
   out << "  theta (sqrt(N max var)/sigma)  empirical / theoretical:";
   for (int q = 0; q < 4; ++q)
@@ -35,8 +35,8 @@ void print_result(std::ostream& out, const MonteCarloResult& r, Modulus m) {
           << " / " << r.theta_theoretical(q);
   out << "\n  sampling error of an empirical std: " << std::setprecision(2) << 100 * r.std_sampling_error()
       << "% (1 sigma); max normalised covariance difference " << std::setprecision(3)
-      << r.max_normalised_cov_difference() << "; estimated noise / sigma " << std::setprecision(4)
-      << r.mean_noise_ratio << "\n";
+      << r.max_normalised_cov_difference() << "; estimated noise / sigma " << std::setprecision(4) << r.mean_noise_ratio
+      << "\n";
 }
 
 // --log / --bench-file: the files, and one line (or the truth as JSON) on stdout.
@@ -46,7 +46,8 @@ int rehearse(const commands::Values& v, const commands::RehearsalRequest& q) {
   if (q.grouped)
     write_output_file(v.text("--bench-file"), [&](std::ostream& out) { commands::write_bench_file(out, r); });
   else
-    write_output_file(v.text("--log"), [&](std::ostream& out) { commands::write_raw_log(out, r, v.text("--format") == "text"); });
+    write_output_file(v.text("--log"),
+                      [&](std::ostream& out) { commands::write_raw_log(out, r, v.text("--format") == "text"); });
   const commands::Json truth = commands::truth_json(r);
   if (v.given("--truth")) write_output_file(v.text("--truth"), [&](std::ostream& out) { write_json(out, truth); });
   if (v.flag("--json")) {
@@ -71,7 +72,8 @@ int run(const commands::Values& v) {
               << " trials, noise " << q.noise << " |I|, bench error " << q.bench_error_deg << " deg, " << q.samples
               << " sample(s) per position, error size " << q.size << ", seed " << q.seed
               << (q.model == ModelKind::paper9 ? "" : ", model " + std::string(model_name(q.model))) << "\n";
-  if (json) print_json(commands::to_json(r));
+  if (json)
+    print_json(commands::to_json(r));
   else
     for (const auto& [m, result] : r.results) print_result(std::cout, result, m);
   return 0;

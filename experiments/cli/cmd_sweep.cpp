@@ -31,8 +31,8 @@ std::string program_cell(const Program& p) {
 
 // One task's result as JSON between ranks (doubles print with 17 digits, so rank 0 reads back the same bits).
 Json encode(std::size_t task, const SynthesisResult& r) {
-  return Json{{"task", task},   {"value", r.value},       {"starts", r.starts},   {"stopping", r.stopping}, {"hits", r.hits},
-              {"distinct", r.distinct}, {"seconds", r.seconds}, {"program", program_json(r.program)}};
+  return Json{{"task", task},   {"value", r.value},       {"starts", r.starts},   {"stopping", r.stopping},
+              {"hits", r.hits}, {"distinct", r.distinct}, {"seconds", r.seconds}, {"program", program_json(r.program)}};
 }
 
 SynthesisResult decode(const Json& j) {
@@ -55,7 +55,8 @@ std::string number_or(const std::optional<double>& v, double scale, const char* 
 // Shows and saves each row as it comes.
 class RowSink {
  public:
-  RowSink(const Sweep& sweep, const commands::Values& v) : sweep_(sweep), json_(v.flag("--json")), timing_(!v.flag("--no-timing")) {
+  RowSink(const Sweep& sweep, const commands::Values& v)
+      : sweep_(sweep), json_(v.flag("--json")), timing_(!v.flag("--no-timing")) {
     if (v.given("--out")) {
       file_.emplace(v.text("--out"));
       file_->stream() << "criterion,positions,value,limit,ratio,starts,hits,distinct," << (timing_ ? "seconds," : "")
@@ -63,7 +64,8 @@ class RowSink {
       file_->flush();  // an unwritable file fails now, not after hours of work
     }
     if (!json_)
-      std::cout << "crit   N            value        ratio   hits/starts  distinct" << (timing_ ? "  seconds" : "") << "\n";
+      std::cout << "crit   N            value        ratio   hits/starts  distinct" << (timing_ ? "  seconds" : "")
+                << "\n";
   }
 
   void add(const SweepRow& row) {
@@ -72,15 +74,16 @@ class RowSink {
     if (sweep_.restricted() && progress_enabled() && announced_ != row.task.criterion)
       std::cerr << "the " << name << " limit on " << sweep_.region()->text() << "\n";
     announced_ = row.task.criterion;
-    if (json_) all_.push_back(commands::to_json(sweep_, row, timing_));
+    if (json_)
+      all_.push_back(commands::to_json(sweep_, row, timing_));
     else
       std::cout << fmt::format("{:>4}{:>4}{:>17.10g}{:>13}{:>7}/{:<6}{:>9}", name, row.task.positions, r.value,
                                number_or(row.limit, r.value, "{:.8g}"), r.hits, r.starts, r.distinct)
                 << (timing_ ? fmt::format("{:>9.3g}", r.seconds) : "") << std::endl;
     if (file_) {
       file_->stream() << fmt::format("{},{},{},{},{},{},{},{},", name, row.task.positions, r.value,
-                                     row.limit ? fmt::format("{}", *row.limit) : "", number_or(row.limit, r.value, "{}"),
-                                     r.starts, r.hits, r.distinct)
+                                     row.limit ? fmt::format("{}", *row.limit) : "",
+                                     number_or(row.limit, r.value, "{}"), r.starts, r.hits, r.distinct)
                       << (timing_ ? fmt::format("{},", r.seconds) : "") << '"' << program_cell(r.program) << "\"\n";
       file_->flush();
     }
@@ -120,7 +123,8 @@ int run_ranks(const Sweep& sweep, const Ranks& ranks, std::optional<RowSink>& si
       mine.push_back(Json{{"task", k}, {"error", e.what()}});
     }
     if (ranks.rank() == 0 && progress_enabled())
-      std::cerr << "sweep: rank 0 finished " << criterion_name(tasks[k].criterion) << " N = " << tasks[k].positions << "\n";
+      std::cerr << "sweep: rank 0 finished " << criterion_name(tasks[k].criterion) << " N = " << tasks[k].positions
+                << "\n";
   }
   const std::vector<std::string> texts = ranks.gather(json_text(mine));
   if (ranks.rank() != 0) return 0;

@@ -4,10 +4,10 @@
 #include "experiments/cli/table_options.hpp"
 #include "numeric/io/input_error.hpp"
 
+#include <unistd.h>
 #include <algorithm>
 #include <iostream>
 #include <memory>
-#include <unistd.h>
 
 namespace scalcal::cli {
 

@@ -78,17 +78,15 @@ int main(int argc, char** argv) {
   }
   const std::string name = args[0];
   if (name != "--version" && !subs.count(name))
-    return fail("", (name.rfind("-", 0) == 0 ? "unknown option " : "unknown command ") + name +
-                        " (try `scalcal help`)",
+    return fail("", (name.rfind("-", 0) == 0 ? "unknown option " : "unknown command ") + name + " (try `scalcal help`)",
                 2);
 
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
-    return fail(subs.count(name) ? name : "", option_message(e.what()) + " (see `scalcal " +
-                                                  (subs.count(name) ? name + " --help`)" : "help`)"),
-                2);
+    return fail(subs.count(name) ? name : "",
+                option_message(e.what()) + " (see `scalcal " + (subs.count(name) ? name + " --help`)" : "help`)"), 2);
   }
   try {
     reject_leftovers(*subs.at(name));

@@ -7,8 +7,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "numeric/program/program_csv.hpp"
 #include "numeric/program/program.hpp"
+#include "numeric/program/program_csv.hpp"
 
 namespace scalcal::cli {
 

@@ -55,9 +55,7 @@ std::function<commands::Values()> add_table_options(CLI::App& app, const command
                   ->check(table_check(o));
         break;
       default:
-        opt = app.add_option(o.name, store->text[o.name], o.help())
-                  ->type_name(type_name(o))
-                  ->transform(table_check(o));
+        opt = app.add_option(o.name, store->text[o.name], o.help())->type_name(type_name(o))->transform(table_check(o));
         if (o.required()) opt->required();
     }
     store->bound[o.name] = opt;
@@ -67,10 +65,12 @@ std::function<commands::Values()> add_table_options(CLI::App& app, const command
     commands::Values v(*t);
     for (const Option& o : t->options) {
       if (store->bound[o.name]->count() == 0) continue;
-      if (o.kind == OptionKind::flag) v.set_flag(o.name, store->flags[o.name]);
+      if (o.kind == OptionKind::flag)
+        v.set_flag(o.name, store->flags[o.name]);
       else if (o.kind == OptionKind::repeated)
         for (const auto& s : store->lists[o.name]) v.set(o.name, s);
-      else v.set(o.name, store->text[o.name]);
+      else
+        v.set(o.name, store->text[o.name]);
     }
     return v;
   };

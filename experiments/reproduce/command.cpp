@@ -14,7 +14,8 @@ const commands::CommandTable& reproduce_table() {
       "regenerate the paper's Figs. 4-9 and Tables 1-3 and the new figures (PDF, PNG, SVG, CSV, REPORT.md)",
       90,
       {text_option("--out", "DIR", "folder for the figures, their data and REPORT.md", "folder path", "results"),
-       flag_option("--quick", "small sweeps (2-4 optimiser starts, few N), as the tests run"), threads_option(), quiet}};
+       flag_option("--quick", "small sweeps (2-4 optimiser starts, few N), as the tests run"), threads_option(),
+       quiet}};
   return table;
 }
 
@@ -26,6 +27,8 @@ Options reproduce_options(const commands::Values& v) {
   return o;
 }
 
-commands::Json to_json(const RunSummary& s) { return commands::Json{{"report", s.report.string()}, {"seconds", s.seconds}}; }
+commands::Json to_json(const RunSummary& s) {
+  return commands::Json{{"report", s.report.string()}, {"seconds", s.seconds}};
+}
 
 }  // namespace scalcal::reproduce

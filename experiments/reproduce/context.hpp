@@ -11,15 +11,15 @@
 
 #include "experiments/reproduce/progress.hpp"
 #include "experiments/reproduce/report.hpp"
-#include "numeric/criteria/registry.hpp"
 #include "numeric/criteria/evaluation.hpp"
+#include "numeric/criteria/registry.hpp"
 #include "numeric/program/program.hpp"
 
 namespace scalcal::reproduce {
 
 struct Options {
   std::filesystem::path out = "results";
-  bool quick = false;     // small sweeps, for the tests: within a minute on two cores
+  bool quick = false;      // small sweeps, for the tests: within a minute on two cores
   std::uint64_t seed = 1;  // every random choice derives from this seed
   int threads = 0;         // 0: all cores
 };
@@ -47,11 +47,11 @@ struct Context {
   std::vector<std::string> optimiser_failures;  // optimised programs rejected by scalcal's own evaluation
 
   std::vector<Entry> uniform, rotation, jigs, paper, analytic9;  // analytic classes and the paper's tables
-  std::vector<Entry> printable;  // the registry's printable jigs (group "jig"), default mounting, full rank
-  std::map<int, Entry> random_best;                              // best of random_count programs per N (D)
+  std::vector<Entry> printable;      // the registry's printable jigs (group "jig"), default mounting, full rank
+  std::map<int, Entry> random_best;  // best of random_count programs per N (D)
   long long random_count = 0;
-  std::map<std::pair<CriterionKind, int>, Entry> optimised;       // (criterion, N)
-  std::vector<std::pair<std::string, double>> timings;           // stage, seconds
+  std::map<std::pair<CriterionKind, int>, Entry> optimised;  // (criterion, N)
+  std::vector<std::pair<std::string, double>> timings;       // stage, seconds
 
   const Entry* optimum(CriterionKind c, int n) const;
   std::vector<int> optimised_sizes(CriterionKind c) const;

@@ -45,8 +45,9 @@ void figure_limits(Context& ctx) {
   // Four panels on the page width, one key above them (a plot of its own, so it may use the full
   // width). Each limit is a black line drawn under the optimum's points, named in the panel.
   using namespace plots::style;
-  std::string body = "set multiplot\nset grid\nset xrange [8:31]\nset xtics 2\n"
-                     "set style textbox opaque noborder margins 0.5,0.5\n";
+  std::string body =
+      "set multiplot\nset grid\nset xrange [8:31]\nset xtics 2\n"
+      "set style textbox opaque noborder margins 0.5,0.5\n";
   const char* frames[] = {"0.09\nset rmargin at screen 0.48\nset tmargin at screen 0.9\nset bmargin at screen 0.56",
                           "0.59\nset rmargin at screen 0.98\nset tmargin at screen 0.9\nset bmargin at screen 0.56",
                           "0.09\nset rmargin at screen 0.48\nset tmargin at screen 0.47\nset bmargin at screen 0.13",
@@ -57,27 +58,37 @@ void figure_limits(Context& ctx) {
     const std::string cn(criterion_name(c));
     // D in units of 10^7, so its ticks read 1.55 rather than 1.5500·10^7.
     const std::string scale = c == CriterionKind::D ? "/1e7" : "";
-    body += "set lmargin at screen " + std::string(frames[i]) + "\n" + (i >= 2 ? "set xlabel 'N'\n" : "unset xlabel\n") +
-            "set ylabel " + plots::gp_quote(axis_label(c)) + "\nset format y '%g'\nset label 1 '(" + "abcd"[i] + ") " +
-            cn + "' at graph 0.97, graph 0.88 right front\nset label 2 " +
-            plots::gp_quote("limit " + math_text(lim.exact)) + " at graph 0.97, first " + csv_num(lim.value) + scale +
-            " offset 0,0.9 right front boxed\nplot " + csv_num(lim.value) + scale + " with lines lw 1.5 lc rgb '" +
-            limit + "' notitle, \\\n     'fig10.csv' skip 1 using 2:(strcol(1) eq '" + cn + "' ? $3" + scale +
-            " : NaN) with linespoints pt 9 ps 0.7 lw 1 lc rgb '" + optimised + "' notitle, \\\n     'fig10_paper.csv' "
-            "skip 1 using 2:(strcol(1) eq '" + cn + "' ? $3 : NaN) with points pt 6 ps 1.3 lw 2 lc rgb '" + plots::style::paper +
-            "' notitle\n";
+    body += "set lmargin at screen " + std::string(frames[i]) + "\n" +
+            (i >= 2 ? "set xlabel 'N'\n" : "unset xlabel\n") + "set ylabel " + plots::gp_quote(axis_label(c)) +
+            "\nset format y '%g'\nset label 1 '(" + "abcd"[i] + ") " + cn +
+            "' at graph 0.97, graph 0.88 right front\nset label 2 " + plots::gp_quote("limit " + math_text(lim.exact)) +
+            " at graph 0.97, first " + csv_num(lim.value) + scale + " offset 0,0.9 right front boxed\nplot " +
+            csv_num(lim.value) + scale + " with lines lw 1.5 lc rgb '" + limit +
+            "' notitle, \\\n     'fig10.csv' skip 1 using 2:(strcol(1) eq '" + cn + "' ? $3" + scale +
+            " : NaN) with linespoints pt 9 ps 0.7 lw 1 lc rgb '" + optimised +
+            "' notitle, \\\n     'fig10_paper.csv' "
+            "skip 1 using 2:(strcol(1) eq '" +
+            cn + "' ? $3 : NaN) with points pt 6 ps 1.3 lw 2 lc rgb '" + plots::style::paper + "' notitle\n";
   }
-  body += std::string("unset label\nunset xlabel\nunset ylabel\nunset grid\nunset border\nunset tics\n") +
-          "set lmargin at screen 0.02\nset rmargin at screen 0.98\nset tmargin at screen 0.99\nset bmargin at screen 0.93\n"
-          "set xrange [0:1]\nset yrange [0:1]\nset key center center horizontal maxcols 3 Left reverse samplen 2\n"
-          "plot NaN with lines lw 1.5 lc rgb '" + limit + "' title 'limit N → ∞', \\\n     NaN with linespoints pt 9 "
-          "ps 0.7 lw 1 lc rgb '" + optimised + "' title 'scalcal optimum', \\\n     NaN with points pt 6 ps 1.3 lw 2 "
-          "lc rgb '" + plots::style::paper + "' title 'paper, Tables 1–3'\nunset multiplot\n";
+  body +=
+      std::string("unset label\nunset xlabel\nunset ylabel\nunset grid\nunset border\nunset tics\n") +
+      "set lmargin at screen 0.02\nset rmargin at screen 0.98\nset tmargin at screen 0.99\nset bmargin at screen 0.93\n"
+      "set xrange [0:1]\nset yrange [0:1]\nset key center center horizontal maxcols 3 Left reverse samplen 2\n"
+      "plot NaN with lines lw 1.5 lc rgb '" +
+      limit +
+      "' title 'limit N → ∞', \\\n     NaN with linespoints pt 9 "
+      "ps 0.7 lw 1 lc rgb '" +
+      optimised +
+      "' title 'scalcal optimum', \\\n     NaN with points pt 6 ps 1.3 lw 2 "
+      "lc rgb '" +
+      plots::style::paper + "' title 'paper, Tables 1–3'\nunset multiplot\n";
   render_figure(ctx, "fig10", "optimum of D, A, E, S against N with the analytic limits", body, plots::kPageWidthCm, 9);
-  r.figure("fig10", "fig10: scalcal's optimum of each criterion against N (triangles), its N → ∞ limit (line) and the "
-                    "paper's Tables 1-3 programs at N = 18 (circles)");
-  r.paragraph("Data: [fig10.csv](fig10.csv) (with the multistart's starts, hits and seconds per N), "
-              "[fig10_paper.csv](fig10_paper.csv).");
+  r.figure("fig10",
+           "fig10: scalcal's optimum of each criterion against N (triangles), its N → ∞ limit (line) and the "
+           "paper's Tables 1-3 programs at N = 18 (circles)");
+  r.paragraph(
+      "Data: [fig10.csv](fig10.csv) (with the multistart's starts, hits and seconds per N), "
+      "[fig10_paper.csv](fig10_paper.csv).");
 }
 
 }  // namespace scalcal::reproduce

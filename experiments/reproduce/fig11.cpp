@@ -22,8 +22,7 @@ void figure_sphere(Context& ctx) {
   for (const Entry* e : {p12, p18})
     for (int i = 0; i < e->ev.positions; ++i) {
       const Vec3& v = e->program.positions[static_cast<std::size_t>(i)];
-      csv.row({std::to_string(e->ev.positions), std::to_string(i + 1), csv_num(v(0)), csv_num(v(1)),
-               csv_num(v(2))});
+      csv.row({std::to_string(e->ev.positions), std::to_string(i + 1), csv_num(v(0)), csv_num(v(1)), csv_num(v(2))});
     }
   csv.close();
   using namespace plots::style;
@@ -41,24 +40,30 @@ void figure_sphere(Context& ctx) {
   int panel = 0;
   for (int n : {12, 18}) {
     const std::string only = "($1==" + std::to_string(n) + " && depth($3,$4,$5) ";
-    body += "set origin " + std::string(panel ? "0.5" : "0") + ",-0.12\nset label 4 '(" + "ab"[panel] + ") N = " +
-            std::to_string(n) + "' at screen " + (panel ? "0.52" : "0.02") + ", screen 0.95 left front\n" +
+    body += "set origin " + std::string(panel ? "0.5" : "0") + ",-0.12\nset label 4 '(" + "ab"[panel] +
+            ") N = " + std::to_string(n) + "' at screen " + (panel ? "0.52" : "0.02") + ", screen 0.95 left front\n" +
             "splot cos(u)*cos(v),sin(u)*cos(v),sin(v) with lines lc rgb '#d9d9d9', \\\n"
-            "      'fig11.csv' skip 1 using " + only + "< 0 ? $3 : NaN):4:5 with points pt 7 ps 2.3 lc rgb 'white', \\\n"
-            "      '' skip 1 using " + only + "< 0 ? $3 : NaN):4:5 with points pt 6 ps 2.3 lw 1.5 lc rgb '" + grey +
-            "', \\\n      '' skip 1 using " + only + "< 0 ? $3 : NaN):4:5:(sprintf('{/*0.9 %d}', $2)) with labels tc rgb '" +
-            grey + "', \\\n      '' skip 1 using " + only + ">= 0 ? $3 : NaN):4:5 with points pt 7 ps 2.3 lc rgb '" +
+            "      'fig11.csv' skip 1 using " +
+            only +
+            "< 0 ? $3 : NaN):4:5 with points pt 7 ps 2.3 lc rgb 'white', \\\n"
+            "      '' skip 1 using " +
+            only + "< 0 ? $3 : NaN):4:5 with points pt 6 ps 2.3 lw 1.5 lc rgb '" + grey +
+            "', \\\n      '' skip 1 using " + only +
+            "< 0 ? $3 : NaN):4:5:(sprintf('{/*0.9 %d}', $2)) with labels tc rgb '" + grey +
+            "', \\\n      '' skip 1 using " + only + ">= 0 ? $3 : NaN):4:5 with points pt 7 ps 2.3 lc rgb '" +
             optimised + "', \\\n      '' skip 1 using " + only +
             ">= 0 ? $3 : NaN):4:5:(sprintf('{/*0.9 %d}', $2)) with labels tc rgb 'white'\n";
     ++panel;
   }
   body += "unset multiplot\n";
   render_figure(ctx, "fig11", "D-optimal N = 12 and 18 programs on the sphere", body, plots::kPageWidthCm, 6.5);
-  r.figure("fig11", "fig11: D-optimal programs (scalcal), N = 12 (a) and N = 18 (b): the positions on the unit sphere, "
-                    "numbered as in fig11.csv, with the meter's axes X, Y, Z; filled: on the hemisphere facing the "
-                    "viewer, open: behind the sphere");
-  r.paragraph("Data: [fig11.csv](fig11.csv). The paper notes that its optimised 12- and 20-position programs reach "
-              "the jigs' D without forming the symmetric figures.");
+  r.figure("fig11",
+           "fig11: D-optimal programs (scalcal), N = 12 (a) and N = 18 (b): the positions on the unit sphere, "
+           "numbered as in fig11.csv, with the meter's axes X, Y, Z; filled: on the hemisphere facing the "
+           "viewer, open: behind the sphere");
+  r.paragraph(
+      "Data: [fig11.csv](fig11.csv). The paper notes that its optimised 12- and 20-position programs reach "
+      "the jigs' D without forming the symmetric figures.");
 }
 
 }  // namespace scalcal::reproduce

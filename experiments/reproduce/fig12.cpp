@@ -48,7 +48,8 @@ std::vector<Family> families(bool quick) {
 std::array<double, 3> thetas(const Mat9& K) {
   std::array<double, 3> out{};
   for (int g = 0; g < 3; ++g)
-    for (int r : group_members<Paper9Model>(static_cast<ParameterGroup>(g))) out[g] = std::max(out[g], std::sqrt(K(r, r)));
+    for (int r : group_members<Paper9Model>(static_cast<ParameterGroup>(g)))
+      out[g] = std::max(out[g], std::sqrt(K(r, r)));
   return out;
 }
 
@@ -80,7 +81,8 @@ std::string fig12_script(const std::vector<Family>& fams, int largest_n) {
       "set multiplot\nset grid\nset xrange [0:185]\nset xtics 30\nset xlabel 'half-angle θ (degrees)'\n"
       "set key top right Left reverse samplen 2.5 width -1\nset tmargin at screen 0.91\nset bmargin at screen 0.16\n"
       "set lmargin at screen 0.075\nset rmargin at screen 0.325\nset label 1 '(a)' at graph 0, graph 1.04 left front\n"
-      "set logscale y\nset format y '10" + plots::sup("%T") + "'\nset ylabel 'limit on the region / on the sphere'\nplot ";
+      "set logscale y\nset format y '10" +
+      plots::sup("%T") + "'\nset ylabel 'limit on the region / on the sphere'\nplot ";
   int k = 0;
   for (std::size_t fi = 0; fi < fams.size(); ++fi)
     for (std::size_t ci = 0; ci < kCriteria.size(); ++ci) {
@@ -104,16 +106,17 @@ std::string fig12_script(const std::vector<Family>& fams, int largest_n) {
   k = 0;
   for (std::size_t fi = 0; fi < fams.size(); ++fi)
     for (int g = 0; g < 3; ++g)
-      body += std::string(k++ ? ", \\\n     " : "") + "'fig12_thetas.csv' skip 1 using 2:(strcol(1) eq '" + fams[fi].name +
-              "' ? $" + std::to_string(7 + g) + " : NaN) with linespoints dt " + dashes[fi] + " pt " +
+      body += std::string(k++ ? ", \\\n     " : "") + "'fig12_thetas.csv' skip 1 using 2:(strcol(1) eq '" +
+              fams[fi].name + "' ? $" + std::to_string(7 + g) + " : NaN) with linespoints dt " + dashes[fi] + " pt " +
               std::to_string(criterion_point[g + 1]) + " ps 0.6 lw 1.5 lc rgb '" + group[g] + "' " +
               (fi == 0 ? "title " + plots::gp_quote(thetas[g]) : std::string("notitle"));
   body += family_keys();
   // The scan's largest N as a line: the panel has a point to draw even when no region was reached.
-  body += "\nset lmargin at screen 0.745\nset rmargin at screen 0.985\nset label 1 '(c)'\nunset logscale y\n"
-          "set format y '%g'\nset ylabel 'smallest N within 1 % of the D limit'\nset yrange [0:" +
-          std::to_string(largest_n * 3 / 2 + 2) + "]\nplot " + std::to_string(largest_n) +
-          " with lines dt 4 lw 1.5 lc rgb '" + grey + "' title 'largest N tried'";
+  body +=
+      "\nset lmargin at screen 0.745\nset rmargin at screen 0.985\nset label 1 '(c)'\nunset logscale y\n"
+      "set format y '%g'\nset ylabel 'smallest N within 1 % of the D limit'\nset yrange [0:" +
+      std::to_string(largest_n * 3 / 2 + 2) + "]\nplot " + std::to_string(largest_n) +
+      " with lines dt 4 lw 1.5 lc rgb '" + grey + "' title 'largest N tried'";
   for (std::size_t fi = 0; fi < fams.size(); ++fi)
     body += std::string(", \\\n     ") + "'fig12_n.csv' skip 1 using 2:(strcol(1) eq '" + fams[fi].name +
             "' ? $4 : NaN) with linespoints dt " + dashes[fi] + " pt " + std::to_string(criterion_point[fi]) +
@@ -129,7 +132,8 @@ using plots::CsvWriter;
 void figure_regions(Context& ctx) {
   auto& rep = ctx.report;
   rep.heading(2, "fig12 (new): what a restricted bench costs");
-  CsvWriter limits(ctx.file("fig12.csv"), {"family", "theta_deg", "region", "criterion", "value", "relative_to_sphere"});
+  CsvWriter limits(ctx.file("fig12.csv"),
+                   {"family", "theta_deg", "region", "criterion", "value", "relative_to_sphere"});
   CsvWriter errors(ctx.file("fig12_thetas.csv"),
                    {"family", "theta_deg", "region", "theta_bias", "theta_scale", "theta_nonorth", "bias_relative",
                     "scale_relative", "nonorth_relative"});
@@ -166,19 +170,23 @@ void figure_regions(Context& ctx) {
       for (auto c : kCriteria) {
         const RegionLimit l = region.is_sphere() ? RegionLimit{} : region_limit(c, region, quick_limits);
         const double value = region.is_sphere() ? criterion_limit(c).value : l.value;
-        rows.push_back({f.name, c, theta, {f.name, csv_num(theta), spec, std::string(criterion_name(c)), csv_num(value),
-                                           csv_num(value / criterion_limit(c).value)}});
+        rows.push_back({f.name,
+                        c,
+                        theta,
+                        {f.name, csv_num(theta), spec, std::string(criterion_name(c)), csv_num(value),
+                         csv_num(value / criterion_limit(c).value)}});
         if (c == CriterionKind::D && !region.is_sphere()) d_limit = l;
       }
       const std::array<double, 3> t = d_limit ? thetas(d_limit->K) : sphere_thetas;
-      errors.row({f.name, csv_num(theta), spec, csv_num(t[0]), csv_num(t[1]), csv_num(t[2]), csv_num(t[0] / sphere_thetas[0]),
-                  csv_num(t[1] / sphere_thetas[1]), csv_num(t[2] / sphere_thetas[2])});
+      errors.row({f.name, csv_num(theta), spec, csv_num(t[0]), csv_num(t[1]), csv_num(t[2]),
+                  csv_num(t[0] / sphere_thetas[0]), csv_num(t[1] / sphere_thetas[1]),
+                  csv_num(t[2] / sphere_thetas[2])});
       const double limit = d_limit ? d_limit->value : criterion_limit(CriterionKind::D).value;
       const auto n = smallest_n(region, limit, n_scan, ctx);
       sizes.row({f.name, csv_num(theta), spec, n ? std::to_string(n->first) : "", n ? csv_num(n->second) : "",
                  n ? csv_num(n->second / limit) : ""});
-      n_table += "| `" + spec + "` | " + (n ? std::to_string(n->first) : "over " + std::to_string(n_scan.back())) + " | " +
-                 (n ? decimal(n->second / limit, 5) : "") + " |\n";
+      n_table += "| `" + spec + "` | " + (n ? std::to_string(n->first) : "over " + std::to_string(n_scan.back())) +
+                 " | " + (n ? decimal(n->second / limit, 5) : "") + " |\n";
     }
   // By family, then criterion, then angle: each curve is one run of rows, so gnuplot joins it.
   std::stable_sort(rows.begin(), rows.end(), [](const LimitRow& a, const LimitRow& b) {
@@ -192,18 +200,20 @@ void figure_regions(Context& ctx) {
   const std::string body = fig12_script(families(ctx.options.quick), n_scan.back());
   render_figure(ctx, "fig12", "what a restricted bench costs: region limits, RMS errors and the N to reach them", body,
                 plots::kPageWidthCm, 6.5);
-  rep.figure("fig12", "fig12: (a) each criterion's limit on a cap (solid), a band (dashed) and the six faces (dotted) "
-                      "relative to the sphere's; (b) the RMS errors θ_bias, θ_scale, θ_nonorth of the region's "
-                      "D-optimal measure relative to the sphere's; (c) the smallest N within 1 % of the region's D "
-                      "limit");
-  rep.paragraph("Data: [fig12.csv](fig12.csv), [fig12_thetas.csv](fig12_thetas.csv), [fig12_n.csv](fig12_n.csv). A cap "
-                "of half-angle θ holds the directions within θ of +z, a band those within θ of the horizontal plane, "
-                "the six faces those within θ of ±x, ±y or ±z. D on a cap or band is exact (numeric/region/zonal_d.hpp, "
-                "proofs/cap_d_limit.md); A, E, S are optimal measures found numerically (`scalcal limits --region` "
-                "adds their proven lower bounds). The smallest N is the first of N = " + std::to_string(n_scan.front()) +
-                ", " + std::to_string(n_scan.front() + 1) + ", ..., " + std::to_string(n_scan.back()) +
-                " whose best program (" + std::to_string(ctx.options.quick ? 2 : 4) +
-                " exchange starts) comes within 1 %:");
+  rep.figure("fig12",
+             "fig12: (a) each criterion's limit on a cap (solid), a band (dashed) and the six faces (dotted) "
+             "relative to the sphere's; (b) the RMS errors θ_bias, θ_scale, θ_nonorth of the region's "
+             "D-optimal measure relative to the sphere's; (c) the smallest N within 1 % of the region's D "
+             "limit");
+  rep.paragraph(
+      "Data: [fig12.csv](fig12.csv), [fig12_thetas.csv](fig12_thetas.csv), [fig12_n.csv](fig12_n.csv). A cap "
+      "of half-angle θ holds the directions within θ of +z, a band those within θ of the horizontal plane, "
+      "the six faces those within θ of ±x, ±y or ±z. D on a cap or band is exact (numeric/region/zonal_d.hpp, "
+      "proofs/cap_d_limit.md); A, E, S are optimal measures found numerically (`scalcal limits --region` "
+      "adds their proven lower bounds). The smallest N is the first of N = " +
+      std::to_string(n_scan.front()) + ", " + std::to_string(n_scan.front() + 1) + ", ..., " +
+      std::to_string(n_scan.back()) + " whose best program (" + std::to_string(ctx.options.quick ? 2 : 4) +
+      " exchange starts) comes within 1 %:");
   rep.paragraph(n_table);
 }
 

@@ -27,7 +27,8 @@ void write_fig4_data(Context& ctx, const std::vector<const Entry*>& drawn, doubl
     CsvWriter csv(ctx.file("fig4_programs.csv"), header);
     for (const auto* e : drawn) {
       auto cells = entry_cells(*e);
-      cells.push_back(e->family == "optimised" ? (e->ev.value(CriterionKind::D) > limit * (1 + kLimitTolerance) ? "1" : "0") : "");
+      cells.push_back(
+          e->family == "optimised" ? (e->ev.value(CriterionKind::D) > limit * (1 + kLimitTolerance) ? "1" : "0") : "");
       csv.row(cells);
     }
   }
@@ -44,39 +45,48 @@ void write_fig4_data(Context& ctx, const std::vector<const Entry*>& drawn, doubl
 void report_figures_4_5_6(Context& ctx, double limit) {
   auto& r = ctx.report;
   r.heading(2, "Figs. 4-6: generalized variance");
-  const std::string random_n = ctx.random_best.empty() ? std::string("")
-                                                       : " (run for N = " + std::to_string(ctx.random_best.begin()->first) +
-                                                             " to " + std::to_string(ctx.random_best.rbegin()->first) +
-                                                             " only)";
-  r.figure("fig4", "Fig. 4: det K (K for unit-vector rows, dimensionless) against N: uniform projections (squares), "
-                   "rotation about each axis [12] (stars), scalcal's D-optimal programs (triangles), the dodecahedral "
-                   "and icosahedral jigs (open circle, diamond), the " + std::to_string(ctx.printable.size()) +
-                   " printable jigs of full rank in their default mounting (open squares; experiments/docs/jigs.md) "
-                   "and the best of " + std::to_string(ctx.random_count) +
-                   " random programs per N (dashed" + random_n + ")");
-  r.figure("fig5", "Fig. 5: det K normalised by N^9, symbols as in Fig. 4; the arrow marks the one program above the "
-                   "range, with its value");
-  r.figure("fig6", "Fig. 6: lower part of N^9 det K, symbols as in Fig. 4, with the analytic limit 61509375/4; circled "
-                   "and numbered: the N whose optimum misses the limit");
-  r.paragraph("Data: [fig4_programs.csv](fig4_programs.csv) (every program drawn, with all criteria) and "
-              "[fig4_random.csv](fig4_random.csv) (the best of " + std::to_string(ctx.random_count) +
-              " programs uniform on the sphere per N; `scalcal random --positions N --count " +
-              std::to_string(ctx.random_count) + " --seed " + std::to_string(ctx.options.seed) + "` regenerates each).");
+  const std::string random_n = ctx.random_best.empty()
+                                   ? std::string("")
+                                   : " (run for N = " + std::to_string(ctx.random_best.begin()->first) + " to " +
+                                         std::to_string(ctx.random_best.rbegin()->first) + " only)";
+  r.figure("fig4",
+           "Fig. 4: det K (K for unit-vector rows, dimensionless) against N: uniform projections (squares), "
+           "rotation about each axis [12] (stars), scalcal's D-optimal programs (triangles), the dodecahedral "
+           "and icosahedral jigs (open circle, diamond), the " +
+               std::to_string(ctx.printable.size()) +
+               " printable jigs of full rank in their default mounting (open squares; experiments/docs/jigs.md) "
+               "and the best of " +
+               std::to_string(ctx.random_count) + " random programs per N (dashed" + random_n + ")");
+  r.figure("fig5",
+           "Fig. 5: det K normalised by N^9, symbols as in Fig. 4; the arrow marks the one program above the "
+           "range, with its value");
+  r.figure("fig6",
+           "Fig. 6: lower part of N^9 det K, symbols as in Fig. 4, with the analytic limit 61509375/4; circled "
+           "and numbered: the N whose optimum misses the limit");
+  r.paragraph(
+      "Data: [fig4_programs.csv](fig4_programs.csv) (every program drawn, with all criteria) and "
+      "[fig4_random.csv](fig4_random.csv) (the best of " +
+      std::to_string(ctx.random_count) +
+      " programs uniform on the sphere per N; `scalcal random --positions N --count " +
+      std::to_string(ctx.random_count) + " --seed " + std::to_string(ctx.options.seed) + "` regenerates each).");
   std::vector<std::vector<std::string>> rows;
   std::string missed;
   for (int n : ctx.optimised_sizes(CriterionKind::D)) {
     const Entry& e = *ctx.optimum(CriterionKind::D, n);
     const bool misses = e.ev.value(CriterionKind::D) > limit * (1 + kLimitTolerance);
     if (misses) missed += (missed.empty() ? "" : ", ") + std::to_string(n);
-    rows.push_back({std::to_string(n), decimal(e.ev.value(CriterionKind::D), 8), decimal(e.ev.value(CriterionKind::D) / limit - 1, 3), misses ? "misses" : "reaches",
+    rows.push_back({std::to_string(n), decimal(e.ev.value(CriterionKind::D), 8),
+                    decimal(e.ev.value(CriterionKind::D) / limit - 1, 3), misses ? "misses" : "reaches",
                     std::to_string(e.hits) + "/" + std::to_string(e.starts), decimal(e.seconds, 3)});
   }
-  r.paragraph("The optimised D-criterion programs (scalcal's multistart; `hits` = starts that reached the best value):");
+  r.paragraph(
+      "The optimised D-criterion programs (scalcal's multistart; `hits` = starts that reached the best value):");
   r.table({"N", "N^9 det K", "relative excess over the limit", "limit", "hits/starts", "seconds"}, rows);
   // Compare on the N this run optimised only.
   std::string expected;
   for (int n : ctx.optimised_sizes(CriterionKind::D))
-    if (n == 9 || n == 10 || n == 11 || n == 13 || n == 15) expected += (expected.empty() ? "" : ", ") + std::to_string(n);
+    if (n == 9 || n == 10 || n == 11 || n == 13 || n == 15)
+      expected += (expected.empty() ? "" : ", ") + std::to_string(n);
   const auto sizes = ctx.optimised_sizes(CriterionKind::D);
   r.claim("N whose optimum misses the limit (Fig. 6)", "9, 10, 11, 13, 15",
           (missed.empty() ? std::string("none") : missed) + " (of N = " + std::to_string(sizes.front()) + ".." +
@@ -118,29 +128,33 @@ void figures_4_5_6(Context& ctx) {
   const bool outlier = values.size() > 1 && values.back() > 1.5 * values[values.size() - 2];
   const double top5 = 1.2 * (outlier ? values[values.size() - 2] : values.back());
   std::string body5 = common + "set logscale y\nset ylabel 'N" + plots::sup("9") + " det K'\nset format y '%.1t·10" +
-                      plots::sup("%T") + "'\nset ytics (1.5e7, 2e7, 3e7, 5e7, 7e7, 1e8, 1.5e8, 2e8, 3e8, 5e8)\n"
-                      "set yrange [1.3e7:" + csv_num(top5) + "]\nunset key\n" + limit_label;
+                      plots::sup("%T") +
+                      "'\nset ytics (1.5e7, 2e7, 3e7, 5e7, 7e7, 1e8, 1.5e8, 2e8, 3e8, 5e8)\n"
+                      "set yrange [1.3e7:" +
+                      csv_num(top5) + "]\nunset key\n" + limit_label;
   // "best of 10^5 random\n(N ≤ 36)": the random line's label, in two lines.
   auto two_lines = [](std::string label) {
     if (const auto space = label.find(" ("); space != std::string::npos) label.replace(space, 1, "\\n");
     return label;
   };
   if (first_random && first_random->second.ev.value(CriterionKind::D) < top5)
-    body5 += "set label 2 \"" + two_lines(random_title(ctx)) + "\" at " +
-             std::to_string(first_random->first + 1.5) + ", " + csv_num(1.6 * first_random->second.ev.value(CriterionKind::D)) +
-             " left front tc rgb '" + random + "'\nset arrow 2 from " + std::to_string(first_random->first + 1.8) + ", " +
-             csv_num(1.3 * first_random->second.ev.value(CriterionKind::D)) + " to " + std::to_string(first_random->first + 0.3) + ", " +
-             csv_num(1.05 * first_random->second.ev.value(CriterionKind::D)) + " size screen 0.012,20 lw 1 lc rgb '" + random + "'\n";
+    body5 += "set label 2 \"" + two_lines(random_title(ctx)) + "\" at " + std::to_string(first_random->first + 1.5) +
+             ", " + csv_num(1.6 * first_random->second.ev.value(CriterionKind::D)) + " left front tc rgb '" + random +
+             "'\nset arrow 2 from " + std::to_string(first_random->first + 1.8) + ", " +
+             csv_num(1.3 * first_random->second.ev.value(CriterionKind::D)) + " to " +
+             std::to_string(first_random->first + 0.3) + ", " +
+             csv_num(1.05 * first_random->second.ev.value(CriterionKind::D)) + " size screen 0.012,20 lw 1 lc rgb '" +
+             random + "'\n";
   if (outlier)
     for (const auto* e : drawn)
       if (e->ev.value(CriterionKind::D) == values.back())
         body5 += "set arrow 1 from " + std::to_string(e->ev.positions) + ", graph 0.88 to " +
                  std::to_string(e->ev.positions) + ", graph 0.99 filled size screen 0.015,20 lw 2 lc rgb '" +
-                 (e->family == "rotation" ? rotation : black) + "'\nset label 3 " + plots::gp_quote(gp_power(e->ev.value(CriterionKind::D))) +
-                 " at " + std::to_string(e->ev.positions) + ", graph 0.93 offset 0.7,0 left front tc rgb '" +
-                 (e->family == "rotation" ? rotation : black) + "'\n";
-  render_figure(ctx, "fig5", "N^9 det K against N (the paper's Fig. 5)", body5 + class_plot({6, false, true, true}, ctx),
-                plots::kColumnWidthCm, 6.5);
+                 (e->family == "rotation" ? rotation : black) + "'\nset label 3 " +
+                 plots::gp_quote(gp_power(e->ev.value(CriterionKind::D))) + " at " + std::to_string(e->ev.positions) +
+                 ", graph 0.93 offset 0.7,0 left front tc rgb '" + (e->family == "rotation" ? rotation : black) + "'\n";
+  render_figure(ctx, "fig5", "N^9 det K against N (the paper's Fig. 5)",
+                body5 + class_plot({6, false, true, true}, ctx), plots::kColumnWidthCm, 6.5);
 
   // Fig. 6: the lower part, linear, up to where the rotation programs (2.58e7) and the random line
   // from N = 12 on fit with room for the label above them; the random line's start above the frame is
@@ -162,21 +176,25 @@ void figures_4_5_6(Context& ctx) {
                       " left front tc rgb '" + random + "'\n";
   std::vector<int> misses;
   for (int n : ctx.optimised_sizes(CriterionKind::D))
-    if (ctx.optimum(CriterionKind::D, n)->ev.value(CriterionKind::D) > limit * (1 + kLimitTolerance)) misses.push_back(n);
+    if (ctx.optimum(CriterionKind::D, n)->ev.value(CriterionKind::D) > limit * (1 + kLimitTolerance))
+      misses.push_back(n);
   for (std::size_t i = 0; i < misses.size(); ++i) {
     // Above the circle; to its left when the next N also misses at nearly the same height, where the
     // two numbers would collide.
     const double d = ctx.optimum(CriterionKind::D, misses[i])->ev.value(CriterionKind::D);
-    const bool crowded = i + 1 < misses.size() && misses[i + 1] == misses[i] + 1 &&
-                         std::abs(ctx.optimum(CriterionKind::D, misses[i + 1])->ev.value(CriterionKind::D) - d) < 0.08 * (top6 - 1.45e7);
+    const bool crowded =
+        i + 1 < misses.size() && misses[i + 1] == misses[i] + 1 &&
+        std::abs(ctx.optimum(CriterionKind::D, misses[i + 1])->ev.value(CriterionKind::D) - d) < 0.08 * (top6 - 1.45e7);
     body6 += "set label " + std::to_string(10 + i) + " '" + std::to_string(misses[i]) + "' at " +
              std::to_string(misses[i]) + ", " + csv_num(d) +
              (crowded ? " offset -1.7,-0.2 center" : " offset 0,1.1 center") + " front tc rgb '" + medium + "'\n";
   }
   std::string plot = class_plot({6, false, true, true}, ctx);
   plot.pop_back();
-  plot += ", \\\n     'fig4_programs.csv' skip 1 using 4:(strcol(13) eq '1' ? $6 : NaN) with points pt 6 ps 1.5 lw 2 "
-          "lc rgb '" + std::string(medium) + "' notitle\n";
+  plot +=
+      ", \\\n     'fig4_programs.csv' skip 1 using 4:(strcol(13) eq '1' ? $6 : NaN) with points pt 6 ps 1.5 lw 2 "
+      "lc rgb '" +
+      std::string(medium) + "' notitle\n";
   render_figure(ctx, "fig6", "lower part of N^9 det K with the analytic limit (the paper's Fig. 6)", body6 + plot,
                 plots::kColumnWidthCm, 6.5);
 

@@ -17,8 +17,8 @@ void figure_7(Context& ctx) {
   std::vector<std::pair<double, const Entry*>> bias;
   for (const auto* g : {&ctx.uniform, &ctx.rotation, &ctx.jigs, &ctx.printable})
     for (const auto& e : *g) bias.emplace_back(e.ev.theta_bias, &e);
-  for (int n : ctx.optimised_sizes(CriterionKind::D)) bias.emplace_back(ctx.optimum(CriterionKind::D, n)->ev.theta_bias,
-                                                                         ctx.optimum(CriterionKind::D, n));
+  for (int n : ctx.optimised_sizes(CriterionKind::D))
+    bias.emplace_back(ctx.optimum(CriterionKind::D, n)->ev.theta_bias, ctx.optimum(CriterionKind::D, n));
   std::sort(bias.begin(), bias.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   const bool outlier = bias.size() > 1 && bias.back().first > 1.5 * bias[bias.size() - 2].first;
   const double bulk_top = outlier ? bias[bias.size() - 2].first : bias.back().first;
@@ -27,12 +27,12 @@ void figure_7(Context& ctx) {
   if (outlier) {
     const Entry& e = *bias.back().second;
     const std::string colour = e.family == "rotation" ? rotation : black;
-    range_a += "set arrow 1 from " + std::to_string(e.ev.positions) + ", graph 0.75 to " +
-               std::to_string(e.ev.positions) + ", graph 0.98 filled size screen 0.012,20 lw 2 lc rgb '" + colour +
-               "'\nset label 2 " +
-               plots::gp_quote((e.family == "rotation" ? "rotation [12], N = " : e.name + ", N = ") +
-                               std::to_string(e.ev.positions) + ": " + decimal(e.ev.theta_bias, 3)) +
-               " at " + std::to_string(e.ev.positions) + ", graph 0.86 offset 0.6,0 left front tc rgb '" + colour + "'\n";
+    range_a +=
+        "set arrow 1 from " + std::to_string(e.ev.positions) + ", graph 0.75 to " + std::to_string(e.ev.positions) +
+        ", graph 0.98 filled size screen 0.012,20 lw 2 lc rgb '" + colour + "'\nset label 2 " +
+        plots::gp_quote((e.family == "rotation" ? "rotation [12], N = " : e.name + ", N = ") +
+                        std::to_string(e.ev.positions) + ": " + decimal(e.ev.theta_bias, 3)) +
+        " at " + std::to_string(e.ev.positions) + ", graph 0.86 offset 0.6,0 left front tc rgb '" + colour + "'\n";
   }
   // Three panels on one column, one key above them; the random line is a D result and stays out.
   std::string body =
@@ -68,11 +68,12 @@ void figure_7(Context& ctx) {
   for (const auto& [k, e] : ctx.optimised) take(e);
   auto& r = ctx.report;
   r.heading(2, "Fig. 7: normalised RMS errors of each program");
-  r.figure("fig7", "Fig. 7: θ_bias (a), θ_scale (b), θ_nonorth (c) of the programs of Fig. 4 against N, symbols as "
-                   "in Fig. 4; the arrow in (a) marks the one program above its range, with its value");
+  r.figure("fig7",
+           "Fig. 7: θ_bias (a), θ_scale (b), θ_nonorth (c) of the programs of Fig. 4 against N, symbols as "
+           "in Fig. 4; the arrow in (a) marks the one program above its range, with its value");
   r.paragraph("Data: [fig4_programs.csv](fig4_programs.csv). θ_bias over the " + std::to_string(count) +
-              " programs with N > 15 drawn here (and the paper's Tables 1-3): from " + decimal(lo, 5) + " to " + decimal(hi, 5) +
-              " (sqrt 3 = " + decimal(std::sqrt(3.0), 5) + ").");
+              " programs with N > 15 drawn here (and the paper's Tables 1-3): from " + decimal(lo, 5) + " to " +
+              decimal(hi, 5) + " (sqrt 3 = " + decimal(std::sqrt(3.0), 5) + ").");
   r.claim("θ_bias nearly independent of the program for N > 15 (Fig. 7)", "stated, no number",
           "range " + decimal(lo, 4) + " .. " + decimal(hi, 4) + " over " + std::to_string(count) + " programs",
           "spread " + decimal(100 * (hi - lo) / lo, 3) + " %");

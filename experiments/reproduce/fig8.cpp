@@ -26,8 +26,9 @@ struct Bar {
 std::string panel(const std::string& csv, const std::string& label, std::size_t bars, double top, bool key) {
   using namespace plots::style;
   auto title = [key](const char* t) { return key ? "title " + plots::gp_quote(t) : std::string("notitle"); };
-  return "set label 1 " + plots::gp_quote(label) + " at graph 0.5, graph 0.92 center front\nset yrange [0:" +
-         csv_num(top) + "]\nset xrange [0.4:" + std::to_string(bars) + ".75]\nplot '" + csv +
+  return "set label 1 " + plots::gp_quote(label) +
+         " at graph 0.5, graph 0.92 center front\nset yrange [0:" + csv_num(top) +
+         "]\nset xrange [0.4:" + std::to_string(bars) + ".75]\nplot '" + csv +
          "' skip 1 using ($1-0.27):4 with boxes lc rgb '" + group[0] + "' " + title(theta_bias) +
          ", \\\n     '' skip 1 using 1:5:xtic(2) with boxes lc rgb '" + group[1] + "' " + title(theta_scale) +
          ", \\\n     '' skip 1 using ($1+0.27):6 with boxes lc rgb '" + group[2] + "' " + title(theta_nonorth) +
@@ -66,7 +67,8 @@ void figure_8(Context& ctx) {
   const std::string body =
       "set multiplot\nset lmargin at screen 0.14\nset rmargin at screen 0.98\nset grid ytics\n"
       "set style fill solid 1.0 border rgb 'black'\nset boxwidth 0.27\nset ylabel '" +
-      std::string(plots::style::theta_q) + " = √(N max K(r,r))'\nset xtics rotate by 35 right nomirror\n"
+      std::string(plots::style::theta_q) +
+      " = √(N max K(r,r))'\nset xtics rotate by 35 right nomirror\n"
       "set key top right Left reverse samplen 1 width -2\nset tmargin at screen 0.98\nset bmargin at screen 0.62\n" +
       panel("fig8a.csv", "(a) N = 18", na, top_a, true) +
       "unset key\nset tmargin at screen 0.47\nset bmargin at screen 0.11\n" +
@@ -75,11 +77,13 @@ void figure_8(Context& ctx) {
                 plots::kColumnWidthCm, 11);
   auto& r = ctx.report;
   r.heading(2, "Fig. 8: RMS errors by optimisation criterion, N = 18 and N = 9");
-  r.figure("fig8", "Fig. 8: θ_bias, θ_scale, θ_nonorth for N = 18 (a) and N = 9 (b), by decreasing θ_nonorth: the "
-                   "analytic programs [12], [13], [14], scalcal's optimum for each criterion D, A, E, S, and the "
-                   "paper's Tables 1-3 (\"Tab. k\")");
-  r.paragraph("Data: [fig8a.csv](fig8a.csv), [fig8b.csv](fig8b.csv). \"Tab. k\" are the paper's own Table 1-3 "
-              "programs, evaluated by scalcal from the printed angles (0.1° resolution).");
+  r.figure("fig8",
+           "Fig. 8: θ_bias, θ_scale, θ_nonorth for N = 18 (a) and N = 9 (b), by decreasing θ_nonorth: the "
+           "analytic programs [12], [13], [14], scalcal's optimum for each criterion D, A, E, S, and the "
+           "paper's Tables 1-3 (\"Tab. k\")");
+  r.paragraph(
+      "Data: [fig8a.csv](fig8a.csv), [fig8b.csv](fig8b.csv). \"Tab. k\" are the paper's own Table 1-3 "
+      "programs, evaluated by scalcal from the printed angles (0.1° resolution).");
 }
 
 }  // namespace scalcal::reproduce

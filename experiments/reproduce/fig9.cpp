@@ -28,7 +28,8 @@ void figure_9(Context& ctx) {
   using namespace plots::style;
   std::vector<Item> items;
   static const Entry classic = make_entry("analytic", "classic18", "ref. [14]", Program::classic18());
-  items.push_back({"[14] 45° (classic 18)", "[14] 45°", &classic, std::string("with lines lw 2 dt 3 lc rgb '") + grey + "'"});
+  items.push_back(
+      {"[14] 45° (classic 18)", "[14] 45°", &classic, std::string("with lines lw 2 dt 3 lc rgb '") + grey + "'"});
   for (std::size_t i = 0; i < kCriteria.size(); ++i)
     if (const Entry* e = ctx.optimum(kCriteria[i], 18)) {
       const std::string cn(criterion_name(kCriteria[i]));
@@ -52,14 +53,16 @@ void figure_9(Context& ctx) {
     const auto& it = items[i];
     const Mat9 C = static_cast<double>(it.entry->ev.positions) * it.entry->ev.K;
     int r = 3, s = 6;
-    for (int j = 3; j < 6; ++j) if (C(j, j) > C(r, r)) r = j;
-    for (int j = 6; j < 9; ++j) if (C(j, j) > C(s, s)) s = j;
+    for (int j = 3; j < 6; ++j)
+      if (C(j, j) > C(r, r)) r = j;
+    for (int j = 6; j < 9; ++j)
+      if (C(j, j) > C(s, s)) s = j;
     const double a = C(r, r), b = C(s, s), c = C(r, s);
     extent_x = std::max(extent_x, std::sqrt(a));
     extent_y = std::max(extent_y, std::sqrt(b));
     cov.row({it.entry->name, CsvWriter::text(it.label), std::string(kParameterNames[static_cast<std::size_t>(r)]),
-             std::string(kParameterNames[static_cast<std::size_t>(s)]), csv_num(a), csv_num(b),
-             csv_num(c), csv_num(c / std::sqrt(a * b)), csv_num(std::sqrt(a * b - c * c))});
+             std::string(kParameterNames[static_cast<std::size_t>(s)]), csv_num(a), csv_num(b), csv_num(c),
+             csv_num(c / std::sqrt(a * b)), csv_num(std::sqrt(a * b - c * c))});
     // Points C^(1/2) (cos t, sin t) through the Cholesky factor: the 1-sigma ellipse x^T C^-1 x = 1.
     const double l11 = std::sqrt(a), l21 = c / l11, l22 = std::sqrt(std::max(0.0, b - l21 * l21));
     for (int k = 0; k <= 200; ++k) {
@@ -80,19 +83,22 @@ void figure_9(Context& ctx) {
       "set grid\nset size ratio -1\nset xlabel 'scale factor  √N σ" + plots::sub("δk") + " / σ" + plots::sub("ω") +
       "'\nset ylabel 'non-orthogonality  √N σ" + plots::sub("γ") + " / σ" + plots::sub("ω") +
       "'\nset key outside right center Left reverse samplen 2 width -3 spacing 1.2\nset xzeroaxis\nset yzeroaxis\n"
-      "set xtics 1\nset ytics 1\nset xrange [" + csv_num(-1.08 * extent_x) + ":" + csv_num(1.08 * extent_x) +
-      "]\nset yrange [" + csv_num(-1.08 * extent_y) + ":" + csv_num(1.08 * extent_y) + "]\n" + plot + "\n";
+      "set xtics 1\nset ytics 1\nset xrange [" +
+      csv_num(-1.08 * extent_x) + ":" + csv_num(1.08 * extent_x) + "]\nset yrange [" + csv_num(-1.08 * extent_y) + ":" +
+      csv_num(1.08 * extent_y) + "]\n" + plot + "\n";
   render_figure(ctx, "fig9", "error ellipses in the (scale factor, non-orthogonality) plane (the paper's Fig. 9)", body,
                 plots::kColumnWidthCm, 6.5);
   auto& rep = ctx.report;
   rep.heading(2, "Fig. 9: error ellipses in the (scale factor, non-orthogonality) plane");
-  rep.figure("fig9", "Fig. 9: 1-σ error ellipses of the N = 18 programs, projected on (δk, γ): scalcal's optimum for "
-                     "each criterion (lines), the paper's Tables 1-3 (symbols in the colour of their criterion) and "
-                     "the classic 18-position program [14] (dotted)");
-  rep.paragraph("Each ellipse is x^T C^-1 x = 1 with C the 2x2 block of N K for the scale-factor parameter and the "
-                "non-orthogonality parameter of largest variance; its half-extents along the axes are θ_scale and "
-                "θ_nonorth. D shrinks the area, A the sum of the variances, E the longest half-axis, S the larger "
-                "of the two variances. Data: [fig9.csv](fig9.csv), covariances in [fig9_cov.csv](fig9_cov.csv).");
+  rep.figure("fig9",
+             "Fig. 9: 1-σ error ellipses of the N = 18 programs, projected on (δk, γ): scalcal's optimum for "
+             "each criterion (lines), the paper's Tables 1-3 (symbols in the colour of their criterion) and "
+             "the classic 18-position program [14] (dotted)");
+  rep.paragraph(
+      "Each ellipse is x^T C^-1 x = 1 with C the 2x2 block of N K for the scale-factor parameter and the "
+      "non-orthogonality parameter of largest variance; its half-extents along the axes are θ_scale and "
+      "θ_nonorth. D shrinks the area, A the sum of the variances, E the longest half-axis, S the larger "
+      "of the two variances. Data: [fig9.csv](fig9.csv), covariances in [fig9_cov.csv](fig9_cov.csv).");
 }
 
 }  // namespace scalcal::reproduce

@@ -15,9 +15,18 @@ std::vector<std::string> entry_header() {
 
 std::vector<std::string> entry_cells(const Entry& e) {
   const auto& v = e.ev;
-  return {e.family,          CsvWriter::text(e.name), CsvWriter::text(e.source), std::to_string(v.positions),
-          csv_num(v.raw(CriterionKind::D)), csv_num(v.value(CriterionKind::D)), csv_num(v.value(CriterionKind::A)), csv_num(v.value(CriterionKind::E)), csv_num(v.value(CriterionKind::S)),
-          csv_num(v.theta_bias), csv_num(v.theta_scale), csv_num(v.theta_nonorth)};
+  return {e.family,
+          CsvWriter::text(e.name),
+          CsvWriter::text(e.source),
+          std::to_string(v.positions),
+          csv_num(v.raw(CriterionKind::D)),
+          csv_num(v.value(CriterionKind::D)),
+          csv_num(v.value(CriterionKind::A)),
+          csv_num(v.value(CriterionKind::E)),
+          csv_num(v.value(CriterionKind::S)),
+          csv_num(v.theta_bias),
+          csv_num(v.theta_scale),
+          csv_num(v.theta_nonorth)};
 }
 
 void render_figure(Context& ctx, const std::string& name, const std::string& comment, const std::string& body,
@@ -38,8 +47,7 @@ std::string random_title(const Context& ctx) {
   if (count.size() > 3 && count.find_first_not_of('0', 1) == std::string::npos && count[0] == '1')
     count = "10" + plots::sup(std::to_string(count.size() - 1));
   std::string title = "best of " + count + " random";
-  if (!ctx.random_best.empty())
-    title += " (N ≤ " + std::to_string(ctx.random_best.rbegin()->first) + ")";
+  if (!ctx.random_best.empty()) title += " (N ≤ " + std::to_string(ctx.random_best.rbegin()->first) + ")";
   return title;
 }
 
@@ -55,10 +63,12 @@ std::string series(const std::string& family_test, int column, const std::string
 std::string class_plot(const ClassPlot& p, const Context& ctx) {
   using namespace plots::style;
   auto title = [&p](const std::string& full, const std::string& brief = "") {
-    return p.titles ? "title " + plots::gp_quote(p.short_titles && !brief.empty() ? brief : full) : std::string("notitle");
+    return p.titles ? "title " + plots::gp_quote(p.short_titles && !brief.empty() ? brief : full)
+                    : std::string("notitle");
   };
   std::vector<std::string> parts;
-  if (p.limit) parts.push_back(std::string("LIMIT with lines lw 2 lc rgb '") + limit + "' " + title("limit 61509375/4"));
+  if (p.limit)
+    parts.push_back(std::string("LIMIT with lines lw 2 lc rgb '") + limit + "' " + title("limit 61509375/4"));
   parts.push_back(series("strcol(1) eq 'uniform'", p.column,
                          std::string("with points pt 5 ps 0.75 lc rgb '") + uniform + "'",
                          title("uniform projections", "uniform")));

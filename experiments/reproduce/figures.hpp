@@ -13,12 +13,12 @@ void figures_4_5_6(Context& ctx);
 void figure_7(Context& ctx);
 void figure_8(Context& ctx);
 void figure_9(Context& ctx);
-void figure_limits(Context& ctx);  // fig10: optimum of each criterion against N, with its limit
-void figure_sphere(Context& ctx);  // fig11: the optimal N = 12 and 18 programs on the sphere
-void figure_regions(Context& ctx); // fig12: what a restricted bench (cap, band, faces) costs
-void real_data(Context& ctx);      // fig13: the Xsens log calibrated end to end
+void figure_limits(Context& ctx);   // fig10: optimum of each criterion against N, with its limit
+void figure_sphere(Context& ctx);   // fig11: the optimal N = 12 and 18 programs on the sphere
+void figure_regions(Context& ctx);  // fig12: what a restricted bench (cap, band, faces) costs
+void real_data(Context& ctx);       // fig13: the Xsens log calibrated end to end
 void tables_1_2_3(Context& ctx);
-void summary(Context& ctx);        // the paper's stated numbers beside scalcal's, at the top
+void summary(Context& ctx);  // the paper's stated numbers beside scalcal's, at the top
 
 // The CSV columns describing one program (family, name, source, N, det K, D, A, E, S, thetas).
 std::vector<std::string> entry_header();
@@ -28,10 +28,10 @@ std::vector<std::string> entry_cells(const Entry& e);
 // Fig. 4 (squares first, then the line of the random programs, stars, triangles and the open jig
 // symbols on top), with the limit line LIMIT underneath them all when `limit` is set.
 struct ClassPlot {
-  int column = 5;       // 5 det K, 6 D, 10-12 the thetas
-  bool titles = true;   // key entries; Figs. 5 and 6 label their lines in the plot instead
-  bool random = true;   // the random programs' dashed line (their D when column is 6, else det K)
-  bool limit = false;   // the D limit, as the gnuplot variable LIMIT
+  int column = 5;             // 5 det K, 6 D, 10-12 the thetas
+  bool titles = true;         // key entries; Figs. 5 and 6 label their lines in the plot instead
+  bool random = true;         // the random programs' dashed line (their D when column is 6, else det K)
+  bool limit = false;         // the D limit, as the gnuplot variable LIMIT
   bool short_titles = false;  // "rotation [12]" for a key in three columns
 };
 std::string class_plot(const ClassPlot& p, const Context& ctx);

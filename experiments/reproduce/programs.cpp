@@ -6,9 +6,9 @@
 #include <cmath>
 
 #include "experiments/reproduce/format.hpp"
+#include "numeric/model/design.hpp"
 #include "numeric/program/catalogue.hpp"
 #include "numeric/program/program_names.hpp"
-#include "numeric/model/design.hpp"
 
 #include "numeric/synthesis/multistart.hpp"
 #include "numeric/synthesis/random_search.hpp"
@@ -22,8 +22,7 @@ void compute_analytic(Context& ctx) {
       for (int d = 0; d <= 6; ++d) {
         const int n = 6 * a + 12 * e + 8 * d;
         if (n < 9 || n > 48) continue;
-        const std::string name =
-            "octahedral-" + std::to_string(a) + "-" + std::to_string(e) + "-" + std::to_string(d);
+        const std::string name = "octahedral-" + std::to_string(a) + "-" + std::to_string(e) + "-" + std::to_string(d);
         Entry en = make_entry("uniform", name, "Fig. 4 (squares)", Program::octahedral(a, e, d));
         if (en.ev.full_rank()) ctx.uniform.push_back(std::move(en));
       }
@@ -65,10 +64,12 @@ void compute_random(Context& ctx) {
   for (int n = n_lo; n <= n_hi; ++n) {
     ctx.progress.part(rows_before / all_rows, n / all_rows, "N = " + std::to_string(n));
     rows_before += n;
-    const RandomSearchResult r = random_search(n, ctx.random_count, CriterionKind::D, ctx.options.seed, ctx.options.threads);
+    const RandomSearchResult r =
+        random_search(n, ctx.random_count, CriterionKind::D, ctx.options.seed, ctx.options.threads);
     ctx.random_best.emplace(n, make_entry("random", "random-best-" + std::to_string(n), "Fig. 4 (dashed)", r.program));
   }
-  ctx.timings.emplace_back("random programs", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  ctx.timings.emplace_back("random programs",
+                           std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
 }
 
 void compute_optimised(Context& ctx) {
@@ -126,9 +127,9 @@ void compute_optimised(Context& ctx) {
       so.threads = ctx.threads();
       so.progress = [&ctx](int d, int t) { ctx.progress.step(d, t); };
       const SynthesisResult r = synthesize(so);
-      Entry e = make_entry("optimised",
-                           "optimised-" + std::string(criterion_name(plan.criterion)) + "-" + std::to_string(n),
-                           "scalcal synthesize", r.program);
+      Entry e =
+          make_entry("optimised", "optimised-" + std::string(criterion_name(plan.criterion)) + "-" + std::to_string(n),
+                     "scalcal synthesize", r.program);
       e.starts = r.starts;
       e.hits = r.hits;
       e.seconds = r.seconds;
@@ -146,7 +147,8 @@ void compute_optimised(Context& ctx) {
       }
       ++done;
     }
-  ctx.timings.emplace_back("optimised programs", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  ctx.timings.emplace_back("optimised programs",
+                           std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
 }
 
 }  // namespace scalcal::reproduce

@@ -9,8 +9,8 @@
 #include "experiments/reproduce/figures.hpp"
 #include "experiments/reproduce/format.hpp"
 #include "numeric/calibration/any_units.hpp"
-#include "numeric/calibration/static_intervals.hpp"
 #include "numeric/calibration/raw_log.hpp"
+#include "numeric/calibration/static_intervals.hpp"
 #include "numeric/program/catalogue.hpp"
 #include "numeric/region/program_advice.hpp"
 #include "plots/csv_writer.hpp"
@@ -30,7 +30,8 @@ void report_parameters_and_program(Report& rep, const AnyUnitsCalibration& a, co
   const char* names[3] = {"x", "y", "z"};
   const char* pairs[3] = {"xy", "yz", "zx"};
   for (int k = 0; k < 3; ++k) {
-    rows.push_back({std::string("offset ") + names[k] + " (counts)", decimal(a.correction.offset(k), 8), decimal(a.bias_std(k), 3)});
+    rows.push_back({std::string("offset ") + names[k] + " (counts)", decimal(a.correction.offset(k), 8),
+                    decimal(a.bias_std(k), 3)});
   }
   for (int k = 0; k < 3; ++k)
     rows.push_back({std::string("scale ") + names[k] + " (counts per m/s²)", decimal(a.correction.scale(k), 7),
@@ -43,15 +44,17 @@ void report_parameters_and_program(Report& rep, const AnyUnitsCalibration& a, co
   for (const auto& s : advice.suggested)
     suggestions += (suggestions.empty() ? "" : "; ") + std::string("(") + decimal(s.position(0), 3) + ", " +
                    decimal(s.position(1), 3) + ", " + decimal(s.position(2), 3) + ") → D " + decimal(s.value, 4);
-  rep.paragraph("The program the positions turned out to be: N = " + std::to_string(ev.positions) + ", D = " +
-                decimal(ev.value(CriterionKind::D), 4) + ", A = " + decimal(ev.value(CriterionKind::A), 4) + ", E = " + decimal(ev.value(CriterionKind::E), 4) + ", S = " +
-                decimal(ev.value(CriterionKind::S), 4) + ", θ = " + decimal(ev.theta_bias, 3) + ", " + decimal(ev.theta_scale, 3) + ", " +
-                decimal(ev.theta_nonorth, 3) + "; efficiency against the sphere's limits D " +
-                decimal(advice.efficiency[0], 3) + ", A " + decimal(advice.efficiency[1], 3) + ", E " +
-                decimal(advice.efficiency[2], 3) + ", S " + decimal(advice.efficiency[3], 3) +
-                ". The three positions that would improve D most (gravity's direction in the meter's frame): " +
-                suggestions + ". The comparison with an independent SciPy fit is in "
-                "[experiments/docs/real_data.md](../experiments/docs/real_data.md).");
+  rep.paragraph(
+      "The program the positions turned out to be: N = " + std::to_string(ev.positions) +
+      ", D = " + decimal(ev.value(CriterionKind::D), 4) + ", A = " + decimal(ev.value(CriterionKind::A), 4) +
+      ", E = " + decimal(ev.value(CriterionKind::E), 4) + ", S = " + decimal(ev.value(CriterionKind::S), 4) +
+      ", θ = " + decimal(ev.theta_bias, 3) + ", " + decimal(ev.theta_scale, 3) + ", " + decimal(ev.theta_nonorth, 3) +
+      "; efficiency against the sphere's limits D " + decimal(advice.efficiency[0], 3) + ", A " +
+      decimal(advice.efficiency[1], 3) + ", E " + decimal(advice.efficiency[2], 3) + ", S " +
+      decimal(advice.efficiency[3], 3) +
+      ". The three positions that would improve D most (gravity's direction in the meter's frame): " + suggestions +
+      ". The comparison with an independent SciPy fit is in "
+      "[experiments/docs/real_data.md](../experiments/docs/real_data.md).");
 }
 
 }  // namespace
@@ -79,7 +82,8 @@ void real_data(Context& ctx) {
   std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2), sorted.end());
   const double one_gain = sorted[sorted.size() / 2] / kG;
 
-  CsvWriter intervals(ctx.file("real_intervals.csv"), {"interval", "start", "end", "samples", "before_minus_g", "after_minus_g"});
+  CsvWriter intervals(ctx.file("real_intervals.csv"),
+                      {"interval", "start", "end", "samples", "before_minus_g", "after_minus_g"});
   double ss_before = 0, ss_after = 0;
   for (std::size_t k = 0; k < data.size(); ++k) {
     const double before = raw_norms[k] / one_gain - kG, after = a.correction.apply(data[k].mean()).norm() - kG;
@@ -96,7 +100,8 @@ void real_data(Context& ctx) {
   for (int i = 0; i < log.size(); i += 5)
     if (log.finite(i))
       raw.row({csv_num(log.t[static_cast<std::size_t>(i)]), csv_num(log.samples[static_cast<std::size_t>(i)](0)),
-               csv_num(log.samples[static_cast<std::size_t>(i)](1)), csv_num(log.samples[static_cast<std::size_t>(i)](2))});
+               csv_num(log.samples[static_cast<std::size_t>(i)](1)),
+               csv_num(log.samples[static_cast<std::size_t>(i)](2))});
   raw.close();
 
   double lo = INFINITY, hi = -INFINITY;
@@ -113,34 +118,51 @@ void real_data(Context& ctx) {
       "set multiplot\nset grid\nset lmargin at screen 0.1\nset rmargin at screen 0.78\n"
       "set key outside right top Left reverse samplen 2 width -1\nset label 1 '(a)' at graph 0, graph 1.04 left front\n"
       "set tmargin at screen 0.94\nset bmargin at screen 0.6\nset xlabel 't (s)'\n"
-      "set xrange [0:" + csv_num(std::ceil(log.t.back() / 10) * 10) + "]\n"
-      "set ylabel 'ADC counts'\nset style fill solid 1.0 noborder\nset yrange [" + csv_num(mid - half) + ":" +
-      csv_num(mid + half) + "]\n"
-      "plot 'real_intervals.csv' skip 1 using (($2+$3)/2):(" + csv_num(mid) + "):(($3-$2)/2):(" + csv_num(half) +
+      "set xrange [0:" +
+      csv_num(std::ceil(log.t.back() / 10) * 10) +
+      "]\n"
+      "set ylabel 'ADC counts'\nset style fill solid 1.0 noborder\nset yrange [" +
+      csv_num(mid - half) + ":" + csv_num(mid + half) +
+      "]\n"
+      "plot 'real_intervals.csv' skip 1 using (($2+$3)/2):(" +
+      csv_num(mid) + "):(($3-$2)/2):(" + csv_num(half) +
       ") with boxxyerror lc rgb '#e3e3e3' title 'static', \\\n"
-      "     'real_log.csv' skip 1 using 1:2 with lines lw 1 lc rgb '" + dark + "' title 'x', \\\n"
-      "     'real_log.csv' skip 1 using 1:3 with lines lw 1 lc rgb '" + medium + "' title 'y', \\\n"
-      "     'real_log.csv' skip 1 using 1:4 with lines lw 1 lc rgb '" + light + "' title 'z'\n"
+      "     'real_log.csv' skip 1 using 1:2 with lines lw 1 lc rgb '" +
+      dark +
+      "' title 'x', \\\n"
+      "     'real_log.csv' skip 1 using 1:3 with lines lw 1 lc rgb '" +
+      medium +
+      "' title 'y', \\\n"
+      "     'real_log.csv' skip 1 using 1:4 with lines lw 1 lc rgb '" +
+      light +
+      "' title 'z'\n"
       "set label 1 '(b)'\nset tmargin at screen 0.44\nset bmargin at screen 0.12\nset xlabel 'static interval'\n"
-      "set ylabel '| |a| − g | (m/s" + plots::sup("2") + ")'\nset xrange [0:" + std::to_string(d.intervals.size() + 1) +
-      "]\nset yrange [*:*]\nset logscale y\nset format y '10" + plots::sup("%T") + "'\n"
-      "plot 'real_intervals.csv' skip 1 using 1:(abs($5)) with points pt 6 ps 0.9 lw 1.5 lc rgb '" + grey +
+      "set ylabel '| |a| − g | (m/s" +
+      plots::sup("2") + ")'\nset xrange [0:" + std::to_string(d.intervals.size() + 1) +
+      "]\nset yrange [*:*]\nset logscale y\nset format y '10" + plots::sup("%T") +
+      "'\n"
+      "plot 'real_intervals.csv' skip 1 using 1:(abs($5)) with points pt 6 ps 0.9 lw 1.5 lc rgb '" +
+      grey +
       "' title 'before (one gain)', \\\n"
-      "     'real_intervals.csv' skip 1 using 1:(abs($6)) with points pt 7 ps 0.9 lc rgb '" + dark +
-      "' title 'after calibration'\nunset multiplot\n";
-  render_figure(ctx, "fig13", "the Xsens log with its static intervals, and |a| - g per interval before and after", body,
-                plots::kPageWidthCm, 9.5);
-  rep.figure("fig13", "fig13: (a) the raw log (ADC counts) with the static intervals scalcal found (shaded); (b) "
-                      "| |a| − g | of each interval's mean before calibration (zero at 32768, one gain for all three "
-                      "axes) and after");
+      "     'real_intervals.csv' skip 1 using 1:(abs($6)) with points pt 7 ps 0.9 lc rgb '" +
+      dark + "' title 'after calibration'\nunset multiplot\n";
+  render_figure(ctx, "fig13", "the Xsens log with its static intervals, and |a| - g per interval before and after",
+                body, plots::kPageWidthCm, 9.5);
+  rep.figure("fig13",
+             "fig13: (a) the raw log (ADC counts) with the static intervals scalcal found (shaded); (b) "
+             "| |a| − g | of each interval's mean before calibration (zero at 32768, one gain for all three "
+             "axes) and after");
   const ProgramAdvice advice = advise_program(Program{a.directions}, sphere_region(), CriterionKind::D, 3);
   rep.paragraph("`scalcal calibrate --measurements data/xsens_acc.txt --magnitude 9.81744` on the log of IMU-TK (" +
                 std::to_string(log.size()) + " rows, 100 Hz; BSD licence, data/README.md): " +
                 std::to_string(d.intervals.size()) + " static intervals (window " + std::to_string(d.window) +
-                " samples, threshold " + decimal(d.threshold, 4) + " counts² = 6 × the noise floor of the log's quiet windows), " +
-                std::to_string(a.estimate.iterations) + " iterations from the ellipsoid start. RMS of |a| − g over the "
-                "intervals: " + decimal(rms_before, 3) + " of g before (one gain " + decimal(one_gain, 5) +
-                " counts per m/s²), " + decimal(rms_after, 3) + " after. Data: [real_intervals.csv](real_intervals.csv), "
+                " samples, threshold " + decimal(d.threshold, 4) +
+                " counts² = 6 × the noise floor of the log's quiet windows), " + std::to_string(a.estimate.iterations) +
+                " iterations from the ellipsoid start. RMS of |a| − g over the "
+                "intervals: " +
+                decimal(rms_before, 3) + " of g before (one gain " + decimal(one_gain, 5) + " counts per m/s²), " +
+                decimal(rms_after, 3) +
+                " after. Data: [real_intervals.csv](real_intervals.csv), "
                 "[real_log.csv](real_log.csv) (every 5th row).");
   report_parameters_and_program(rep, a, advice);
 }

@@ -29,7 +29,8 @@ void Report::paragraph(const std::string& text) { body_ << text << "\n\n"; }
 
 void Report::figure(const std::string& stem, const std::string& caption) {
   body_ << "![" << caption << "](" << stem << ".png)\n\n*" << caption << "* (for print: [" << stem << ".pdf](" << stem
-        << ".pdf); vector: [" << stem << ".svg](" << stem << ".svg); script: [" << stem << ".gp](" << stem << ".gp))\n\n";
+        << ".pdf); vector: [" << stem << ".svg](" << stem << ".svg); script: [" << stem << ".gp](" << stem
+        << ".gp))\n\n";
 }
 
 void Report::table(const std::vector<std::string>& header, const std::vector<std::vector<std::string>>& rows) {

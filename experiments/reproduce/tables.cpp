@@ -21,8 +21,9 @@ double value(const Evaluation& ev, CriterionKind c) { return ev.value(c); }
 void tables_1_2_3(Context& ctx) {
   auto& r = ctx.report;
   r.heading(2, "Tables 1-3: the paper's N = 18 programs beside scalcal's");
-  r.paragraph("The paper prints the angles (azimuth alpha1, elevation alpha2, 0.1° resolution) and no criterion "
-              "values; scalcal evaluates them and optimises the same criterion. Data: [tables.csv](tables.csv).");
+  r.paragraph(
+      "The paper prints the angles (azimuth alpha1, elevation alpha2, 0.1° resolution) and no criterion "
+      "values; scalcal evaluates them and optimises the same criterion. Data: [tables.csv](tables.csv).");
   CsvWriter csv(ctx.file("tables.csv"), {"table", "criterion", "program", "N", "D", "A", "E", "S", "theta_bias",
                                          "theta_scale", "theta_nonorth", "criterion_value", "limit"});
   const CriterionKind crit[] = {CriterionKind::A, CriterionKind::E, CriterionKind::S};
@@ -33,10 +34,13 @@ void tables_1_2_3(Context& ctx) {
     std::vector<std::vector<std::string>> rows;
     auto add = [&](const std::string& label, const Entry& e) {
       const auto& v = e.ev;
-      rows.push_back({label, decimal(v.value(CriterionKind::D), 7), decimal(v.value(CriterionKind::A), 7), decimal(v.value(CriterionKind::E), 7), decimal(v.value(CriterionKind::S), 7), decimal(v.theta_bias, 5),
-                      decimal(v.theta_scale, 5), decimal(v.theta_nonorth, 5), pct(value(v, c), lim)});
-      csv.row({std::to_string(t + 1), cn, e.name, std::to_string(v.positions), csv_num(v.value(CriterionKind::D)), csv_num(v.value(CriterionKind::A)),
-               csv_num(v.value(CriterionKind::E)), csv_num(v.value(CriterionKind::S)), csv_num(v.theta_bias), csv_num(v.theta_scale),
+      rows.push_back({label, decimal(v.value(CriterionKind::D), 7), decimal(v.value(CriterionKind::A), 7),
+                      decimal(v.value(CriterionKind::E), 7), decimal(v.value(CriterionKind::S), 7),
+                      decimal(v.theta_bias, 5), decimal(v.theta_scale, 5), decimal(v.theta_nonorth, 5),
+                      pct(value(v, c), lim)});
+      csv.row({std::to_string(t + 1), cn, e.name, std::to_string(v.positions), csv_num(v.value(CriterionKind::D)),
+               csv_num(v.value(CriterionKind::A)), csv_num(v.value(CriterionKind::E)),
+               csv_num(v.value(CriterionKind::S)), csv_num(v.theta_bias), csv_num(v.theta_scale),
                csv_num(v.theta_nonorth), csv_num(value(v, c)), csv_num(lim)});
     };
     const Entry& paper = ctx.paper[static_cast<std::size_t>(t)];

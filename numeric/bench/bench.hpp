@@ -58,8 +58,10 @@ bool bench_remount(const B&, const BenchSetting& a, const BenchSetting& b) {
 
 template <BenchType B>
 constexpr bool bench_angles_as_array() {
-  if constexpr (requires { B::kAnglesAsArray; }) return B::kAnglesAsArray;
-  else return false;
+  if constexpr (requires { B::kAnglesAsArray; })
+    return B::kAnglesAsArray;
+  else
+    return false;
 }
 
 // Each cartesian combination of per-axis values (axis_values): the ways to write solved angles.

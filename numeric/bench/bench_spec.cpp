@@ -41,7 +41,8 @@ Vec3 spec_axis(std::string_view spec, const std::string& text) {
   if (t == "x") return Vec3(sign, 0, 0);
   if (t == "y") return Vec3(0, sign, 0);
   if (t == "z") return Vec3(0, 0, sign);
-  bench_error(spec, "an axis is one of the meter's axes x, y, z (optionally -x, ...), got '" + display_name(text) + "'");
+  bench_error(spec,
+              "an axis is one of the meter's axes x, y, z (optionally -x, ...), got '" + display_name(text) + "'");
 }
 
 std::string axis_text(const Vec3& a) {

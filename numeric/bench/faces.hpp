@@ -34,7 +34,8 @@ struct FacesBench {
     const Vec3 up[6] = {Vec3::UnitZ(), -Vec3::UnitZ(), Vec3::UnitX(), -Vec3::UnitX(), Vec3::UnitY(), -Vec3::UnitY()};
     for (const Vec3& u : up) {
       const std::string down = axis_text(-u);
-      b.mounting_list.push_back(Mounting{"face " + down + " down (" + axis_text(u) + " up)", down, mounting_rotation(u)});
+      b.mounting_list.push_back(
+          Mounting{"face " + down + " down (" + axis_text(u) + " up)", down, mounting_rotation(u)});
     }
     return b;
   }
@@ -49,7 +50,9 @@ struct FacesBench {
   const std::vector<BenchAxis>& axes() const { return axis_list; }
   const std::vector<Mounting>& mountings() const { return mounting_list; }
   Mat3 orientation(const BenchSetting& s) const { return tilt_table_orientation(mounting_list, s); }
-  std::vector<BenchSetting> settings(const Vec3& eta) const { return tilt_table_settings(mounting_list, axis_list, eta); }
+  std::vector<BenchSetting> settings(const Vec3& eta) const {
+    return tilt_table_settings(mounting_list, axis_list, eta);
+  }
 };
 
 }  // namespace scalcal

@@ -74,8 +74,8 @@ struct GimbalBench {
     const Vec3 up = Vec3::UnitZ();
     const auto add = [&](double outer, const Vec3& a1, const Vec3& a2, const Vec3& v) {
       for (const auto& [t1, t2] : two_axis_angles(a1, a2, v, eta)) {
-        std::vector<double> solved = directions.size() == 2 ? std::vector<double>{t1, t2}
-                                                             : std::vector<double>{outer, t1, t2};
+        std::vector<double> solved =
+            directions.size() == 2 ? std::vector<double>{t1, t2} : std::vector<double>{outer, t1, t2};
         expand_settings(0, axis_list, solved, out);
       }
     };
@@ -84,7 +84,8 @@ struct GimbalBench {
     } else if (std::abs(directions[0].dot(up)) > 1 - 1e-15) {
       add(std::nan(""), directions[1], directions[2], up);  // a vertical outer axis turns about the vector
     } else {
-      for (const double t0 : outer_samples()) add(t0, directions[1], directions[2], axis_rotation(directions[0], t0).transpose() * up);
+      for (const double t0 : outer_samples())
+        add(t0, directions[1], directions[2], axis_rotation(directions[0], t0).transpose() * up);
     }
     // Keep what measures eta (a sampled outer angle may leave none; a degenerate branch is dropped);
     // a position taken on the edge of the reach is within the slack of it.

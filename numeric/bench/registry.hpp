@@ -25,13 +25,19 @@ using RegisteredBenches = BenchList<GimbalBench, TiltBench, FacesBench, JigBench
 
 class Bench {
   template <class F>
-  decltype(auto) visit(F&& f) const { return std::visit(std::forward<F>(f), bench_); }
+  decltype(auto) visit(F&& f) const {
+    return std::visit(std::forward<F>(f), bench_);
+  }
 
  public:
   explicit Bench(RegisteredBenches::Variant bench) : bench_(std::move(bench)) {}
 
-  std::string text() const { return visit([](const auto& b) { return std::string(b.text()); }); }
-  std::string_view name() const { return visit([](const auto& b) { return std::string_view(std::decay_t<decltype(b)>::name); }); }
+  std::string text() const {
+    return visit([](const auto& b) { return std::string(b.text()); });
+  }
+  std::string_view name() const {
+    return visit([](const auto& b) { return std::string_view(std::decay_t<decltype(b)>::name); });
+  }
   std::string_view mounting_key() const {
     return visit([](const auto& b) { return std::string_view(std::decay_t<decltype(b)>::mounting_key); });
   }
@@ -44,9 +50,13 @@ class Bench {
   const std::vector<Mounting>& mountings() const {
     return visit([](const auto& b) -> const std::vector<Mounting>& { return b.mountings(); });
   }
-  Mat3 orientation(const BenchSetting& s) const { return visit([&](const auto& b) { return b.orientation(s); }); }
+  Mat3 orientation(const BenchSetting& s) const {
+    return visit([&](const auto& b) { return b.orientation(s); });
+  }
   Vec3 position(const BenchSetting& s) const { return position_of_orientation(orientation(s)); }
-  std::vector<BenchSetting> settings(const Vec3& eta) const { return visit([&](const auto& b) { return b.settings(eta); }); }
+  std::vector<BenchSetting> settings(const Vec3& eta) const {
+    return visit([&](const auto& b) { return b.settings(eta); });
+  }
   double travel(const BenchSetting& a, const BenchSetting& c) const {
     return visit([&](const auto& b) { return bench_travel(b, a, c); });
   }

@@ -30,8 +30,10 @@ void fill_leading(const Bench& bench, std::vector<RunStep>& steps) {
     double next = std::nan("");
     for (auto it = steps.rbegin(); it != steps.rend(); ++it) {
       double& a = it->setting.angles[k];
-      if (std::isnan(a)) a = next;
-      else next = a;
+      if (std::isnan(a))
+        a = next;
+      else
+        next = a;
     }
     for (auto& s : steps)
       if (std::isnan(s.setting.angles[k])) s.setting.angles[k] = std::clamp(0.0, axes[k].lo, axes[k].hi);
@@ -135,7 +137,9 @@ std::vector<int> nearest_neighbour(const Distances& d, int start) {
 // 2-opt on an open path: reverse p[i..j] while that shortens it.
 void two_opt(const Distances& d, std::vector<int>& p) {
   const std::size_t n = p.size();
-  const auto D = [&](std::size_t a, std::size_t b) { return d[static_cast<std::size_t>(p[a])][static_cast<std::size_t>(p[b])]; };
+  const auto D = [&](std::size_t a, std::size_t b) {
+    return d[static_cast<std::size_t>(p[a])][static_cast<std::size_t>(p[b])];
+  };
   for (int pass = 0; pass < 200; ++pass) {
     bool improved = false;
     for (std::size_t i = 0; i + 1 < n; ++i)
@@ -158,7 +162,8 @@ std::vector<int> shortest_path(const Distances& d) {
   const int n = static_cast<int>(d.size());
   const int starts = std::min(n, 64);
   std::vector<std::vector<int>> paths;
-  for (int s = 0; s < starts; ++s) paths.push_back(nearest_neighbour(d, static_cast<int>(static_cast<long long>(s) * n / starts)));
+  for (int s = 0; s < starts; ++s)
+    paths.push_back(nearest_neighbour(d, static_cast<int>(static_cast<long long>(s) * n / starts)));
   if (n > 100) {
     std::vector<int> p = *std::min_element(paths.begin(), paths.end(), [&](const auto& a, const auto& b) {
       return path_length(d, a) < path_length(d, b);

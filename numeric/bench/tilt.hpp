@@ -34,7 +34,8 @@ struct TiltBench {
     b.flip = parts.size() == 2;
     b.axis_list = {BenchAxis{"tilt_deg", -b.max_tilt_deg, b.max_tilt_deg, false}, BenchAxis{"azimuth_deg"}};
     b.mounting_list = {Mounting{"+z up", "upright", mounting_rotation(Vec3::UnitZ())}};
-    if (b.flip) b.mounting_list.push_back(Mounting{"-z up (turned over)", "flipped", mounting_rotation(-Vec3::UnitZ())});
+    if (b.flip)
+      b.mounting_list.push_back(Mounting{"-z up (turned over)", "flipped", mounting_rotation(-Vec3::UnitZ())});
     return b;
   }
 
@@ -47,7 +48,9 @@ struct TiltBench {
   const std::vector<BenchAxis>& axes() const { return axis_list; }
   const std::vector<Mounting>& mountings() const { return mounting_list; }
   Mat3 orientation(const BenchSetting& s) const { return tilt_table_orientation(mounting_list, s); }
-  std::vector<BenchSetting> settings(const Vec3& eta) const { return tilt_table_settings(mounting_list, axis_list, eta); }
+  std::vector<BenchSetting> settings(const Vec3& eta) const {
+    return tilt_table_settings(mounting_list, axis_list, eta);
+  }
 };
 
 }  // namespace scalcal

@@ -5,8 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include <boost/math/distributions/chi_squared.hpp>
 #include <Eigen/Dense>
+#include <boost/math/distributions/chi_squared.hpp>
 
 #include "numeric/criteria/identifiability.hpp"
 #include "numeric/criteria/model_evaluation.hpp"
@@ -110,7 +110,8 @@ void check_layout(const std::string& file, const std::vector<PositionSamples>& y
                          "; the model needs it near 1 (wrong --magnitude or units?)");
   const ModelEvaluation ev = evaluate(options.model, Program{position_directions(y, options.modulus)});
   if (!ev.full_rank()) throw InputError(file, 0, "the measured positions form a " + rank_deficiency(ev));
-  if (ev.condition > kIllConditioned) throw InputError(file, 0, "the measured positions form an " + ill_conditioning(ev));
+  if (ev.condition > kIllConditioned)
+    throw InputError(file, 0, "the measured positions form an " + ill_conditioning(ev));
 }
 
 // The final correction, its gain and the scale deviations relative to it.
@@ -173,8 +174,8 @@ AnyUnitsCalibration calibrate_any_units(const std::string& file, const std::vect
   const int n = static_cast<int>(data.size());
   if (n < P)
     throw InputError(file, 0,
-                     std::to_string(n) + " positions cannot identify the " + std::to_string(P) + " parameters of --model " +
-                         std::string(model_name(options.model)));
+                     std::to_string(n) + " positions cannot identify the " + std::to_string(P) +
+                         " parameters of --model " + std::string(model_name(options.model)));
   const double ratio = median_modulus_ratio(data, M);
   out.started = options.magnitude_auto || std::abs(ratio - 1) > kInUnits;
   const std::vector<PositionSamples> y = out.started ? started_data(file, data, options, index, ratio, out) : data;
@@ -212,7 +213,8 @@ AnyUnitsCalibration calibrate_any_units(const std::string& file, const std::vect
   out.dof = n - P;
   const double s = out.dof > 0 ? std::sqrt(weighted / out.dof) : 0;
   const Eigen::VectorXd nan = Eigen::VectorXd::Constant(P, NAN);
-  out.predicted_std = r.noise_source != NoiseSource::none ? reported_std((r.noise / M) * (r.noise / M) * r.K, index, out) : nan;
+  out.predicted_std =
+      r.noise_source != NoiseSource::none ? reported_std((r.noise / M) * (r.noise / M) * r.K, index, out) : nan;
   out.achieved_std = out.dof > 0 ? reported_std(s * s * K, index, out) : nan;
   out.standard_error = out.predicted_std.binaryExpr(out.achieved_std, [](double p, double a) { return larger(p, a); });
   if (r.noise_source == NoiseSource::scatter && r.noise > 0 && out.dof > 0) {
@@ -221,9 +223,12 @@ AnyUnitsCalibration calibrate_any_units(const std::string& file, const std::vect
   }
   for (int k = 0; k < P; ++k) {
     const int m = index[static_cast<std::size_t>(k)];
-    if (m < 3) out.bias_std(m) = out.standard_error(k);
-    else if (m < 6) out.scale_deviation_std(m - 3) = out.standard_error(k);
-    else if (m < 9) out.nonorthogonality_std(m - 6) = out.standard_error(k);
+    if (m < 3)
+      out.bias_std(m) = out.standard_error(k);
+    else if (m < 6)
+      out.scale_deviation_std(m - 3) = out.standard_error(k);
+    else if (m < 9)
+      out.nonorthogonality_std(m - 6) = out.standard_error(k);
   }
   const Eigen::MatrixXd none;
   gain_errors(out, index, options.magnitude_auto,

@@ -52,11 +52,11 @@ struct AnyUnitsCalibration {
   // units, scale deviation relative to the nominal gain, non-orthogonality in rad, cubic as c |I|.
   // NaN where not estimable (predicted: one sample per position and N = P; achieved: N = P).
   Eigen::VectorXd predicted_std, achieved_std, standard_error;  // standard_error: the larger of the two
-  int dof = 0;                          // positions minus parameters
+  int dof = 0;                                                  // positions minus parameters
   // standard_error for the meter's nine linear parameters (NaN for those the model does not have).
   Vec3 bias_std = Vec3::Constant(NAN), scale_deviation_std = Vec3::Constant(NAN),
        nonorthogonality_std = Vec3::Constant(NAN);
-  std::vector<Vec3> directions;         // each position's corrected mean, normalised (the program measured)
+  std::vector<Vec3> directions;  // each position's corrected mean, normalised (the program measured)
   std::vector<PositionResidual> residuals;
   // The residuals against the noise within positions: chi-square with dof degrees of freedom (only
   // when the noise comes from the scatter of repeated samples and dof > 0).

@@ -19,7 +19,7 @@ FullCorrection correction_of(const Meter& meter) {
 
 std::optional<FullCorrection> canonical_correction(const Mat3& matrix, const Vec3& offset) {
   if (!(std::abs(matrix.determinant()) > 0)) return std::nullopt;
-  const Mat3 S = matrix.inverse();  // raw - offset = S I
+  const Mat3 S = matrix.inverse();   // raw - offset = S I
   const Mat3 W = S * S.transpose();  // what scalar calibration sees: lengths and cosines of the rows
   FullCorrection out;
   out.offset = offset;
@@ -86,7 +86,8 @@ std::optional<FullCorrection> fit_ellipsoid(const std::vector<Vec3>& means, doub
     for (int i = 0; i < n; ++i) {
       const Vec3& v = u[static_cast<std::size_t>(i)];
       if (kind == EllipsoidShape::general)
-        X.row(i) << v(0) * v(0), v(1) * v(1), v(2) * v(2), 2 * v(0) * v(1), 2 * v(1) * v(2), 2 * v(0) * v(2), v(0), v(1), v(2);
+        X.row(i) << v(0) * v(0), v(1) * v(1), v(2) * v(2), 2 * v(0) * v(1), 2 * v(1) * v(2), 2 * v(0) * v(2), v(0),
+            v(1), v(2);
       else if (kind == EllipsoidShape::axis_aligned)
         X.row(i) << v(0) * v(0), v(1) * v(1), v(2) * v(2), v(0), v(1), v(2);
       else

@@ -17,9 +17,10 @@ std::vector<PositionSamples> measurements_from_table(const CsvTable& table, bool
   if (has_nominal || need_nominal)
     for (const char* c : {"x", "y", "z"})
       if (!table.has(c))
-        throw InputError(table.file, 1, std::string("missing column '") + c + "'" +
-                                            (need_nominal ? " (the projection modulus needs the nominal direction x,y,z)"
-                                                          : " (give all of x,y,z or none)"));
+        throw InputError(table.file, 1,
+                         std::string("missing column '") + c + "'" +
+                             (need_nominal ? " (the projection modulus needs the nominal direction x,y,z)"
+                                           : " (give all of x,y,z or none)"));
   const int ix = table.column("ix"), iy = table.column("iy"), iz = table.column("iz");
   const int cp = table.column("position");
   const int cx = table.column("x"), cy = table.column("y"), cz = table.column("z");
@@ -56,8 +57,9 @@ std::vector<PositionSamples> measurements_from_table(const CsvTable& table, bool
       if (!pos.nominal) {
         pos.nominal = u;
       } else if ((*pos.nominal - u).norm() > 1e-9) {
-        throw InputError(table.file, row.line,
-                         "nominal direction differs from that of line " + std::to_string(pos.line) + " of the same position");
+        throw InputError(
+            table.file, row.line,
+            "nominal direction differs from that of line " + std::to_string(pos.line) + " of the same position");
       }
     }
   }

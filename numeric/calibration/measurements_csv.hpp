@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "numeric/io/csv_table.hpp"
 #include "numeric/calibration/scalar_calibration.hpp"
+#include "numeric/io/csv_table.hpp"
 
 namespace scalcal {
 

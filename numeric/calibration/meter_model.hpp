@@ -7,8 +7,8 @@
 
 #include <Eigen/Dense>
 
-#include "numeric/program/random_sphere.hpp"
 #include "numeric/model/paper9.hpp"
+#include "numeric/program/random_sphere.hpp"
 
 namespace scalcal {
 
@@ -19,9 +19,9 @@ namespace scalcal {
 // the whole triad rigidly and leaves every modulus unchanged.
 template <class Scalar>
 struct MeterTpl {
-  Vec3T<Scalar> bias = Vec3T<Scalar>::Zero();               // Delta, in the units of I
-  Vec3T<Scalar> scale_deviation = Vec3T<Scalar>::Zero();    // dk_x, dk_y, dk_z
-  Mat3T<Scalar> misalignment = Mat3T<Scalar>::Zero();       // phi_kj off the diagonal; diagonal unused
+  Vec3T<Scalar> bias = Vec3T<Scalar>::Zero();             // Delta, in the units of I
+  Vec3T<Scalar> scale_deviation = Vec3T<Scalar>::Zero();  // dk_x, dk_y, dk_z
+  Mat3T<Scalar> misalignment = Mat3T<Scalar>::Zero();     // phi_kj off the diagonal; diagonal unused
 
   Mat3T<Scalar> phi() const {
     using std::sqrt;
@@ -36,16 +36,12 @@ struct MeterTpl {
   }
 
   // (E + dK) Phi: the linear part of eq. (2).
-  Mat3T<Scalar> gain() const {
-    return (Vec3T<Scalar>::Ones() + scale_deviation).asDiagonal() * phi();
-  }
+  Mat3T<Scalar> gain() const { return (Vec3T<Scalar>::Ones() + scale_deviation).asDiagonal() * phi(); }
 
   Vec3T<Scalar> measure(const Vec3T<Scalar>& I) const { return bias + gain() * I; }
 
   // The inverse of the noise-free model: the vector that would have produced `measured`.
-  Vec3T<Scalar> compensate(const Vec3T<Scalar>& measured) const {
-    return gain().inverse() * (measured - bias);
-  }
+  Vec3T<Scalar> compensate(const Vec3T<Scalar>& measured) const { return gain().inverse() * (measured - bias); }
 
   // gamma = (phi_xy + phi_yx, phi_yz + phi_zy, phi_zx + phi_xz): order xy, yz, zx.
   Vec3T<Scalar> nonorthogonality() const {

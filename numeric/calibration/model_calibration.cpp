@@ -163,7 +163,8 @@ Eigen::VectorXd damped_gauss_newton(const ModelResiduals& f, int max_iterations,
   double cost = f.cost(J);
   summary.termination = Termination::not_converged;
   summary.message = "the iteration limit was reached";
-  const Eigen::VectorXd w = Eigen::Map<const Eigen::VectorXd>(f.weights.data(), static_cast<Eigen::Index>(f.weights.size()));
+  const Eigen::VectorXd w =
+      Eigen::Map<const Eigen::VectorXd>(f.weights.data(), static_cast<Eigen::Index>(f.weights.size()));
   bool exact = false;
   for (summary.iterations = 1; summary.iterations <= max_iterations; ++summary.iterations) {
     if (!std::isfinite(cost)) {
@@ -225,8 +226,12 @@ Eigen::VectorXd damped_gauss_newton(const ModelResiduals& f, int max_iterations,
 
 ModelCalibration calibrate_model(ModelKind model, const std::vector<PositionSamples>& data,
                                  const CalibrationOptions& options) {
-  ModelResiduals f{data, options, visit_model(model, [](auto M) -> RowFunction { return &dynamic_row<decltype(M)>; }),
-                   meter_indices(model), {}, {}};
+  ModelResiduals f{data,
+                   options,
+                   visit_model(model, [](auto M) -> RowFunction { return &dynamic_row<decltype(M)>; }),
+                   meter_indices(model),
+                   {},
+                   {}};
   for (const auto& p : data) {
     f.means.push_back(p.mean());
     f.weights.push_back(options.weight_by_samples ? static_cast<double>(p.samples.size()) : 1.0);

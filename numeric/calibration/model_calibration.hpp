@@ -47,8 +47,8 @@ struct ModelCalibration {
   double noise = 0, residual_rms = 0;
   NoiseSource noise_source = NoiseSource::none;
   int iterations = 0, positions = 0, samples = 0;
-  Summary summary;           // converged, or why not
-  ModelMeter meter;          // the estimate as a meter (parameters outside the model are zero)
+  Summary summary;   // converged, or why not
+  ModelMeter meter;  // the estimate as a meter (parameters outside the model are zero)
 };
 
 // Preconditions as calibrate(): rank P of the model at the positions' directions, nominal

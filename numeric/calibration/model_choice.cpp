@@ -63,7 +63,8 @@ std::optional<ModelChoice> choose_model(const Program& directions) {
       // What the chosen model leaves out of paper9 is what the layout could not identify.
       const int P = model_parameters(m);
       const ModelEvaluation full = evaluate(candidates[0], directions);
-      for (int k = P; k < full.parameters; ++k) c.not_identifiable.emplace_back(full.parameter_names[static_cast<std::size_t>(k)]);
+      for (int k = P; k < full.parameters; ++k)
+        c.not_identifiable.emplace_back(full.parameter_names[static_cast<std::size_t>(k)]);
     }
     c.reason = s.str();
     return c;

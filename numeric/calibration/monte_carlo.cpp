@@ -134,7 +134,8 @@ MonteCarloResult run_monte_carlo(const MonteCarloOptions& o, const std::function
     r.theta_theoretical(q) = ev.theta[static_cast<std::size_t>(q)];
     double v = -1;
     for (Eigen::Index k = 0; k < P; ++k)
-      if (static_cast<int>(ev.parameter_groups[static_cast<std::size_t>(k)]) == q) v = std::max(v, r.empirical_cov(k, k));
+      if (static_cast<int>(ev.parameter_groups[static_cast<std::size_t>(k)]) == q)
+        v = std::max(v, r.empirical_cov(k, k));
     r.theta_empirical(q) = v < 0 ? std::numeric_limits<double>::quiet_NaN() : std::sqrt(N * o.samples * v) / o.noise;
   }
   return r;

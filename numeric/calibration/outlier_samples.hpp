@@ -24,8 +24,7 @@ inline constexpr double kOutlierScales = 10;
 // at least 3 samples are judged, and a position where half of the samples or more lie
 // beyond the cut is left whole: that is a noisy position, not a few bad samples, and the
 // goodness-of-fit test is the right judge of it.
-std::vector<ExcludedSample> exclude_outlier_samples(std::vector<PositionSamples>& data,
-                                                    double scales = kOutlierScales);
+std::vector<ExcludedSample> exclude_outlier_samples(std::vector<PositionSamples>& data, double scales = kOutlierScales);
 
 // "excluded 2 outlier samples (line, distance ...): line 9 (4.1e+03), line 40 (12.5); --keep-outliers keeps them"
 std::string outlier_warning(const std::vector<ExcludedSample>& excluded);

@@ -24,7 +24,8 @@ bool looks_like_text_log(const std::string& text) {
 
 bool RawLog::finite(int i) const {
   const auto k = static_cast<std::size_t>(i);
-  return std::isfinite(t[k]) && std::isfinite(samples[k](0)) && std::isfinite(samples[k](1)) && std::isfinite(samples[k](2));
+  return std::isfinite(t[k]) && std::isfinite(samples[k](0)) && std::isfinite(samples[k](1)) &&
+         std::isfinite(samples[k](2));
 }
 
 int time_column(const CsvTable& table) {
@@ -45,7 +46,8 @@ RawLog raw_log_from_table(const CsvTable& table, double rate) {
     throw InputError(table.file, 1,
                      "no time column (t, t_s, time, time_s or timestamp): give the sample rate with --rate HZ");
   for (const char* c : {"ix", "iy", "iz"})
-    if (!table.has(c)) throw InputError(table.file, 1, std::string("missing column '") + c + "' (a raw log needs ix,iy,iz)");
+    if (!table.has(c))
+      throw InputError(table.file, 1, std::string("missing column '") + c + "' (a raw log needs ix,iy,iz)");
   const int ix = table.column("ix"), iy = table.column("iy"), iz = table.column("iz");
   RawLog log;
   log.file = table.file;
@@ -54,14 +56,15 @@ RawLog raw_log_from_table(const CsvTable& table, double rate) {
   for (const auto& row : table.rows) {
     const auto& v = row.values;
     log.t.push_back(rate > 0 ? static_cast<double>(log.t.size()) / rate : v[static_cast<std::size_t>(ct)]);
-    log.samples.emplace_back(v[static_cast<std::size_t>(ix)], v[static_cast<std::size_t>(iy)], v[static_cast<std::size_t>(iz)]);
+    log.samples.emplace_back(v[static_cast<std::size_t>(ix)], v[static_cast<std::size_t>(iy)],
+                             v[static_cast<std::size_t>(iz)]);
     log.lines.push_back(row.line);
     if (!log.finite(log.size() - 1)) continue;
     const double t = log.t.back();
     if (!(t > last))
       throw InputError(table.file, row.line,
-                       "time " + std::to_string(t) + " s does not increase (line " + std::to_string(last_line) + " has " +
-                           std::to_string(last) + " s)");
+                       "time " + std::to_string(t) + " s does not increase (line " + std::to_string(last_line) +
+                           " has " + std::to_string(last) + " s)");
     last = t;
     last_line = row.line;
     ++finite_rows;

@@ -27,7 +27,7 @@ struct RawLog {
   std::vector<int> lines;     // 1-based line of each row, for messages
 
   int size() const { return static_cast<int>(t.size()); }
-  bool finite(int i) const;   // t and all three outputs finite
+  bool finite(int i) const;  // t and all three outputs finite
 };
 
 // The time column's index (t, t_s, time, time_s, timestamp, any case), or -1.

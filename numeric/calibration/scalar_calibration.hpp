@@ -9,8 +9,8 @@
 
 #include <Eigen/Cholesky>
 
-#include "numeric/model/design.hpp"
 #include "numeric/calibration/meter_model.hpp"
+#include "numeric/model/design.hpp"
 #include "numeric/model/paper9.hpp"
 #include "numeric/program/summary.hpp"
 
@@ -51,14 +51,14 @@ enum class NoiseSource { scatter, residuals, none };
 
 template <class Scalar>
 struct CalibrationResultTpl {
-  Vec9T<Scalar> X = Vec9T<Scalar>::Zero();   // (Delta / |I|, dk, gamma), eq. (5)
+  Vec9T<Scalar> X = Vec9T<Scalar>::Zero();      // (Delta / |I|, dk, gamma), eq. (5)
   Vec9T<Scalar> X_std = Vec9T<Scalar>::Zero();  // standard errors sqrt(sigma_J^2 K(r, r))
-  Mat9T<Scalar> K = Mat9T<Scalar>::Zero();   // (H^T W H)^-1, W = samples per position
-  Scalar noise = Scalar(0);         // std of one sample's modulus, units of the samples
+  Mat9T<Scalar> K = Mat9T<Scalar>::Zero();      // (H^T W H)^-1, W = samples per position
+  Scalar noise = Scalar(0);                     // std of one sample's modulus, units of the samples
   NoiseSource noise_source = NoiseSource::none;
   Scalar residual_rms = Scalar(0);  // RMS over positions of m - |I| at the estimate, units of the samples
   int iterations = 0;
-  Summary summary;                  // converged, or why not (iterations, a message)
+  Summary summary;  // converged, or why not (iterations, a message)
   int positions = 0;
   int samples = 0;
 
@@ -158,8 +158,9 @@ CalibrationResultTpl<Scalar> calibrate(const std::vector<PositionSamplesTpl<Scal
         r.summary.termination = Termination::converged;  // at the rounding floor of the residual
         r.summary.message = "converged (the residual cannot be lowered further in this precision)";
       } else {
-        r.summary.message = "no step along the Gauss-Newton direction lowers the residual (the model does not fit "
-                            "these data, or the start is too far)";
+        r.summary.message =
+            "no step along the Gauss-Newton direction lowers the residual (the model does not fit "
+            "these data, or the start is too far)";
       }
       break;
     }

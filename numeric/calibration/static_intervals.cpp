@@ -87,7 +87,8 @@ double quiet_floor(std::vector<double> v) {
 // or holds an unusable sample.
 std::vector<double> window_variances(const RawLog& log, const std::vector<char>& usable, int w, const Vec3& shift) {
   const int n = log.size(), h = w / 2;
-  std::vector<Vec3> ps(static_cast<std::size_t>(n) + 1, Vec3::Zero()), ps2(static_cast<std::size_t>(n) + 1, Vec3::Zero());
+  std::vector<Vec3> ps(static_cast<std::size_t>(n) + 1, Vec3::Zero()),
+      ps2(static_cast<std::size_t>(n) + 1, Vec3::Zero());
   std::vector<int> bad(static_cast<std::size_t>(n) + 1, 0);
   for (int i = 0; i < n; ++i) {
     const auto k = static_cast<std::size_t>(i);
@@ -124,7 +125,8 @@ double still_floor(const RawLog& log, const std::vector<char>& usable, int first
     throw InputError(log.file, 0,
                      "the initial still period (--still " + seconds(o.still_seconds) + " s) holds " +
                          std::to_string(count) + " usable samples, fewer than one variance window (" +
-                         std::to_string(window) + "); lengthen --still, shorten --window, or drop --still (the noise "
+                         std::to_string(window) +
+                         "); lengthen --still, shorten --window, or drop --still (the noise "
                          "floor then comes from the log's quiet windows)");
   const Vec3 mean = sum / count;
   return (sum2 / count - mean.cwiseProduct(mean)).cwiseMax(0.0).norm();
@@ -157,7 +159,8 @@ std::vector<char> usable_samples(const RawLog& log, const StaticIntervalOptions&
   std::nth_element(steps.begin(), steps.begin() + static_cast<std::ptrdiff_t>(steps.size() / 2), steps.end());
   d.sample_period = steps[steps.size() / 2];
   // In doubles first: a log whose time steps are tiny would overflow an int.
-  const double window = std::clamp(options.window_seconds / d.sample_period, 11.0, static_cast<double>(std::max(n, 11)));
+  const double window =
+      std::clamp(options.window_seconds / d.sample_period, 11.0, static_cast<double>(std::max(n, 11)));
   d.window = std::max(11, static_cast<int>(std::lround(window)) | 1);
   return usable;
 }
@@ -181,10 +184,12 @@ IntervalDetection detect_static_intervals(const RawLog& log, const StaticInterva
   for (double v : variance)
     if (std::isfinite(v)) finite.push_back(v);
   if (finite.empty())
-    throw InputError(log.file, 0,
-                     "the log holds no complete window of " + std::to_string(d.window) + " usable samples; shorten --window");
+    throw InputError(
+        log.file, 0,
+        "the log holds no complete window of " + std::to_string(d.window) + " usable samples; shorten --window");
   d.floor_from_still = options.still_seconds > 0;
-  d.still_variance = d.floor_from_still ? still_floor(log, usable, first, options, d.window, shift) : quiet_floor(finite);
+  d.still_variance =
+      d.floor_from_still ? still_floor(log, usable, first, options, d.window, shift) : quiet_floor(finite);
   if (!(d.still_variance > 0))
     throw InputError(log.file, 0,
                      std::string(d.floor_from_still ? "the initial still period" : "the log") +

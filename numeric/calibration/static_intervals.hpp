@@ -18,29 +18,29 @@
 namespace scalcal {
 
 struct StaticIntervalOptions {
-  double still_seconds = 0;      // > 0: the initial still period of this length sets the floor; 0: the quiet windows
-  double window_seconds = 1;     // the moving variance's window (an odd number of samples, at least 11)
-  double threshold_factor = 6;   // static below this times the still period's variance norm
-  double min_seconds = 1;        // shorter runs are not positions
+  double still_seconds = 0;     // > 0: the initial still period of this length sets the floor; 0: the quiet windows
+  double window_seconds = 1;    // the moving variance's window (an odd number of samples, at least 11)
+  double threshold_factor = 6;  // static below this times the still period's variance norm
+  double min_seconds = 1;       // shorter runs are not positions
 };
 
 struct StaticInterval {
-  int begin = 0, end = 0;        // sample indices, inclusive
-  double start = 0, stop = 0;    // their times (seconds)
+  int begin = 0, end = 0;      // sample indices, inclusive
+  double start = 0, stop = 0;  // their times (seconds)
   int samples() const { return end - begin + 1; }
 };
 
 struct IntervalDetection {
   std::vector<StaticInterval> intervals;
-  double sample_period = 0;      // the median time step, seconds
-  int window = 0;                // samples
-  double still_variance = 0;     // the noise floor: a still window's variance norm (file units squared)
-  bool floor_from_still = false; // the floor came from the initial still period (--still), not the quiet windows
-  double threshold = 0;          // what a window's variance norm must stay below
-  int short_runs = 0;            // static runs shorter than min_seconds (not positions)
-  double longest_fraction = 0;   // the longest interval's share of the log's samples
-  int nonfinite = 0;             // rows with a NaN or infinite value
-  int saturated = 0;             // samples at an output's extreme and at an ADC rail (0, 2^k or 2^k - 1), three or more in a row
+  double sample_period = 0;       // the median time step, seconds
+  int window = 0;                 // samples
+  double still_variance = 0;      // the noise floor: a still window's variance norm (file units squared)
+  bool floor_from_still = false;  // the floor came from the initial still period (--still), not the quiet windows
+  double threshold = 0;           // what a window's variance norm must stay below
+  int short_runs = 0;             // static runs shorter than min_seconds (not positions)
+  double longest_fraction = 0;    // the longest interval's share of the log's samples
+  int nonfinite = 0;              // rows with a NaN or infinite value
+  int saturated = 0;  // samples at an output's extreme and at an ADC rail (0, 2^k or 2^k - 1), three or more in a row
   std::vector<int> nonfinite_lines, saturated_lines;  // the first few of each, for messages
 };
 

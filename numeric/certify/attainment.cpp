@@ -16,13 +16,14 @@ namespace {
 
 // Why a program whose moments are `deviation` off the symmetric optimal measure's is not certified.
 std::string deviation_reason(const CertifyTarget& t, double deviation) {
-  const std::string off = "its moments of degree <= 4 differ from those of the symmetric optimal measure by " +
-                          sci(Real(deviation));
+  const std::string off =
+      "its moments of degree <= 4 differ from those of the symmetric optimal measure by " + sci(Real(deviation));
   if (t.unique_moments)
     return off + "; that moment matrix is the only optimal one for " + t.name +
            " (strictly convex), so the program is near the limit, not at it, and too far (over 1e-6) for the "
            "moment certificate to find the exact program";
-  return off + "; for " + t.name + " that moment matrix is sufficient, not necessary (the criterion is not "
+  return off + "; for " + t.name +
+         " that moment matrix is sufficient, not necessary (the criterion is not "
          "strictly convex), so the moment certificate does not apply";
 }
 
@@ -33,9 +34,10 @@ bool pentagonal(const Program& program, AttainmentOutcome& a) {
   a.proven = true;
   a.exact = std::move(*exact);
   a.method = "fit of the pentagonal 4-designs (two poles, two turned pentagons at +-1/sqrt 5), enclosed in MPFI";
-  a.reason = "an exact member of the pentagonal family, a 4-design for every pair of turns "
-             "(proof.pentagonal_designs), lies within the radius, one point per position; the moment system "
-             "itself is overdetermined at N = 12";
+  a.reason =
+      "an exact member of the pentagonal family, a 4-design for every pair of turns "
+      "(proof.pentagonal_designs), lies within the radius, one point per position; the moment system "
+      "itself is overdetermined at N = 12";
   return true;
 }
 
@@ -45,10 +47,12 @@ bool dihedral(const Program& program, AttainmentOutcome& a) {
   if (!exact) return false;
   a.proven = true;
   a.exact = std::move(*exact);
-  a.method = "fit of the D3-symmetric 14-point 4-design (closed form: poles and two D3-orbits at heights "
-             "z^2 = (10 +- sqrt 35)/45), enclosed in MPFI";
-  a.reason = "the exact design, a 4-design by proof.d3_design, lies within the radius, one point per position; "
-             "the moment equations lose rank on the 14-point designs (23 of 24)";
+  a.method =
+      "fit of the D3-symmetric 14-point 4-design (closed form: poles and two D3-orbits at heights "
+      "z^2 = (10 +- sqrt 35)/45), enclosed in MPFI";
+  a.reason =
+      "the exact design, a 4-design by proof.d3_design, lies within the radius, one point per position; "
+      "the moment equations lose rank on the 14-point designs (23 of 24)";
   return true;
 }
 
@@ -91,7 +95,8 @@ AttainmentOutcome attainment(const Program& program, const CertifyTarget& t, int
     return a;
   }
   std::vector<bool> solve(2 * n, false);
-  for (int k = 0; k < MomentSystem::kEquations; ++k) solve[all.coordinates.free[qr.colsPermutation().indices()(k)]] = true;
+  for (int k = 0; k < MomentSystem::kEquations; ++k)
+    solve[all.coordinates.free[qr.colsPermutation().indices()(k)]] = true;
   std::vector<int> held;
   for (int k = 0; k < 2 * n; ++k)
     if (!solve[k]) held.push_back(k);

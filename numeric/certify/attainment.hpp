@@ -17,9 +17,9 @@ struct AttainmentOutcome {
   std::vector<IPoint> exact;  // proven: the exact program's positions, enclosed, one per position
   int unknowns = 0;
   int equations = 0;
-  double deviation = 0;       // inf-norm of the program's 24 moment residuals (double)
+  double deviation = 0;  // inf-norm of the program's 24 moment residuals (double)
   std::string method;
-  std::string reason;         // what the proof rests on, or why it does not apply
+  std::string reason;  // what the proof rests on, or why it does not apply
 };
 
 AttainmentOutcome attainment(const Program& program, const CertifyTarget& target, int digits);

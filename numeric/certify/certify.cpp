@@ -14,10 +14,14 @@ namespace scalcal {
 
 std::string_view status_text(CertifiedStatus s) {
   switch (s) {
-    case CertifiedStatus::attained_proven: return "limit attained, proven";
-    case CertifiedStatus::attained_numerical: return "limit attained, numerical";
-    case CertifiedStatus::missed_local_optimum: return "missed, certified local optimum";
-    case CertifiedStatus::missed_numerical: return "missed, numerical";
+    case CertifiedStatus::attained_proven:
+      return "limit attained, proven";
+    case CertifiedStatus::attained_numerical:
+      return "limit attained, numerical";
+    case CertifiedStatus::missed_local_optimum:
+      return "missed, certified local optimum";
+    case CertifiedStatus::missed_numerical:
+      return "missed, numerical";
   }
   return "";
 }

@@ -25,7 +25,7 @@ struct CertifyOptions {
 
 struct CertifyResult {
   CertifiedStatus status = CertifiedStatus::missed_numerical;
-  double value = 0;          // the criterion of the given program (double)
+  double value = 0;  // the criterion of the given program (double)
   double limit = 0;
   std::string radius;        // attained, proven: an exact program attaining the limit lies within it;
                              // missed, certified: the strict local optimum does (inf-norm, chart coordinates)
@@ -34,8 +34,8 @@ struct CertifyResult {
   int enclosure_digits = 0;  // leading decimal digits that lo and hi share
   int unknowns = 0;          // coordinates solved for; the rest are held at their computed values
   int equations = 0;
-  std::string method;        // which certificate ran
-  std::string reason;        // why a claim stays numerical, or what the proof rests on
+  std::string method;  // which certificate ran
+  std::string reason;  // why a claim stays numerical, or what the proof rests on
   double seconds = 0;
 };
 

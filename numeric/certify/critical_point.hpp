@@ -78,8 +78,8 @@ void row_derivatives(const std::vector<std::array<Jet2<T>, 9>>& rows, const Free
 
 // tr(G X_ac), X_ac = d2M/dx_a dx_c: nonzero only when a and c move the same position.
 template <class T>
-T same_position_term(const std::vector<std::array<Jet2<T>, 9>>& rows, const FreeCoordinates& coordinates, int a,
-                     int c, const Square9<T>& G, const std::vector<Column9<T>>& g, const std::vector<Column9<T>>& h) {
+T same_position_term(const std::vector<std::array<Jet2<T>, 9>>& rows, const FreeCoordinates& coordinates, int a, int c,
+                     const Square9<T>& G, const std::vector<Column9<T>>& g, const std::vector<Column9<T>>& h) {
   const int fa = coordinates.free[a], fc = coordinates.free[c];
   if (fa / 2 != fc / 2) return T(0);
   const int i = fa / 2;
@@ -129,9 +129,9 @@ struct CriticalPointSystem {
     J->resize(m, m);
     for (int a = 0; a < m; ++a)
       for (int c = a; c < m; ++c) {
-        const T value = (form == CriticalForm::log_det ? trace_of_product(P[c], P[a])
-                                                       : T(T(2) * trace_of_product(Q[a], P[c]))) +
-                        same_position_term(rows, coordinates, a, c, G, g, h);
+        const T value =
+            (form == CriticalForm::log_det ? trace_of_product(P[c], P[a]) : T(T(2) * trace_of_product(Q[a], P[c]))) +
+            same_position_term(rows, coordinates, a, c, G, g, h);
         (*J)(a, c) = value;
         (*J)(c, a) = value;
       }

@@ -45,7 +45,7 @@ constexpr std::array<Ring, 4> kRings = {{{0, 1}, {0, -1}, {1, 1}, {1, -1}}};
 struct Fit {
   Eigen::Matrix3d frame;  // columns e1, e2, axis
   int sign_c = 1, sign_s = 1;
-  double turn = 0;        // psi: the design is turned by psi about the axis
+  double turn = 0;                 // psi: the design is turned by psi about the axis
   std::array<int, 14> position{};  // slot -> position: 0, 1 the poles, then ring j point k at 2 + 3 j + k
 };
 

@@ -19,8 +19,8 @@ using Dense = Eigen::Matrix<T, -1, -1>;
 
 struct EigenvalueKktSystem {
   const SphereChart* chart;
-  FreeCoordinates coordinates;  // the chart coordinates; lambda and Omega follow them
-  int multiplicity = 1;         // m
+  FreeCoordinates coordinates;        // the chart coordinates; lambda and Omega follow them
+  int multiplicity = 1;               // m
   Eigen::Matrix<double, 9, 9> basis;  // Q: columns 0..m-1 span the computed cluster
 
   int free_size() const { return coordinates.size(); }

@@ -1,8 +1,8 @@
 // The certificates' arithmetic: MPFI intervals (outward rounding) beside the MPFR points of the
 // polish, at the same run-time precision, and the few interval predicates a Krawczyk test needs.
 #pragma once
-#include <boost/multiprecision/mpfi.hpp>
 #include <Eigen/Core>
+#include <boost/multiprecision/mpfi.hpp>
 
 #include "numeric/polish/real.hpp"
 
@@ -11,7 +11,8 @@ namespace scalcal::certify_detail {
 using polish_detail::MatX;
 using polish_detail::Real;
 using polish_detail::VecX;
-using Interval = boost::multiprecision::number<boost::multiprecision::mpfi_float_backend<0>, boost::multiprecision::et_off>;
+using Interval =
+    boost::multiprecision::number<boost::multiprecision::mpfi_float_backend<0>, boost::multiprecision::et_off>;
 using IVecX = Eigen::Matrix<Interval, Eigen::Dynamic, 1>;
 using IMatX = Eigen::Matrix<Interval, Eigen::Dynamic, Eigen::Dynamic>;
 

@@ -16,8 +16,8 @@ namespace scalcal::certify_detail {
 
 struct NewtonOutcome {
   VecX x;
-  Real residual;     // inf-norm of F at x
-  Real displacement; // inf-norm of x - start
+  Real residual;      // inf-norm of F at x
+  Real displacement;  // inf-norm of x - start
   int iterations = 0;
 };
 

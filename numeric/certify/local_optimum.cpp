@@ -77,8 +77,9 @@ void smooth_optimum(const Program& program, const CertifyTarget& t, int digits, 
   IMatX H;
   system.eval(box->box, FX, &H);
   if (!positive_definite(H)) {
-    r.reason = "a critical point is enclosed, but the Hessian is not proven positive definite: a saddle or a "
-               "degenerate minimum";
+    r.reason =
+        "a critical point is enclosed, but the Hessian is not proven positive definite: a saddle or a "
+        "degenerate minimum";
     return;
   }
   // Mean-value form: f(X) within f(x) + F(X) . (X - x).
@@ -97,8 +98,7 @@ void smooth_optimum(const Program& program, const CertifyTarget& t, int digits, 
 // min s subject to K_rr <= s (minimax_kkt.hpp), enclosed by Krawczyk; then strict complementarity
 // (every mu_r > 0), the other entries strictly below s, and H + rho G G^T positive definite over the
 // box: by Finsler's lemma the second-order sufficient condition.
-void max_diagonal_optimum(const Program& program, const CertifyTarget& t, int digits, double spread,
-                          LocalOutcome& r) {
+void max_diagonal_optimum(const Program& program, const CertifyTarget& t, int digits, double spread, LocalOutcome& r) {
   r.method = "Krawczyk on the KKT system of the active diagonal entries, interval Cholesky of H + rho G G^T";
   const int n = program.size();
   const Gauge gauge = gauge_for(program, false);
@@ -170,8 +170,9 @@ void max_diagonal_optimum(const Program& program, const CertifyTarget& t, int di
 // definite (the other eigenvalues stay above lambda in the whole box), and -Hess <Omega, R> +
 // rho J^T J positive definite: Finsler's lemma gives the second-order sufficient condition.
 void max_eigenvalue_optimum(const Program& program, int digits, double spread, LocalOutcome& r) {
-  r.method = "Krawczyk on the KKT system of the multiple smallest eigenvalue of M, interval Cholesky of "
-             "-Hess <Omega, R> + rho J^T J";
+  r.method =
+      "Krawczyk on the KKT system of the multiple smallest eigenvalue of M, interval Cholesky of "
+      "-Hess <Omega, R> + rho J^T J";
   const int n = program.size();
   const Gauge gauge = gauge_for(program, false);
   EigenvalueKktSystem system{&gauge.chart, FreeCoordinates::all_but(2 * n, gauge.held), 1, {}};
@@ -250,8 +251,8 @@ LocalOutcome local_optimum(const Program& program, const CertifyTarget& t, int d
       // off its optimum spreads them, so wider spreads are tried until one certifies. The first
       // attempt's outcome is kept when none does (its reason names the computed structure).
       const bool diagonal = t.local == LocalCertificate::max_diagonal;
-      const std::array<double, 3> spreads = diagonal ? std::array<double, 3>{1e-7, 1e-5, 1e-3}
-                                                     : std::array<double, 3>{1e-5, 1e-4, 1e-3};
+      const std::array<double, 3> spreads =
+          diagonal ? std::array<double, 3>{1e-7, 1e-5, 1e-3} : std::array<double, 3>{1e-5, 1e-4, 1e-3};
       LocalOutcome first;
       for (const double spread : spreads) {
         LocalOutcome attempt;
@@ -260,8 +261,10 @@ LocalOutcome local_optimum(const Program& program, const CertifyTarget& t, int d
         else
           max_eigenvalue_optimum(program, digits, spread, attempt);
         if (attempt.certified) return attempt;
-        if (spread == spreads[0]) first = std::move(attempt);
-        else if (!first.polished && attempt.polished) first.polished = attempt.polished;
+        if (spread == spreads[0])
+          first = std::move(attempt);
+        else if (!first.polished && attempt.polished)
+          first.polished = attempt.polished;
       }
       return first;
     }

@@ -14,14 +14,14 @@
 namespace scalcal::certify_detail {
 
 struct LocalOutcome {
-  bool certified = false;         // a strict local minimum is enclosed
-  Interval value;                 // certified: its criterion value, normalised (N^9 det K, N tr K, ...)
-  std::vector<IPoint> optimum;    // certified: its positions, enclosed
+  bool certified = false;           // a strict local minimum is enclosed
+  Interval value;                   // certified: its criterion value, normalised (N^9 det K, N tr K, ...)
+  std::vector<IPoint> optimum;      // certified: its positions, enclosed
   std::optional<Program> polished;  // the critical or KKT point Newton reached near the program, if any
   int unknowns = 0;
   int equations = 0;
   std::string method;
-  std::string reason;             // what the certificate proves, or why it does not apply
+  std::string reason;  // what the certificate proves, or why it does not apply
 };
 
 LocalOutcome local_optimum(const Program& program, const CertifyTarget& target, int digits);

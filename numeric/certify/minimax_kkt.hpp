@@ -31,9 +31,8 @@ struct MinimaxKktSystem {
     const T s = unknowns(m);
     std::vector<std::array<Jet2<T>, 9>> rows;
     T log_det;
-    const Square9<T> K =
-        spd_inverse(assemble_information(*chart, coordinates.full(Eigen::Matrix<T, -1, 1>(unknowns.head(m))), &rows),
-                    log_det);
+    const Square9<T> K = spd_inverse(
+        assemble_information(*chart, coordinates.full(Eigen::Matrix<T, -1, 1>(unknowns.head(m))), &rows), log_det);
     Square9<T> W = Square9<T>::Zero();
     for (int q = 0; q < na; ++q) W(active[q], active[q]) = unknowns(m + 1 + q);
     const Square9<T> KWK = times(K, times(W, K));
@@ -41,7 +40,7 @@ struct MinimaxKktSystem {
     F.resize(size());
     std::vector<Column9<T>> g, h;
     row_derivatives(rows, coordinates, g, h);
-    std::vector<Square9<T>> P(m), Q(m);  // K X_a and K W K X_a
+    std::vector<Square9<T>> P(m), Q(m);    // K X_a and K W K X_a
     Eigen::Matrix<T, -1, -1> grad(m, na);  // d K_rr / d x_a
     for (int a = 0; a < m; ++a) {
       T sum(0);

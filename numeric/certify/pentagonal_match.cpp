@@ -16,7 +16,7 @@ constexpr double kTolerance = 1e-4;
 // A family member in the frame (e1, e2, axis): point 0 and 1 the poles, then ring j = 0, 1 at
 // height +-1/sqrt 5 with angles t_j + 72 k degrees. The fit keeps, for each, its position index.
 struct Fit {
-  Eigen::Matrix3d frame;        // columns e1, e2, axis
+  Eigen::Matrix3d frame;         // columns e1, e2, axis
   std::array<double, 2> turn{};  // t_0, t_1
   std::array<int, 12> position{};
 };
@@ -89,7 +89,8 @@ std::optional<std::vector<IPoint>> pentagonal_design_near(const Program& program
   local[1] = {Interval(0), Interval(0), Interval(-1)};
   for (int j = 0; j < 2; ++j) {
     const Interval tau(std::tan(f->turn[j] / 2));
-    const Interval ct = (Interval(1) - tau * tau) / (Interval(1) + tau * tau), st = two * tau / (Interval(1) + tau * tau);
+    const Interval ct = (Interval(1) - tau * tau) / (Interval(1) + tau * tau),
+                   st = two * tau / (Interval(1) + tau * tau);
     for (int k = 0; k < 5; ++k)
       local[2 + 5 * j + k] = {r * (ct * ck[k] - st * sk[k]), r * (st * ck[k] + ct * sk[k]), j == 0 ? h : Interval(-h)};
   }

@@ -23,22 +23,27 @@ enum class LocalCertificate { none, log_det, trace, max_diagonal, max_eigenvalue
 
 struct CertifyTarget {
   std::string name;
-  Interval limit;            // the criterion's limit, enclosed
-  Interval b;                // E[x^2 y^2] of its symmetric optimal measure, enclosed
-  bool rotations = false;    // invariant under O(3): the certificates hold the rotation gauge
+  Interval limit;                // the criterion's limit, enclosed
+  Interval b;                    // E[x^2 y^2] of its symmetric optimal measure, enclosed
+  bool rotations = false;        // invariant under O(3): the certificates hold the rotation gauge
   bool unique_moments = false;   // strictly convex in M: the optimal moment matrix is unique (D, A)
   bool uniform_moments = false;  // its optimal moment matrix is the uniform measure's (D: the 4-designs)
   LocalCertificate local = LocalCertificate::none;
-  std::vector<int> rows;     // max_diagonal: the diagonal entries of K the criterion takes the max of
+  std::vector<int> rows;  // max_diagonal: the diagonal entries of K the criterion takes the max of
 };
 
 template <class C>
 constexpr LocalCertificate local_certificate_of() {
-  if constexpr (MaxDiagonalCriterion<C>) return LocalCertificate::max_diagonal;
-  else if constexpr (MaxEigenvalueCriterion<C>) return LocalCertificate::max_eigenvalue;
-  else if constexpr (kDeterminantOnly<C>) return LocalCertificate::log_det;   // N^9 det K: -log det M
-  else if constexpr (std::is_same_v<C, ACriterion>) return LocalCertificate::trace;  // N tr K: tr M^-1
-  else return LocalCertificate::none;
+  if constexpr (MaxDiagonalCriterion<C>)
+    return LocalCertificate::max_diagonal;
+  else if constexpr (MaxEigenvalueCriterion<C>)
+    return LocalCertificate::max_eigenvalue;
+  else if constexpr (kDeterminantOnly<C>)
+    return LocalCertificate::log_det;  // N^9 det K: -log det M
+  else if constexpr (std::is_same_v<C, ACriterion>)
+    return LocalCertificate::trace;  // N tr K: tr M^-1
+  else
+    return LocalCertificate::none;
 }
 
 // The target of criterion C for the paper's model, at the current MPFI precision.

@@ -69,12 +69,11 @@ concept Criterion = requires(const criterion_check::View& k) {
 };
 
 template <class C>
-concept SmoothCriterion =
-    Criterion<C> && std::same_as<typename C::Form, SmoothForm> &&
+concept SmoothCriterion = Criterion<C> && std::same_as<typename C::Form, SmoothForm> &&
     requires(const criterion_check::M9& M, double& f, MatrixDerivatives<double, 9>& d) {
-      { C::objective(M, 18, f) } -> std::same_as<bool>;    // the solvers' objective (log D for D)
-      { C::derivatives(M, 18, d) } -> std::same_as<bool>;  // false: M not positive definite
-    };
+  { C::objective(M, 18, f) } -> std::same_as<bool>;    // the solvers' objective (log D for D)
+  { C::derivatives(M, 18, d) } -> std::same_as<bool>;  // false: M not positive definite
+};
 
 template <class C>
 concept MaxDiagonalCriterion = Criterion<C> && std::same_as<typename C::Form, MaxDiagonalForm> && requires {
@@ -97,7 +96,9 @@ concept MaxEigenvalueCriterion = Criterion<C> && std::same_as<typename C::Form, 
 // A criterion whose value is N^P / det M may say so (static constexpr bool determinant_only = true)
 // and gets random search's batched early-exit path.
 template <class C>
-inline constexpr bool kDeterminantOnly = requires { requires C::determinant_only; };
+inline constexpr bool kDeterminantOnly = requires {
+  requires C::determinant_only;
+};
 
 template <class C>
 inline constexpr bool kUnknownForm = !(SmoothCriterion<C> || MaxDiagonalCriterion<C> || MaxEigenvalueCriterion<C>);

@@ -12,7 +12,8 @@
 
 namespace scalcal {
 
-template <class Scalar> using MatXT = Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic>;
+template <class Scalar>
+using MatXT = Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic>;
 
 // Gradient of phi(M) with respect to every position, given G = d phi / dM (symmetric).
 template <class Model = Paper9Model, class Scalar>

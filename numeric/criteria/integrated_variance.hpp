@@ -12,8 +12,8 @@
 #include "numeric/criteria/criterion.hpp"
 #include "numeric/criteria/starts.hpp"
 #include "numeric/model/design.hpp"
-#include "numeric/program/program.hpp"
 #include "numeric/model/registry.hpp"
+#include "numeric/program/program.hpp"
 
 namespace scalcal {
 

@@ -32,7 +32,6 @@ using RegisteredCriteria = CriterionList<DCriterion, ACriterion, ECriterion, SCr
 using RegisteredCriteria = CriterionList<DCriterion, ACriterion, ECriterion, SCriterion>;
 #endif
 
-
 class CriterionKind {
  public:
   constexpr explicit CriterionKind(int index) : index_(index) {}

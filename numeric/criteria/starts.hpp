@@ -10,8 +10,10 @@ constexpr int grown_starts(int base, int positions) { return positions <= 12 ? b
 // multistart: C::minimum_starts(N) where the criterion knows a deceptive N, else none.
 template <class C>
 constexpr int minimum_starts(int positions) {
-  if constexpr (requires { C::minimum_starts(positions); }) return C::minimum_starts(positions);
-  else return 0;
+  if constexpr (requires { C::minimum_starts(positions); })
+    return C::minimum_starts(positions);
+  else
+    return 0;
 }
 
 }  // namespace scalcal

@@ -1,6 +1,9 @@
 // The strict CSV reader every file of scalcal goes through (csv_table.hpp).
 #include "numeric/io/csv_table.hpp"
 
+#include <fcntl.h>
+#include <poll.h>
+#include <unistd.h>
 #include <algorithm>
 #include <array>
 #include <cerrno>
@@ -8,9 +11,6 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
-#include <fcntl.h>
-#include <poll.h>
-#include <unistd.h>
 #include <sstream>
 #include <string_view>
 
@@ -60,8 +60,7 @@ bool looks_binary(std::string_view text) {
 // What the text is, when it is not text scalcal reads: UTF-16 (a spreadsheet's "Unicode text")
 // gets its own advice.
 std::string binary_reason(std::string_view text) {
-  if (text.starts_with("\xFF\xFE") || text.starts_with("\xFE\xFF"))
-    return "UTF-16 text; save the file as UTF-8 CSV";
+  if (text.starts_with("\xFF\xFE") || text.starts_with("\xFE\xFF")) return "UTF-16 text; save the file as UTF-8 CSV";
   return "not a text file (binary or control characters)";
 }
 
@@ -110,16 +109,17 @@ CsvTable parse_table(const std::string& input, const std::string& name, const Ta
   while (std::getline(in, raw)) {
     ++line_no;
     if (raw.size() > L::max_line_chars)
-      throw InputError(name, line_no, "line longer than the limit of " + std::to_string(L::max_line_chars) +
-                                          " characters");
+      throw InputError(name, line_no,
+                       "line longer than the limit of " + std::to_string(L::max_line_chars) + " characters");
     std::string line = raw;
     if (const auto hash = line.find('#'); hash != std::string::npos) line.erase(hash);
     line = trim(line);
     if (line.empty()) continue;
     auto fields = split(line, format.whitespace);
     if (fields.size() > L::max_columns)
-      throw InputError(name, line_no, std::to_string(fields.size()) + " columns, more than the limit of " +
-                                          std::to_string(L::max_columns));
+      throw InputError(
+          name, line_no,
+          std::to_string(fields.size()) + " columns, more than the limit of " + std::to_string(L::max_columns));
     if (!header_seen) {
       double probe;
       if (parse_number(fields.front(), probe))
@@ -133,8 +133,9 @@ CsvTable parse_table(const std::string& input, const std::string& name, const Ta
       continue;
     }
     if (fields.size() != table.columns.size())
-      throw InputError(name, line_no, "expected " + std::to_string(table.columns.size()) +
-                                          " values, found " + std::to_string(fields.size()));
+      throw InputError(
+          name, line_no,
+          "expected " + std::to_string(table.columns.size()) + " values, found " + std::to_string(fields.size()));
     if (table.rows.size() == L::max_rows)
       throw InputError(name, line_no, "more than the limit of " + std::to_string(L::max_rows) + " data rows");
     CsvTable::Row row;
@@ -144,7 +145,8 @@ CsvTable parse_table(const std::string& input, const std::string& name, const Ta
       if (!parse_number(fields[c], v))
         throw InputError(name, line_no, in_quotes(fields[c]) + " in column " + table.columns[c] + " is not a number");
       if (!std::isfinite(v) && !format.nonfinite_allowed)
-        throw InputError(name, line_no, "value in column " + table.columns[c] + " is not finite (" + display_name(fields[c]) + ")");
+        throw InputError(name, line_no,
+                         "value in column " + table.columns[c] + " is not finite (" + display_name(fields[c]) + ")");
       row.values.push_back(v);
     }
     table.rows.push_back(std::move(row));

@@ -20,7 +20,9 @@ class InputError : public std::runtime_error {
  public:
   InputError(std::string file, int line, std::string reason)
       : std::runtime_error(format(file, line, reason)),
-        file_(std::move(file)), line_(line), reason_(std::move(reason)) {}
+        file_(std::move(file)),
+        line_(line),
+        reason_(std::move(reason)) {}
 
   const std::string& file() const { return file_; }
   int line() const { return line_; }  // 0 when the error is not tied to one line

@@ -14,9 +14,10 @@ struct Axis6Model : MonomialModel<Axis6Model> {
   static constexpr std::array<std::string_view, 6> parameter_names = {"bias_x",  "bias_y",  "bias_z",
                                                                       "scale_x", "scale_y", "scale_z"};
   static constexpr std::array<ParameterGroup, 6> parameter_groups = {ParameterGroup::bias,  ParameterGroup::bias,
-                                                                      ParameterGroup::bias,  ParameterGroup::scale,
-                                                                      ParameterGroup::scale, ParameterGroup::scale};
-  static constexpr std::array<Exponents, 6> exponents = {{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {2, 0, 0}, {0, 2, 0}, {0, 0, 2}}};
+                                                                     ParameterGroup::bias,  ParameterGroup::scale,
+                                                                     ParameterGroup::scale, ParameterGroup::scale};
+  static constexpr std::array<Exponents, 6> exponents = {
+      {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {2, 0, 0}, {0, 2, 0}, {0, 0, 2}}};
 
   static constexpr std::string_view proof = "proofs/axis6_limits.md";
   static constexpr std::string_view six = "the six axis directions +-x, +-y, +-z, each N/6 times";

@@ -12,7 +12,7 @@ struct Bias3Model : MonomialModel<Bias3Model> {
   static constexpr std::string_view summary = "h = (x, y, z): offsets only";
   static constexpr std::array<std::string_view, 3> parameter_names = {"bias_x", "bias_y", "bias_z"};
   static constexpr std::array<ParameterGroup, 3> parameter_groups = {ParameterGroup::bias, ParameterGroup::bias,
-                                                                      ParameterGroup::bias};
+                                                                     ParameterGroup::bias};
   static constexpr std::array<Exponents, 3> exponents = {{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
 
   static constexpr std::string_view proof = "proofs/bias3_limits.md";

@@ -17,12 +17,21 @@ struct Cubic12Model : MonomialModel<Cubic12Model> {
       "bias_x",     "bias_y",     "bias_z",     "scale_x", "scale_y", "scale_z",
       "nonorth_xy", "nonorth_yz", "nonorth_zx", "cubic_x", "cubic_y", "cubic_z"};
   static constexpr std::array<ParameterGroup, 12> parameter_groups = {
-      ParameterGroup::bias,    ParameterGroup::bias,    ParameterGroup::bias,    ParameterGroup::scale,
-      ParameterGroup::scale,   ParameterGroup::scale,   ParameterGroup::nonorth, ParameterGroup::nonorth,
-      ParameterGroup::nonorth, ParameterGroup::cubic,   ParameterGroup::cubic,   ParameterGroup::cubic};
-  static constexpr std::array<Exponents, 12> exponents = {{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {2, 0, 0},
-                                                           {0, 2, 0}, {0, 0, 2}, {1, 1, 0}, {0, 1, 1},
-                                                           {1, 0, 1}, {3, 0, 0}, {0, 3, 0}, {0, 0, 3}}};
+      ParameterGroup::bias,    ParameterGroup::bias,  ParameterGroup::bias,    ParameterGroup::scale,
+      ParameterGroup::scale,   ParameterGroup::scale, ParameterGroup::nonorth, ParameterGroup::nonorth,
+      ParameterGroup::nonorth, ParameterGroup::cubic, ParameterGroup::cubic,   ParameterGroup::cubic};
+  static constexpr std::array<Exponents, 12> exponents = {{{1, 0, 0},
+                                                           {0, 1, 0},
+                                                           {0, 0, 1},
+                                                           {2, 0, 0},
+                                                           {0, 2, 0},
+                                                           {0, 0, 2},
+                                                           {1, 1, 0},
+                                                           {0, 1, 1},
+                                                           {1, 0, 1},
+                                                           {3, 0, 0},
+                                                           {0, 3, 0},
+                                                           {0, 0, 3}}};
 
   static constexpr std::string_view proof = "proofs/cubic12_limits.md";
   // Weight lambda on the six axis directions, 1 - lambda on the eight cube diagonals (+-1,+-1,+-1)/sqrt 3:
@@ -31,8 +40,8 @@ struct Cubic12Model : MonomialModel<Cubic12Model> {
       {"D", 4093910627611872177.0 / 12800000.0, "4093910627611872177/12800000", "7/33", "2/33", "17/99", 2.0 / 33,
        "weight 5/11 on the 6 axis directions, 6/11 on the 8 cube diagonals",
        "exactly N = 132k (5/66 and 3/44 of N per direction): none below 132 (proven)"},
-      {"A", 186.72114910328065, "99+9*sqrt(95)", "(3*sqrt(95)-6)/117", "(45-3*sqrt(95))/234", "(4*sqrt(95)-21)/117", 0.06734879045116712,
-       "weight (3 sqrt 95 - 19)/26 on the 6 axis directions, the rest on the 8 cube diagonals",
+      {"A", 186.72114910328065, "99+9*sqrt(95)", "(3*sqrt(95)-6)/117", "(45-3*sqrt(95))/234", "(4*sqrt(95)-21)/117",
+       0.06734879045116712, "weight (3 sqrt 95 - 19)/26 on the 6 axis directions, the rest on the 8 cube diagonals",
        "no finite N: the optimal weights are irrational (proven)"},
       {"E", 39.0, "39", "8/39", "5/78", "19/117", 5.0 / 78,
        "weight 11/26 on the 6 axis directions, 15/26 on the 8 cube diagonals",

@@ -11,20 +11,25 @@
 
 namespace scalcal {
 
-template <class Scalar> using Vec3T = Eigen::Matrix<Scalar, 3, 1>;
-template <class Scalar> using Mat3T = Eigen::Matrix<Scalar, 3, 3>;
+template <class Scalar>
+using Vec3T = Eigen::Matrix<Scalar, 3, 1>;
+template <class Scalar>
+using Mat3T = Eigen::Matrix<Scalar, 3, 3>;
 using Vec3 = Vec3T<double>;
 using Mat3 = Mat3T<double>;
 
 // The measurement positions of a program: unit vectors in the meter's frame.
-template <class Scalar> using PositionsT = std::vector<Vec3T<Scalar>>;
+template <class Scalar>
+using PositionsT = std::vector<Vec3T<Scalar>>;
 
 // The groups the paper reports RMS errors for (eq. 7); a model may have any of them.
 enum class ParameterGroup { bias = 0, scale = 1, nonorth = 2, cubic = 3 };
 inline constexpr std::array<std::string_view, 4> kGroupNames = {"bias", "scale", "nonorth", "cubic"};
 
-template <class Model, class Scalar> using RowT = Eigen::Matrix<Scalar, Model::kParameters, 1>;
-template <class Model, class Scalar> using JacobianT = Eigen::Matrix<Scalar, Model::kParameters, 3>;
+template <class Model, class Scalar>
+using RowT = Eigen::Matrix<Scalar, Model::kParameters, 1>;
+template <class Model, class Scalar>
+using JacobianT = Eigen::Matrix<Scalar, Model::kParameters, 3>;
 template <class Model, class Scalar>
 using InformationT = Eigen::Matrix<Scalar, Model::kParameters, Model::kParameters>;
 

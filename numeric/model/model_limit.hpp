@@ -13,12 +13,12 @@ struct ModelLimit {
   std::string_view exact;      // the infimum in closed form
   // Moments of the optimal measure symmetrised over the 48 signed permutations, in closed form
   // ("" where the limit does not determine them or the model has no such moment).
-  std::string_view x4;         // E[x^4]
-  std::string_view x2y2;       // E[x^2 y^2]
-  std::string_view x6;         // E[x^6]
-  double b;                    // E[x^2 y^2] as a number (NaN: not determined)
-  std::string_view measure;    // the optimal measure in words
-  std::string_view attained;   // which N attain it, and how sure that is
+  std::string_view x4;        // E[x^4]
+  std::string_view x2y2;      // E[x^2 y^2]
+  std::string_view x6;        // E[x^6]
+  double b;                   // E[x^2 y^2] as a number (NaN: not determined)
+  std::string_view measure;   // the optimal measure in words
+  std::string_view attained;  // which N attain it, and how sure that is
 };
 
 inline constexpr double kNotDetermined = std::numeric_limits<double>::quiet_NaN();

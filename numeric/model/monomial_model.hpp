@@ -31,7 +31,8 @@ struct MonomialModel {
   template <class Scalar>
   static auto row(const Vec3T<Scalar>& x) {
     RowT<Derived, Scalar> h;
-    for (int r = 0; r < Derived::kParameters; ++r) h(r) = detail::monomial(x, Derived::exponents[static_cast<std::size_t>(r)]);
+    for (int r = 0; r < Derived::kParameters; ++r)
+      h(r) = detail::monomial(x, Derived::exponents[static_cast<std::size_t>(r)]);
     return h;
   }
 

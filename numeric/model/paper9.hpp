@@ -14,8 +14,9 @@ struct Paper9Model {
   static constexpr std::array<std::string_view, 9> parameter_names = {
       "bias_x", "bias_y", "bias_z", "scale_x", "scale_y", "scale_z", "nonorth_xy", "nonorth_yz", "nonorth_zx"};
   static constexpr std::array<ParameterGroup, 9> parameter_groups = {
-      ParameterGroup::bias,  ParameterGroup::bias,  ParameterGroup::bias,    ParameterGroup::scale,  ParameterGroup::scale,
-      ParameterGroup::scale, ParameterGroup::nonorth, ParameterGroup::nonorth, ParameterGroup::nonorth};
+      ParameterGroup::bias,    ParameterGroup::bias,    ParameterGroup::bias,
+      ParameterGroup::scale,   ParameterGroup::scale,   ParameterGroup::scale,
+      ParameterGroup::nonorth, ParameterGroup::nonorth, ParameterGroup::nonorth};
 
   template <class Scalar>
   static RowT<Paper9Model, Scalar> row(const Vec3T<Scalar>& e) {
@@ -28,15 +29,8 @@ struct Paper9Model {
   static JacobianT<Paper9Model, Scalar> jacobian(const Vec3T<Scalar>& e) {
     const Scalar zero(0), one(1), two(2);
     JacobianT<Paper9Model, Scalar> J;
-    J << one, zero, zero,
-         zero, one, zero,
-         zero, zero, one,
-         two * e(0), zero, zero,
-         zero, two * e(1), zero,
-         zero, zero, two * e(2),
-         e(1), e(0), zero,
-         zero, e(2), e(1),
-         e(2), zero, e(0);
+    J << one, zero, zero, zero, one, zero, zero, zero, one, two * e(0), zero, zero, zero, two * e(1), zero, zero, zero,
+        two * e(2), e(1), e(0), zero, zero, e(2), e(1), e(2), zero, e(0);
     return J;
   }
 
@@ -45,9 +39,7 @@ struct Paper9Model {
   static Mat3T<Scalar> curvature(const RowT<Paper9Model, Scalar>& w, const Vec3T<Scalar>& /*at*/) {
     const Scalar two(2);
     Mat3T<Scalar> T;
-    T << two * w(3), w(6), w(8),
-         w(6), two * w(4), w(7),
-         w(8), w(7), two * w(5);
+    T << two * w(3), w(6), w(8), w(6), two * w(4), w(7), w(8), w(7), two * w(5);
     return T;
   }
 };
@@ -57,8 +49,10 @@ static_assert(CalibrationModel<Paper9Model>);
 inline constexpr int kParameters = Paper9Model::kParameters;
 inline constexpr auto kParameterNames = Paper9Model::parameter_names;
 
-template <class Scalar> using Vec9T = RowT<Paper9Model, Scalar>;
-template <class Scalar> using Mat9T = InformationT<Paper9Model, Scalar>;
+template <class Scalar>
+using Vec9T = RowT<Paper9Model, Scalar>;
+template <class Scalar>
+using Mat9T = InformationT<Paper9Model, Scalar>;
 using Vec9 = Vec9T<double>;
 using Mat9 = Mat9T<double>;
 

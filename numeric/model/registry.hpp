@@ -35,9 +35,7 @@ class ModelKind {
 };
 inline constexpr ModelKind ModelKind::paper9 = ModelKind(0);
 
-
 inline constexpr int kModelCount = RegisteredModels::size;
-
 
 // The ModelKind index of a model type; -1 for a model that is not registered (one a test defines).
 template <class M>
@@ -46,8 +44,10 @@ inline constexpr int kModelIndex = detail::index_in<M>(RegisteredModels{});
 namespace detail {
 template <int P, class First, class... Ms>
 auto model_with_parameters(TypeList<First, Ms...>) {
-  if constexpr (First::kParameters == P) return First{};
-  else return model_with_parameters<P>(TypeList<Ms...>{});
+  if constexpr (First::kParameters == P)
+    return First{};
+  else
+    return model_with_parameters<P>(TypeList<Ms...>{});
 }
 }  // namespace detail
 
@@ -78,7 +78,8 @@ inline std::optional<ModelKind> parse_model(std::string_view s) {
 // "paper9|axis6|bias3|cubic12", for usage lines.
 inline std::string model_names(std::string_view separator = "|") {
   std::string out;
-  for (int i = 0; i < kModelCount; ++i) out += (i ? std::string(separator) : "") + std::string(model_name(ModelKind(i)));
+  for (int i = 0; i < kModelCount; ++i)
+    out += (i ? std::string(separator) : "") + std::string(model_name(ModelKind(i)));
   return out;
 }
 

@@ -11,7 +11,7 @@
 namespace scalcal {
 
 struct PolishOptions {
-  int digits = 50;          // significant digits wanted in value_digits
+  int digits = 50;  // significant digits wanted in value_digits
   int max_iterations = 40;
 };
 
@@ -21,11 +21,11 @@ struct PolishResult {
   // semidefinite dual exists, its E is no worse than the start's). First-order checks: a saddle can
   // still pass. summary.iterations counts Jacobians (E: summed over the multiplicities tried).
   Summary summary;
-  double residual = 0;      // 2-norm of the first-order conditions at the polished program (NaN: rank < P)
-  int digits = 0;           // significant digits in value_digits (fewer than asked when not converged)
-  std::string value_digits; // the normalised criterion, decimal
-  Program program;          // the polished program, rounded to double
-  int active = 0;           // max-diagonal form: number of active diagonal elements K(r,r)
+  double residual = 0;       // 2-norm of the first-order conditions at the polished program (NaN: rank < P)
+  int digits = 0;            // significant digits in value_digits (fewer than asked when not converged)
+  std::string value_digits;  // the normalised criterion, decimal
+  Program program;           // the polished program, rounded to double
+  int active = 0;            // max-diagonal form: number of active diagonal elements K(r,r)
 
   bool converged() const { return summary.converged(); }
 };

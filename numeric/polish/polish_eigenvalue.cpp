@@ -3,6 +3,7 @@
 
 namespace scalcal::polish_detail {
 
-template PolishResult polish_eigenvalue<Paper9Model>(const PolishOps<Paper9Model>&, const Program&, const PolishOptions&);
+template PolishResult polish_eigenvalue<Paper9Model>(const PolishOps<Paper9Model>&, const Program&,
+                                                     const PolishOptions&);
 
 }  // namespace scalcal::polish_detail

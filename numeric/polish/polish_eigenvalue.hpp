@@ -1,9 +1,8 @@
-// The polish of the eigenvalue form (E). E = 1 / lambda_min(M/N) is not differentiable at its optimum, where lambda_min is
-// a multiple eigenvalue (m = 5 at N = 9 and at the limit 12), so its first-order conditions are
-// those of a nonsmooth maximum: a dual Z = U C U^T (C >= 0, trace 1) on the eigenspace U of
-// lambda_min with tangential grad tr(Z M) = 0 at every position. Newton runs on the multiplicity-m
-// form of these conditions (as in Overton's methods for eigenvalue optimisation), unknowns
-// z = (eta, lambda, U, C, nu), residual
+// The polish of the eigenvalue form (E). E = 1 / lambda_min(M/N) is not differentiable at its optimum, where lambda_min
+// is a multiple eigenvalue (m = 5 at N = 9 and at the limit 12), so its first-order conditions are those of a nonsmooth
+// maximum: a dual Z = U C U^T (C >= 0, trace 1) on the eigenspace U of lambda_min with tangential grad tr(Z M) = 0 at
+// every position. Newton runs on the multiplicity-m form of these conditions (as in Overton's methods for eigenvalue
+// optimisation), unknowns z = (eta, lambda, U, C, nu), residual
 //   (M/N - lambda I) U,  U^T U - I,                 (lambda an m-fold eigenvalue, U its eigenvectors)
 //   2 J_i^T Z h_i / N + 2 nu_i eta_i,  |eta_i|^2 - 1,  trace C - 1   (Z = U C U^T, C symmetric).
 // Why not Z as a free 9x9 unknown with (M/N - lambda I) Z = 0: that system does not fix the
@@ -123,10 +122,12 @@ struct EigenConditions {
     }
     const Eigen::JacobiSVD<MatX> svd(T, Eigen::ComputeThinU | Eigen::ComputeFullV);
     int rank = 0;
-    while (rank < svd.singularValues().size() && svd.singularValues()(rank) > tolerance * svd.singularValues()(0)) ++rank;
+    while (rank < svd.singularValues().size() && svd.singularValues()(rank) > tolerance * svd.singularValues()(0))
+      ++rank;
     const MatX free = svd.matrixV().rightCols(pairs - rank);
     const VecX fixed =
-        svd.matrixV().leftCols(rank) * (svd.matrixU().row(3 * n).head(rank).transpose().array() / svd.singularValues().head(rank).array()).matrix();
+        svd.matrixV().leftCols(rank) *
+        (svd.matrixU().row(3 * n).head(rank).transpose().array() / svd.singularValues().head(rank).array()).matrix();
     auto matrix = [&](const VecX& x) {
       MatX C = MatX::Zero(m, m);
       for (int k = 0; k < pairs; ++k) C += x(k) * unit[static_cast<std::size_t>(k)];
@@ -218,7 +219,7 @@ struct Attempt {
   bool maximum = false;    // converged, lambda is lambda_min, a dual C >= 0, no worse than the start
   ProgramTpl<Real> program;
   Real E;
-  int digits = 0;          // the digits of E this attempt can vouch for
+  int digits = 0;  // the digits of E this attempt can vouch for
 };
 
 }  // namespace eigen_form
@@ -226,7 +227,8 @@ struct Attempt {
 // Runs under the caller's precision guard (W = 2P + 30 digits). Compiled once for the paper's model
 // (polish_eigenvalue.cpp).
 template <class Model>
-PolishResult polish_eigenvalue(const PolishOps<Model>& criterion, const Program& program, const PolishOptions& options) {
+PolishResult polish_eigenvalue(const PolishOps<Model>& criterion, const Program& program,
+                               const PolishOptions& options) {
   using namespace eigen_form;
   using MatP = InformationT<Model, Real>;
   PolishResult out;
@@ -280,8 +282,9 @@ PolishResult polish_eigenvalue(const PolishOps<Model>& criterion, const Program&
   });
   out.residual = static_cast<double>(best.norm);
   out.summary.termination = best.maximum ? Termination::converged : Termination::not_converged;
-  out.summary.message = best.maximum ? "multiple-eigenvalue conditions solved, with a positive semidefinite dual"
-                                     : "no root passed the checks of a maximum; digits limited to what the residual vouches for";
+  out.summary.message = best.maximum
+                            ? "multiple-eigenvalue conditions solved, with a positive semidefinite dual"
+                            : "no root passed the checks of a maximum; digits limited to what the residual vouches for";
   out.digits = best.digits;
   out.value_digits = best.E.str(out.digits, std::ios_base::showpoint);
   out.program = best.program.cast<double>();

@@ -21,7 +21,8 @@ PolishResult polish_with(const polish_detail::PolishOps<Model>& criterion, const
     throw std::invalid_argument("polish: at least " + std::to_string(Model::kParameters) + " positions are needed");
   // Every form divides by the information matrix: a rank-deficient program has no first-order conditions.
   const EvaluationTpl<double, Model> ev = evaluate<Model>(program);
-  if (!ev.full_rank()) throw std::invalid_argument("polish: " + rank_deficiency(erase_model(ev, ModelKind(kModelIndex<Model>))));
+  if (!ev.full_rank())
+    throw std::invalid_argument("polish: " + rank_deficiency(erase_model(ev, ModelKind(kModelIndex<Model>))));
   const unsigned W = static_cast<unsigned>(2 * options.digits + 30);
   polish_detail::PrecisionGuard guard(W);
   if (criterion.form == polish_detail::PolishForm::MaxEigenvalue)

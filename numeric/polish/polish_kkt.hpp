@@ -93,7 +93,8 @@ struct KktConditions {
       z(3 * n) = *std::max_element(d.begin(), d.end());
       for (int a = 0; a < m; ++a) {
         for (int i = 0; i < n; ++i)
-          for (int c = 0; c < 3; ++c) A(3 * i + c, a) = grads[static_cast<std::size_t>(a)][static_cast<std::size_t>(i)](c);
+          for (int c = 0; c < 3; ++c)
+            A(3 * i + c, a) = grads[static_cast<std::size_t>(a)][static_cast<std::size_t>(i)](c);
         A(3 * n, a) = Real(1);
       }
       b(3 * n) = Real(1);
@@ -166,6 +167,7 @@ PolishResult polish_kkt(const PolishOps<Model>& criterion, const Program& progra
   return out;
 }
 
-extern template PolishResult polish_kkt<Paper9Model>(const PolishOps<Paper9Model>&, const Program&, const PolishOptions&);
+extern template PolishResult polish_kkt<Paper9Model>(const PolishOps<Paper9Model>&, const Program&,
+                                                     const PolishOptions&);
 
 }  // namespace scalcal::polish_detail

@@ -19,8 +19,8 @@ struct PolishOps {
   using MatP = Eigen::Matrix<Real, P, P>;
   PolishForm form = PolishForm::Smooth;
   bool (*derivatives)(const MatP& M, int n, MatrixDerivatives<Real, P>& d) = nullptr;  // smooth form
-  std::vector<int> rows;                                                             // max-diagonal form
-  Real (*value)(const InverseInformation<Real, P>& k, const Real& n) = nullptr;       // normalised, from K
+  std::vector<int> rows;                                                               // max-diagonal form
+  Real (*value)(const InverseInformation<Real, P>& k, const Real& n) = nullptr;        // normalised, from K
 };
 
 template <Criterion C, class Model>

@@ -1,8 +1,8 @@
 // The polish's arithmetic: MPFR numbers at a precision set at run time (PrecisionGuard), and the
 // dynamic Eigen types over them.
 #pragma once
-#include <boost/multiprecision/mpfr.hpp>
 #include <Eigen/Core>
+#include <boost/multiprecision/mpfr.hpp>
 
 namespace scalcal::polish_detail {
 

@@ -29,9 +29,10 @@ std::string data_dir() {
   for (const char* compiled : {SCALCAL_INSTALLED_DATA, SCALCAL_BUILD_DATA})
     if (std::filesystem::exists(std::filesystem::path(compiled) / "table1_A.csv", ec)) return compiled;
 #endif
-  throw InputError("", 0, "cannot find the data folder with Tables 1-3 (looked in ../share/scalcal/data beside the "
-                          "executable and where scalcal was installed); set SCALCAL_DATA to the folder holding "
-                          "table1_A.csv");
+  throw InputError("", 0,
+                   "cannot find the data folder with Tables 1-3 (looked in ../share/scalcal/data beside the "
+                   "executable and where scalcal was installed); set SCALCAL_DATA to the folder holding "
+                   "table1_A.csv");
 }
 
 namespace {
@@ -54,7 +55,8 @@ long long parse_count(const std::string& s, const std::string& name, const char*
   long long v = 0;
   const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
   if (ec != std::errc() || end != s.data() + s.size() || v > hi)
-    throw InputError(name, 0, std::string(what) + " '" + display_name(s) + "' is out of range 0.." + std::to_string(hi));
+    throw InputError(name, 0,
+                     std::string(what) + " '" + display_name(s) + "' is out of range 0.." + std::to_string(hi));
   return v;
 }
 
@@ -90,13 +92,15 @@ std::optional<Program> paper_program(const std::string& name) {
     return Program::rotation(static_cast<int>(k), phase);
   }
   if (std::regex_match(name, m, std::regex(R"(octahedral-(\d+)-(\d+)-(\d+))"))) {
-    const auto a = parse_count(m[1], name, "axes multiplicity", max_n), e = parse_count(m[2], name, "edges multiplicity", max_n),
+    const auto a = parse_count(m[1], name, "axes multiplicity", max_n),
+               e = parse_count(m[2], name, "edges multiplicity", max_n),
                d = parse_count(m[3], name, "diagonals multiplicity", max_n);
     const long long n = 6 * a + 12 * e + 8 * d;
     if (n < kMinimumPositions || n > max_n)
-      throw InputError(name, 0, "6*" + std::to_string(a) + " + 12*" + std::to_string(e) + " + 8*" + std::to_string(d) +
-                                    " = " + std::to_string(n) + " positions; a program needs " +
-                                    std::to_string(kMinimumPositions) + ".." + std::to_string(max_n));
+      throw InputError(name, 0,
+                       "6*" + std::to_string(a) + " + 12*" + std::to_string(e) + " + 8*" + std::to_string(d) + " = " +
+                           std::to_string(n) + " positions; a program needs " + std::to_string(kMinimumPositions) +
+                           ".." + std::to_string(max_n));
     return Program::octahedral(static_cast<int>(a), static_cast<int>(e), static_cast<int>(d));
   }
   if (std::regex_match(name, m, std::regex(R"(random-(\d+)(?:-s(\d+))?)"))) {
@@ -119,8 +123,9 @@ std::optional<Program> paper_program(const std::string& name) {
 ProgramNames paper_program_names() {
   ProgramNames p;
   p.key = "paper";
-  p.pattern = "classic18, nine-2axes, nine-3axes, rotation-K[-pDEG], octahedral-A-E-D, dodecahedral-12, icosahedral-20, "
-              "table1-A, table2-E, table3-S, random-N[-sSEED]";
+  p.pattern =
+      "classic18, nine-2axes, nine-3axes, rotation-K[-pDEG], octahedral-A-E-D, dodecahedral-12, icosahedral-20, "
+      "table1-A, table2-E, table3-S, random-N[-sSEED]";
   p.group = "paper";
   p.resolve = paper_program;
   auto add = [&](const std::string& name, const std::string& description, const std::string& source) {
@@ -133,12 +138,12 @@ ProgramNames paper_program_names() {
     add("rotation-" + std::to_string(k), std::to_string(k) + " positions per ring about each axis",
         k == 6 ? "Fig. 2, ref. [12]" : "Fig. 4 (stars), ref. [12]");
   add("rotation-4-p45", "4 positions per ring, phase 45 deg (the 12 edge positions)", "Fig. 4 (stars)");
-  const int octa[][3] = {{0, 1, 0}, {1, 0, 1}, {1, 1, 0}, {0, 1, 1}, {1, 1, 1}, {2, 1, 0},
-                         {1, 2, 0}, {0, 2, 1}, {2, 2, 1}, {1, 1, 2}};
+  const int octa[][3] = {{0, 1, 0}, {1, 0, 1}, {1, 1, 0}, {0, 1, 1}, {1, 1, 1},
+                         {2, 1, 0}, {1, 2, 0}, {0, 2, 1}, {2, 2, 1}, {1, 1, 2}};
   for (const auto& o : octa)
     add("octahedral-" + std::to_string(o[0]) + "-" + std::to_string(o[1]) + "-" + std::to_string(o[2]),
-        "uniform projections: axes x" + std::to_string(o[0]) + ", edges x" + std::to_string(o[1]) +
-            ", diagonals x" + std::to_string(o[2]),
+        "uniform projections: axes x" + std::to_string(o[0]) + ", edges x" + std::to_string(o[1]) + ", diagonals x" +
+            std::to_string(o[2]),
         "Fig. 4 (squares)");
   add("dodecahedral-12", "dodecahedral jig: 12 face normals", "Fig. 4, ref. [25]");
   add("icosahedral-20", "icosahedral jig: 20 face normals", "Fig. 4, ref. [25]");
@@ -156,8 +161,7 @@ std::optional<Program> named_program(const std::string& name) {
 Program resolve_program(const std::string& argument) {
   if (auto p = named_program(argument)) return *p;
   std::error_code ec;  // exists() throws on a name too long for the system; with ec it says false
-  if (std::filesystem::exists(argument, ec) || argument.find('/') != std::string::npos ||
-      argument.ends_with(".csv"))
+  if (std::filesystem::exists(argument, ec) || argument.find('/') != std::string::npos || argument.ends_with(".csv"))
     return read_program_csv(argument);
   throw InputError(argument, 0, "neither a catalogue name nor a file (see `scalcal catalogue`)");
 }

@@ -8,8 +8,8 @@
 
 #include <boost/math/constants/constants.hpp>
 
-#include "numeric/program/random_sphere.hpp"
 #include "numeric/model/paper9.hpp"
+#include "numeric/program/random_sphere.hpp"
 
 namespace scalcal {
 
@@ -71,8 +71,7 @@ struct ProgramTpl {
     for (int m = 0; m < diagonals; ++m)
       for (int s1 : {1, -1})
         for (int s2 : {1, -1})
-          for (int s3 : {1, -1})
-            p.positions.push_back(Vec3T<Scalar>(Scalar(s1) * d, Scalar(s2) * d, Scalar(s3) * d));
+          for (int s3 : {1, -1}) p.positions.push_back(Vec3T<Scalar>(Scalar(s1) * d, Scalar(s2) * d, Scalar(s3) * d));
     return p;
   }
 
@@ -162,8 +161,7 @@ struct ProgramTpl {
     const Scalar norm = sqrt(Scalar(3));
     for (int s1 : {1, -1})
       for (int s2 : {1, -1})
-        for (int s3 : {1, -1})
-          p.positions.push_back(Vec3T<Scalar>(Scalar(s1), Scalar(s2), Scalar(s3)) / norm);
+        for (int s3 : {1, -1}) p.positions.push_back(Vec3T<Scalar>(Scalar(s1), Scalar(s2), Scalar(s3)) / norm);
     for (int c = 0; c < 3; ++c)
       for (int s1 : {1, -1})
         for (int s2 : {1, -1}) {

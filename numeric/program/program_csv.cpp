@@ -36,8 +36,9 @@ Program program_from_table(const CsvTable& t) {
     p.positions.push_back(eta);
   }
   if (p.size() < kMinimumPositions)
-    throw InputError(t.file, 0, "only " + std::to_string(p.size()) + " positions; a program needs at least " +
-                                    std::to_string(kMinimumPositions) + " (one per parameter)");
+    throw InputError(t.file, 0,
+                     "only " + std::to_string(p.size()) + " positions; a program needs at least " +
+                         std::to_string(kMinimumPositions) + " (one per parameter)");
   return p;
 }
 
@@ -111,8 +112,10 @@ ProgramRegion program_region(const std::string& text) {
       field.clear();
     };
     for (char c : l) {
-      if (c == ';') flush();
-      else field += c;
+      if (c == ';')
+        flush();
+      else
+        field += c;
     }
     flush();
     r.line = line;

@@ -19,8 +19,7 @@ using Pairing = std::vector<int>;  // pairing[i] = index in b of the partner of 
 
 // Kuhn's augmenting path: a greedy nearest match can pair a_i with the wrong one of two b positions
 // lying within 2 tol of each other and then leave a later a_k without a partner.
-bool augment(int i, const std::vector<std::vector<int>>& near, std::vector<int>& owner,
-             std::vector<char>& visited) {
+bool augment(int i, const std::vector<std::vector<int>>& near, std::vector<int>& owner, std::vector<char>& visited) {
   for (int j : near[i]) {
     if (visited[j]) continue;
     visited[j] = 1;
@@ -98,7 +97,8 @@ double dot_slack(double tol, double scale) { return tol * (2 * scale + tol) + 1e
 class SortedInvariants {
  public:
   SortedInvariants(const Positions& p, ProgramSymmetry symmetry) : symmetry_(symmetry), scale_(max_norm(p)) {
-    if (symmetry == ProgramSymmetry::Orthogonal) lists_ = {norms(p), gram_entries(p)};
+    if (symmetry == ProgramSymmetry::Orthogonal)
+      lists_ = {norms(p), gram_entries(p)};
     else
       for (int k = 0; k < 3; ++k) lists_.push_back(sorted_abs_coordinate(p, k));
     for (auto& l : lists_) std::sort(l.begin(), l.end());
@@ -109,8 +109,8 @@ class SortedInvariants {
     const double scale = std::max(scale_, other.scale_);
     for (std::size_t l = 0; l < lists_.size(); ++l) {
       const double slack = symmetry_ == ProgramSymmetry::SignedPermutations ? tol
-                           : l == 0                                       ? tol + 1e-14 * scale
-                                                                          : dot_slack(tol, scale);
+                           : l == 0                                         ? tol + 1e-14 * scale
+                                                                            : dot_slack(tol, scale);
       if (lists_[l].size() != other.lists_[l].size()) return false;
       for (std::size_t k = 0; k < lists_[l].size(); ++k)
         if (std::abs(lists_[l][k] - other.lists_[l][k]) > slack) return false;
@@ -211,8 +211,7 @@ Mat3 procrustes(const Positions& a, const Positions& b, const Pairing& pairing) 
 // A candidate g built from two positions carries their errors into the other positions, amplified
 // by the conditioning of the anchor; if g matches within that looser radius, the least-squares
 // refit on the pairing found is tried against the strict tol.
-std::optional<Mat3> verified(const Mat3& g, const Positions& a, const Positions& b, double tol,
-                             double loose_tol) {
+std::optional<Mat3> verified(const Mat3& g, const Positions& a, const Positions& b, double tol, double loose_tol) {
   if (match(a, b, g, tol)) return g;
   const auto pairing = match(a, b, g, loose_tol);
   if (!pairing) return std::nullopt;
@@ -233,8 +232,7 @@ std::optional<Mat3> collinear_map(const Positions& a, const Positions& b, double
 
 // Every correspondence of the anchor pair (a_p, a_q) with an ordered pair (b_r, b_s) of the same
 // lengths and dot product fixes g up to the reflection through their plane.
-std::optional<Mat3> anchored_map(const Positions& a, const Positions& b, const AnchorPair& anchor,
-                                 double tol) {
+std::optional<Mat3> anchored_map(const Positions& a, const Positions& b, const AnchorPair& anchor, double tol) {
   const Vec3& ap = a[anchor.p];
   const Vec3& aq = a[anchor.q];
   const double scale = std::max(max_norm(a), max_norm(b));
@@ -281,8 +279,7 @@ std::optional<Mat3> mapped_after_invariants(const Program& a, const Program& b, 
 
 }  // namespace
 
-std::optional<Mat3> equivalence_map(const Program& a, const Program& b, ProgramSymmetry symmetry,
-                                    double tol) {
+std::optional<Mat3> equivalence_map(const Program& a, const Program& b, ProgramSymmetry symmetry, double tol) {
   return mapped_after_invariants(a, b, symmetry, SortedInvariants(a.positions, symmetry),
                                  SortedInvariants(b.positions, symmetry), tol);
 }
@@ -291,8 +288,7 @@ bool equivalent(const Program& a, const Program& b, ProgramSymmetry symmetry, do
   return equivalence_map(a, b, symmetry, tol).has_value();
 }
 
-std::vector<int> equivalence_classes(const std::vector<Program>& programs, ProgramSymmetry symmetry,
-                                     double tol) {
+std::vector<int> equivalence_classes(const std::vector<Program>& programs, ProgramSymmetry symmetry, double tol) {
   std::vector<int> labels;
   std::vector<std::size_t> representatives;  // index of the first member of each class
   std::vector<SortedInvariants> invariants;

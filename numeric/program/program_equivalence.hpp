@@ -19,16 +19,14 @@ namespace scalcal {
 // Collinear programs (every pair of positions within angle ~tol of parallel, e.g. copies of +-z)
 // leave the twist about their line free: the map sends line to line (both orientations, with and
 // without a reflection) with an arbitrary twist, exact up to the positions' sideways residuals.
-std::optional<Mat3> equivalence_map(const Program& a, const Program& b, ProgramSymmetry symmetry,
-                                    double tol = 1e-6);
+std::optional<Mat3> equivalence_map(const Program& a, const Program& b, ProgramSymmetry symmetry, double tol = 1e-6);
 
 bool equivalent(const Program& a, const Program& b, ProgramSymmetry symmetry, double tol = 1e-6);
 
 // Class label per program, 0, 1, ... in order of first appearance. Greedy: each program is compared
 // with the first member (the representative) of every class so far, so with a tol near the spread
 // of a class the result can depend on the order.
-std::vector<int> equivalence_classes(const std::vector<Program>& programs, ProgramSymmetry symmetry,
-                                     double tol = 1e-6);
+std::vector<int> equivalence_classes(const std::vector<Program>& programs, ProgramSymmetry symmetry, double tol = 1e-6);
 
 // The number of classes of equivalence_classes().
 int count_distinct(const std::vector<Program>& programs, ProgramSymmetry symmetry, double tol = 1e-6);

@@ -6,8 +6,8 @@
 #include <cmath>
 
 #include "numeric/criteria/evaluation.hpp"
-#include "numeric/synthesis/exchange.hpp"
 #include "numeric/region/region_synthesis.hpp"
+#include "numeric/synthesis/exchange.hpp"
 #include "numeric/synthesis/ipopt_local.hpp"
 #include "numeric/synthesis/synthesis_models.hpp"
 
@@ -30,7 +30,9 @@ AugmentedProgram augment_with(const CriterionOps<Model>& criterion, const Progra
   const PolishedAddition best = polish_added(
       *criterion.kind, model, region, given.positions, ex, candidates, options,
       [&criterion](const Program& p) { return criterion_value(criterion, p); },
-      [&criterion](const Program& start, const PositionBounds& bounds) { return ipopt_local<Model>(criterion, start, {}, &bounds); });
+      [&criterion](const Program& start, const PositionBounds& bounds) {
+        return ipopt_local<Model>(criterion, start, {}, &bounds);
+      });
   out.program = given;
   out.added = best.added;
   out.program.positions.insert(out.program.positions.end(), out.added.begin(), out.added.end());

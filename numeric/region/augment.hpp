@@ -15,11 +15,11 @@
 namespace scalcal {
 
 struct AugmentedProgram {
-  Program program;           // the given positions, unchanged and first, then the added ones
+  Program program;  // the given positions, unchanged and first, then the added ones
   std::vector<Vec3> added;
-  double value_before = 0;   // the normalised criterion of the given program (infinite if rank < P)
-  double value = 0;          // of the augmented program
-  double value_greedy = 0;   // from the greedy exchange's start alone (the joint polish's start 0)
+  double value_before = 0;  // the normalised criterion of the given program (infinite if rank < P)
+  double value = 0;         // of the augmented program
+  double value_greedy = 0;  // from the greedy exchange's start alone (the joint polish's start 0)
   int starts = 0, best_start = 0;
 };
 

@@ -50,17 +50,19 @@ PolishedAddition polish_added(CriterionKind criterion, ModelKind model, const Re
                               const std::function<double(const Program&)>& value_of, const LocalOptimiser& local) {
   const int count = static_cast<int>(greedy.positions.size() - given.size());
   const int starts = std::max(1, options.starts);
-  const int workers = options.threads > 0 ? options.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  const std::vector<LocalResult> results = run_in_workers(starts, workers, static_cast<int>(greedy.positions.size()), [&](int k) {
-    std::vector<Vec3> start = greedy.positions;
-    if (k > 0) {
-      start = given;
-      const auto added = random_added(candidates, count, options.seed, k);
-      start.insert(start.end(), added.begin(), added.end());
-      start = exchange(criterion, candidates, start, static_cast<int>(given.size()), 100, model).positions;
-    }
-    return one_start(region, given, start, value_of, local);
-  });
+  const int workers =
+      options.threads > 0 ? options.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  const std::vector<LocalResult> results =
+      run_in_workers(starts, workers, static_cast<int>(greedy.positions.size()), [&](int k) {
+        std::vector<Vec3> start = greedy.positions;
+        if (k > 0) {
+          start = given;
+          const auto added = random_added(candidates, count, options.seed, k);
+          start.insert(start.end(), added.begin(), added.end());
+          start = exchange(criterion, candidates, start, static_cast<int>(given.size()), 100, model).positions;
+        }
+        return one_start(region, given, start, value_of, local);
+      });
   PolishedAddition out;
   out.starts = starts;
   out.value = INFINITY;
@@ -72,7 +74,8 @@ PolishedAddition polish_added(CriterionKind criterion, ModelKind model, const Re
     if (v < out.value) {
       out.value = v;
       out.best_start = k;
-      out.added.assign(r.program.positions.begin() + static_cast<std::ptrdiff_t>(given.size()), r.program.positions.end());
+      out.added.assign(r.program.positions.begin() + static_cast<std::ptrdiff_t>(given.size()),
+                       r.program.positions.end());
     }
   }
   return out;

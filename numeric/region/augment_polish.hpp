@@ -34,9 +34,9 @@ using LocalOptimiser = std::function<LocalResult(const Program& start, const Pos
 
 struct PolishedAddition {
   std::vector<Vec3> added;
-  double value = 0;     // normalised criterion of given + added
+  double value = 0;         // normalised criterion of given + added
   double value_greedy = 0;  // of start 0 alone (the greedy exchange, then the local optimisation)
-  int best_start = 0;   // the start that gave it (0: the greedy exchange's)
+  int best_start = 0;       // the start that gave it (0: the greedy exchange's)
   int starts = 0;
 };
 

@@ -86,7 +86,9 @@ Vec3 climb(const F& f, Vec3 x, const Region& region, double start_deg = 1.0, dou
 // meridian-reduced region's optimal measure lives (Region::meridian_reduced).
 template <class F>
 double climb_meridian(const F& f, const Zone& zone, double azimuth, double tilt, double end_deg = 1e-9) {
-  const auto g = [&](double t) { return f(zone_position(zone, std::clamp(t, zone.min_tilt_deg, zone.max_tilt_deg), azimuth)); };
+  const auto g = [&](double t) {
+    return f(zone_position(zone, std::clamp(t, zone.min_tilt_deg, zone.max_tilt_deg), azimuth));
+  };
   double radius = 1.0, best = g(tilt);
   for (int it = 0; it < 200 && radius > end_deg; ++it) {
     const double h = std::clamp(0.1 * radius, 1e-5, 1e-2);

@@ -106,8 +106,9 @@ std::optional<DualCertificate<Model::kParameters>> dual_certificate(
           alpha = exact->row_weights;
         } else {
           double top = 0, total = 0;
-        for (int r : rows) top = std::max(top, K(r, r));
-          for (std::size_t j = 0; j < rows.size(); ++j) total += alpha[j] = std::pow(K(rows[j], rows[j]) / top, smoothing - 1.0);
+          for (int r : rows) top = std::max(top, K(r, r));
+          for (std::size_t j = 0; j < rows.size(); ++j)
+            total += alpha[j] = std::pow(K(rows[j], rows[j]) / top, smoothing - 1.0);
           for (double& a : alpha) a /= total;
         }
       }

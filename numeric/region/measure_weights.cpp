@@ -159,7 +159,8 @@ class WeightsNlp : public Ipopt::TNLP {
       for (int a = 0; a < P; ++a)
         for (int b = 0; b <= a; ++b) {
           double* row = J + pair(a, b) * variables_;
-          for (int i = 0; i < n_; ++i) row[i] = scale_ * h_[static_cast<std::size_t>(i)](a) * h_[static_cast<std::size_t>(i)](b);
+          for (int i = 0; i < n_; ++i)
+            row[i] = scale_ * h_[static_cast<std::size_t>(i)](a) * h_[static_cast<std::size_t>(i)](b);
           if (a == b) row[n_] = -1.0;
           for (int m = 0; m <= b; ++m) {
             row[n_ + 1 + pair(a, m)] -= L(b, m);
@@ -227,7 +228,7 @@ class WeightsNlp : public Ipopt::TNLP {
     const Mat9 K = llt.solve(Mat9::Identity());
     Eigen::MatrixXd Hc(n_, P);
     for (int i = 0; i < n_; ++i) Hc.row(i) = h_[static_cast<std::size_t>(i)].transpose();
-    const Eigen::MatrixXd G = Hc * K * Hc.transpose();  // h_i^T K h_j
+    const Eigen::MatrixXd G = Hc * K * Hc.transpose();               // h_i^T K h_j
     Eigen::MatrixXd T(n_, static_cast<Eigen::Index>(rows_.size()));  // k_r . h_i
     Eigen::VectorXd twice_lambda(static_cast<Eigen::Index>(rows_.size()));
     for (std::size_t r = 0; r < rows_.size(); ++r) {
@@ -293,14 +294,17 @@ std::optional<ExactWeights> exact_weights(WeightForm form, const std::vector<Vec
     app->OptimizeTNLP(Ipopt::SmartPtr<Ipopt::TNLP>(GetRawPtr(nlp)));
     if (!nlp->succeeded() || nlp->solution().empty()) return out;
     out[0] = 1.0;
-    for (int i = 0; i < n; ++i) out[static_cast<std::size_t>(1 + i)] = std::max(0.0, nlp->solution()[static_cast<std::size_t>(i)]);
+    for (int i = 0; i < n; ++i)
+      out[static_cast<std::size_t>(1 + i)] = std::max(0.0, nlp->solution()[static_cast<std::size_t>(i)]);
     const std::vector<double>& lambda = nlp->multipliers();
     if (form == WeightForm::Eigenvalue) {
       for (int a = 0; a < P; ++a)
         for (int b = 0; b < P; ++b)  // Z = -Lambda, off-diagonal multipliers halved
-          out[static_cast<std::size_t>(1 + n + 9 * a + b)] = -(a == b ? 1.0 : 0.5) * lambda[static_cast<std::size_t>(1 + pair(a, b))];
+          out[static_cast<std::size_t>(1 + n + 9 * a + b)] =
+              -(a == b ? 1.0 : 0.5) * lambda[static_cast<std::size_t>(1 + pair(a, b))];
     } else if (form == WeightForm::Diagonal) {
-      for (std::size_t r = 0; r < rows.size(); ++r) out[static_cast<std::size_t>(1 + n + 81) + r] = std::max(0.0, lambda[1 + r]);
+      for (std::size_t r = 0; r < rows.size(); ++r)
+        out[static_cast<std::size_t>(1 + n + 81) + r] = std::max(0.0, lambda[1 + r]);
     }
     return out;
   });
@@ -326,7 +330,8 @@ std::optional<ExactWeights> exact_weights(WeightForm form, const std::vector<Vec
     double sum = 0;
     for (std::size_t r = 0; r < rows.size(); ++r) sum += packed[static_cast<std::size_t>(1 + n + 81) + r];
     if (!(sum > 0)) return std::nullopt;
-    for (std::size_t r = 0; r < rows.size(); ++r) w.row_weights.push_back(packed[static_cast<std::size_t>(1 + n + 81) + r] / sum);
+    for (std::size_t r = 0; r < rows.size(); ++r)
+      w.row_weights.push_back(packed[static_cast<std::size_t>(1 + n + 81) + r] / sum);
   }
   return w;
 }

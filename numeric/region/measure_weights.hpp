@@ -10,17 +10,17 @@
 #include <optional>
 #include <vector>
 
-#include "numeric/program/summary.hpp"
 #include "numeric/criteria/criterion.hpp"
 #include "numeric/model/paper9.hpp"
+#include "numeric/program/summary.hpp"
 
 namespace scalcal {
 
 struct ExactWeights {
-  std::vector<double> weights;  // one per candidate, summing to 1
-  Mat9 dual;                    // eigenvalue form: Z >= 0 with trace 1 (zero otherwise)
+  std::vector<double> weights;      // one per candidate, summing to 1
+  Mat9 dual;                        // eigenvalue form: Z >= 0 with trace 1 (zero otherwise)
   std::vector<double> row_weights;  // diagonal form: one per row of the criterion, summing to 1
-  Summary summary;  // converged: Ipopt solved the weights problem
+  Summary summary;                  // converged: Ipopt solved the weights problem
   bool converged() const { return summary.converged(); }
 };
 

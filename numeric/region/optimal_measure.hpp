@@ -19,10 +19,10 @@ template <int P>
 struct MeasureOnCandidates {
   std::vector<double> weights;  // one per candidate
   Eigen::Matrix<double, P, P> M, K;
-  double objective = 0;         // of the last smoothing
-  double equivalence_gap = 0;   // max_i d_i / sum_i w_i d_i - 1 on the candidates: 0 at the optimum
+  double objective = 0;        // of the last smoothing
+  double equivalence_gap = 0;  // max_i d_i / sum_i w_i d_i - 1 on the candidates: 0 at the optimum
   int iterations = 0;
-  double sharpness = 1;         // the power-mean exponent reached (nonsmooth forms)
+  double sharpness = 1;  // the power-mean exponent reached (nonsmooth forms)
 };
 
 // phi and Z of Crit at M (weights summing to 1); false when M is not positive definite.
@@ -64,8 +64,7 @@ bool measure_objective(const Eigen::Matrix<double, Model::kParameters, Model::kP
       phi = std::log(top) + std::log(s) / p;
       if (Z) {
         Z->setZero();
-        for (int r : rows)
-          *Z += (std::pow(K(r, r) / top, p - 1) / (top * s)) * K.col(r) * K.col(r).transpose();
+        for (int r : rows) *Z += (std::pow(K(r, r) / top, p - 1) / (top * s)) * K.col(r) * K.col(r).transpose();
       }
       return true;
     }
@@ -88,9 +87,7 @@ MeasureOnCandidates<Model::kParameters> optimal_measure(const std::vector<Vec3>&
     for (int i = 0; i < n; ++i) w(i) = std::max(start[static_cast<std::size_t>(i)], 1e-12 / n);
     w /= w.sum();
   }
-  const auto information = [&](const Eigen::ArrayXd& v) -> Mat {
-    return H * v.matrix().asDiagonal() * H.transpose();
-  };
+  const auto information = [&](const Eigen::ArrayXd& v) -> Mat { return H * v.matrix().asDiagonal() * H.transpose(); };
   constexpr bool smooth = SmoothCriterion<Crit>;
   MeasureOnCandidates<P> out;
   double p = smooth ? 1.0 : 8.0;

@@ -21,10 +21,9 @@ ProgramAdvice advise_program(const Program& measured, const Region& region, Crit
   for (auto c : kCriteria) {
     const double v = out.evaluation.value(c);
     // A registered criterion may have no known limit (the test build's I): no efficiency, NaN (null in JSON).
-    out.efficiency[static_cast<std::size_t>(c.index())] =
-        !has_limit(c) ? std::numeric_limits<double>::quiet_NaN()
-        : std::isfinite(v) ? efficiency(c, limit_value(c, region), v)
-                           : 0.0;
+    out.efficiency[static_cast<std::size_t>(c.index())] = !has_limit(c)      ? std::numeric_limits<double>::quiet_NaN()
+                                                          : std::isfinite(v) ? efficiency(c, limit_value(c, region), v)
+                                                                             : 0.0;
   }
   if (suggest <= 0) return out;
   const AugmentedProgram a = augment_program(measured, suggest, criterion, region);

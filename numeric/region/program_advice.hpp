@@ -24,8 +24,9 @@ struct SuggestedPosition {
 std::array<double, 3> rms_errors(const Evaluation& ev);
 
 struct ProgramAdvice {
-  Evaluation evaluation;                   // of the measured program
-  std::array<double, kCriteria.size()> efficiency{};  // per registered criterion: limit / value, D as 9th root; NaN without a known limit
+  Evaluation evaluation;  // of the measured program
+  std::array<double, kCriteria.size()>
+      efficiency{};  // per registered criterion: limit / value, D as 9th root; NaN without a known limit
   CriterionKind criterion = CriterionKind::D;  // what the suggestions improve
   std::vector<SuggestedPosition> suggested;
 };

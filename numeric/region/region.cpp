@@ -96,7 +96,8 @@ double azimuth_deg(const Zone& zone, const Vec3& x) {
 double Region::zone_area() const {
   const double deg = std::numbers::pi / 180.0;
   double out = 0;
-  for (const auto& z : zones) out += 2 * std::numbers::pi * (std::cos(z.min_tilt_deg * deg) - std::cos(z.max_tilt_deg * deg));
+  for (const auto& z : zones)
+    out += 2 * std::numbers::pi * (std::cos(z.min_tilt_deg * deg) - std::cos(z.max_tilt_deg * deg));
   return out;
 }
 
@@ -142,10 +143,13 @@ bool Region::invariant_under(const Mat3& g) const {
   constexpr double kSame = 1e-9;
   for (const Zone& z : zones) {
     const Vec3 image = g * z.axis;
-    const bool found = std::any_of(zones.begin(), zones.end(), [&](const Zone& o) {
-      return std::abs(o.min_tilt_deg - z.min_tilt_deg) < kSame && std::abs(o.max_tilt_deg - z.max_tilt_deg) < kSame &&
-             (o.axis - image).norm() < kSame;
-    }) || (z.is_sphere());
+    const bool found = std::any_of(zones.begin(), zones.end(),
+                                   [&](const Zone& o) {
+                                     return std::abs(o.min_tilt_deg - z.min_tilt_deg) < kSame &&
+                                            std::abs(o.max_tilt_deg - z.max_tilt_deg) < kSame &&
+                                            (o.axis - image).norm() < kSame;
+                                   }) ||
+                       (z.is_sphere());
     if (!found) return false;
   }
   for (const Vec3& c : candidates) {
@@ -320,7 +324,8 @@ double check_region_identifiable(const Region& region) {
                          " distinct positions; the model needs at least 9");
   const Evaluation ev = evaluate(grid);
   if (!ev.full_rank())
-    throw InputError("--region", 0, "no program on '" + display_name(region.text()) + "' is rank 9: " + rank_deficiency(ev));
+    throw InputError("--region", 0,
+                     "no program on '" + display_name(region.text()) + "' is rank 9: " + rank_deficiency(ev));
   return ev.condition;
 }
 

@@ -16,8 +16,8 @@ inline constexpr double kRegionToleranceDeg = 1e-4;
 struct Region {
   std::vector<std::string> specs;  // as given, one per --region
   std::vector<Zone> zones;
-  std::vector<Vec3> candidates;    // unit vectors
-  double inset_deg = 0;            // the zones' boundaries moved inwards by this (inset_region)
+  std::vector<Vec3> candidates;  // unit vectors
+  double inset_deg = 0;          // the zones' boundaries moved inwards by this (inset_region)
 
   bool is_sphere() const;
   bool contains(const Vec3& x, double tolerance_deg = kRegionToleranceDeg) const;

@@ -6,10 +6,10 @@
 #include <numeric>
 
 #include "numeric/criteria/evaluation.hpp"
-#include "numeric/region/dual_certificate.hpp"
-#include "numeric/region/optimal_measure.hpp"
 #include "numeric/region/climb.hpp"
+#include "numeric/region/dual_certificate.hpp"
 #include "numeric/region/measure_weights.hpp"
+#include "numeric/region/optimal_measure.hpp"
 #include "numeric/region/zonal_d.hpp"
 #include "numeric/region/zone_sup.hpp"
 
@@ -36,7 +36,9 @@ bool is_new(const Vec3& x, const std::vector<Vec3>& candidates) {
 }
 
 // D on one cap or band is one-dimensional (numeric/region/zonal_d.hpp).
-bool zonal(const Region& region) { return region.zones.size() == 1 && region.candidates.empty() && !region.is_sphere(); }
+bool zonal(const Region& region) {
+  return region.zones.size() == 1 && region.candidates.empty() && !region.is_sphere();
+}
 
 RegionLimit zonal_limit(const Zone& zone) {
   const ZonalMeasure m = zonal_d_limit(zone);
@@ -100,8 +102,8 @@ Mat9 information(const std::vector<Vec3>& candidates, const std::vector<double>&
   return M;
 }
 
-// Ipopt's weights (and, for a nonsmooth form, dual) on at most kExactCandidates replace the multiplicative algorithm's when
-// they are no worse (Ipopt stopped short otherwise).
+// Ipopt's weights (and, for a nonsmooth form, dual) on at most kExactCandidates replace the multiplicative algorithm's
+// when they are no worse (Ipopt stopped short otherwise).
 template <class Crit>
 void exact_weights_of(const std::vector<Vec3>& candidates, std::vector<double>& weights, Mat9& K,
                       std::optional<ExactDual<P>>& dual) {
@@ -137,14 +139,19 @@ std::vector<Vec3> peaks(const Eigen::Matrix<double, Eigen::Dynamic, P>& C, const
   for (const Vec3& x : starts) {
     const int z = region.deepest_zone(x);
     Vec3 peak = x;
-    const std::vector<double> azimuths = z >= 0 ? region.meridians(region.zones[static_cast<std::size_t>(z)]) : std::vector<double>{};
+    const std::vector<double> azimuths =
+        z >= 0 ? region.meridians(region.zones[static_cast<std::size_t>(z)]) : std::vector<double>{};
     if (!azimuths.empty()) {
       // Stay on the nearest half-meridian the measure may live on (a pole stays put).
       const Zone& zone = region.zones[static_cast<std::size_t>(z)];
       const double tilt = zone.tilt_deg(x), a = azimuth_deg(zone, x);
       if (tilt > 1e-9 && tilt < 180 - 1e-9) {
-        const auto gap = [a](double m) { const double d = std::fmod(std::abs(a - m), 360.0); return std::min(d, 360.0 - d); };
-        const double azimuth = *std::min_element(azimuths.begin(), azimuths.end(), [&](double p, double q) { return gap(p) < gap(q); });
+        const auto gap = [a](double m) {
+          const double d = std::fmod(std::abs(a - m), 360.0);
+          return std::min(d, 360.0 - d);
+        };
+        const double azimuth =
+            *std::min_element(azimuths.begin(), azimuths.end(), [&](double p, double q) { return gap(p) < gap(q); });
         peak = zone_position(zone, climb_meridian(f, zone, azimuth, tilt), azimuth);
       }
     } else if (z >= 0) {
@@ -201,7 +208,8 @@ RegionLimit limit_of(const Region& region, const RegionLimitOptions& options) {
       K = multiplicative_weights<Crit>(candidates, weights, sharpness, out.equivalence_gap, round == 0 ? 20000 : 2000);
       exact_weights_of<Crit>(candidates, weights, K, dual);
       const auto certificate = dual_certificate<Crit, Model>(K, sharpness, dual ? &*dual : nullptr);
-      if (!certificate || round + 1 == kExactRounds || add_peaks(certificate->C, region, grid, candidates, weights) == 0)
+      if (!certificate || round + 1 == kExactRounds ||
+          add_peaks(certificate->C, region, grid, candidates, weights) == 0)
         break;
     }
   } else {
@@ -216,7 +224,8 @@ RegionLimit limit_of(const Region& region, const RegionLimitOptions& options) {
     if (const auto certificate = dual_certificate<Crit, Model>(K, sharpness, dual ? &*dual : nullptr)) {
       // The proof: weak duality with the sup of the certificate's function over the whole region.
       double upper = 0;
-      if (!region.candidates.empty()) upper = std::max(upper, sup_norm2_over_points(certificate->C, region.candidates).upper);
+      if (!region.candidates.empty())
+        upper = std::max(upper, sup_norm2_over_points(certificate->C, region.candidates).upper);
       // The box budget is shared by the zones, so that a union costs no more than one zone.
       const long budget = kBoxBudget / static_cast<long>(std::max<std::size_t>(1, region.zones.size()));
       for (const Zone& z : region.zones) {
@@ -253,9 +262,8 @@ double limit_value(CriterionKind c, const Region& region) {
 
 double efficiency(CriterionKind c, double limit, double value, int parameters) {
   const double e = limit / value;
-  return visit_criterion(c, [e, parameters](auto C) {
-    return kDeterminantOnly<decltype(C)> ? std::pow(e, 1.0 / parameters) : e;
-  });
+  return visit_criterion(
+      c, [e, parameters](auto C) { return kDeterminantOnly<decltype(C)> ? std::pow(e, 1.0 / parameters) : e; });
 }
 
 }  // namespace scalcal

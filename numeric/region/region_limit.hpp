@@ -25,7 +25,7 @@ struct RegionLimit {
 struct RegionLimitOptions {
   double grid_step_deg = 4.0;  // the first candidates: rings this far apart
   int max_refinements = 6;
-  bool certify = true;         // false: the value only (no interval search; lower_bound only the sphere's)
+  bool certify = true;  // false: the value only (no interval search; lower_bound only the sphere's)
 };
 
 RegionLimit region_limit(CriterionKind c, const Region& region, const RegionLimitOptions& options = {});

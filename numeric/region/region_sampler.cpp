@@ -64,8 +64,9 @@ PositionSampler region_sampler(const Region& region) {
     };
     for (int i = 0; i < n; ++i) {
       const bool candidate = zones.empty() || (!region.candidates.empty() && u() < 0.5);
-      const Vec3 p = candidate ? region.candidates[static_cast<std::size_t>(u() * static_cast<double>(region.candidates.size()))]
-                               : in_zone();
+      const Vec3 p =
+          candidate ? region.candidates[static_cast<std::size_t>(u() * static_cast<double>(region.candidates.size()))]
+                    : in_zone();
       x[i] = p(0);
       y[i] = p(1);
       z[i] = p(2);

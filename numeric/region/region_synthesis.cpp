@@ -30,8 +30,10 @@ std::vector<Vec3> random_candidates(const std::vector<Vec3>& candidates, int n, 
 template <Criterion C>
 LocalResult region_start(const Region& region, const std::vector<Vec3>& candidates, int n, std::uint64_t seed, int k) {
   const CriterionKind kind = CriterionKind::of<C>();
-  const ExchangeResult ex = k == 0 ? greedy_exchange(kind, candidates, {}, n)
-                                   : exchange(kind, candidates, random_candidates(candidates, n, start_seed(seed, static_cast<std::uint64_t>(k))));
+  const ExchangeResult ex =
+      k == 0 ? greedy_exchange(kind, candidates, {}, n)
+             : exchange(kind, candidates,
+                        random_candidates(candidates, n, start_seed(seed, static_cast<std::uint64_t>(k))));
   LocalResult out;
   out.program.positions = ex.positions;
   out.value = criterion_value<C>(out.program);
@@ -43,7 +45,8 @@ LocalResult region_start(const Region& region, const std::vector<Vec3>& candidat
   for (std::size_t i = 0; i < bounds.size(); ++i) {
     Vec3& x = polished.program.positions[i];
     if (bounds[i].kind == PositionBound::Kind::Fixed) x = ex.positions[i];
-    if (bounds[i].kind == PositionBound::Kind::Zone) x = clamp_to_zone(region.zones[static_cast<std::size_t>(region.deepest_zone(ex.positions[i]))], x);
+    if (bounds[i].kind == PositionBound::Kind::Zone)
+      x = clamp_to_zone(region.zones[static_cast<std::size_t>(region.deepest_zone(ex.positions[i]))], x);
   }
   polished.value = criterion_value<C>(polished.program);
   if (polished.value < out.value) {
@@ -109,7 +112,8 @@ Vec3 clamp_to_zone(const Zone& zone, const Vec3& x) {
 SynthesisResult synthesize_on_region(const SynthesisOptions& options, const Region& region) {
   if (options.positions < Paper9Model::kParameters)
     throw std::invalid_argument("synthesize_on_region: at least 9 positions are needed");
-  return visit_criterion(options.criterion, [&](auto C) { return synthesize_region_with<decltype(C)>(options, region); });
+  return visit_criterion(options.criterion,
+                         [&](auto C) { return synthesize_region_with<decltype(C)>(options, region); });
 }
 
 }  // namespace scalcal

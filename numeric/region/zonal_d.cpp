@@ -32,7 +32,8 @@ struct Scale {
 
 Scale scale_of(const Zone& zone) {
   const double deg = std::numbers::pi / 180.0;
-  const double a = std::max(-1.0, std::cos(zone.max_tilt_deg * deg)), b = std::min(1.0, std::cos(zone.min_tilt_deg * deg));
+  const double a = std::max(-1.0, std::cos(zone.max_tilt_deg * deg)),
+               b = std::min(1.0, std::cos(zone.min_tilt_deg * deg));
   return {a, b, 0.5 * (a + b), 0.5 * (b - a)};
 }
 
@@ -271,7 +272,8 @@ ZonalMeasure zonal_d_limit(const Zone& zone) {
   const QuarticI c = sensitivity(sc, bl);
   // The zone's s-range, widened outward: a slightly larger zone only makes the bound safer.
   const double eps = 8 * std::numeric_limits<double>::epsilon();
-  const double lo = ((I(sc.a) - I(sc.mid)) / I(sc.half)).lower() - eps, hi = ((I(sc.b) - I(sc.mid)) / I(sc.half)).upper() + eps;
+  const double lo = ((I(sc.a) - I(sc.mid)) / I(sc.half)).lower() - eps,
+               hi = ((I(sc.b) - I(sc.mid)) / I(sc.half)).upper() + eps;
   const double m = sup_quartic(c, lo, hi);
   I bound = d_value(sc, bl);
   const I ratio = I(static_cast<double>(P)) / I(m);

@@ -25,8 +25,12 @@ struct Jet {
 };
 
 Jet constant(const I& c) { return {c, I(0.0), I(0.0), I(0.0), I(0.0), I(0.0)}; }
-Jet operator+(const Jet& a, const Jet& b) { return {a.v + b.v, a.du + b.du, a.dt + b.dt, a.uu + b.uu, a.ut + b.ut, a.tt + b.tt}; }
-Jet operator-(const Jet& a, const Jet& b) { return {a.v - b.v, a.du - b.du, a.dt - b.dt, a.uu - b.uu, a.ut - b.ut, a.tt - b.tt}; }
+Jet operator+(const Jet& a, const Jet& b) {
+  return {a.v + b.v, a.du + b.du, a.dt + b.dt, a.uu + b.uu, a.ut + b.ut, a.tt + b.tt};
+}
+Jet operator-(const Jet& a, const Jet& b) {
+  return {a.v - b.v, a.du - b.du, a.dt - b.dt, a.uu - b.uu, a.ut - b.ut, a.tt - b.tt};
+}
 Jet operator*(const I& c, const Jet& a) { return {c * a.v, c * a.du, c * a.dt, c * a.uu, c * a.ut, c * a.tt}; }
 Jet operator*(const Jet& a, const Jet& b) {
   return {a.v * b.v,
@@ -37,8 +41,12 @@ Jet operator*(const Jet& a, const Jet& b) {
           a.tt * b.v + I(2.0) * a.dt * b.dt + a.v * b.tt};
 }
 Jet square(const Jet& a) {
-  return {bn::square(a.v), I(2.0) * a.v * a.du, I(2.0) * a.v * a.dt, I(2.0) * (bn::square(a.du) + a.v * a.uu),
-          I(2.0) * (a.du * a.dt + a.v * a.ut), I(2.0) * (bn::square(a.dt) + a.v * a.tt)};
+  return {bn::square(a.v),
+          I(2.0) * a.v * a.du,
+          I(2.0) * a.v * a.dt,
+          I(2.0) * (bn::square(a.du) + a.v * a.uu),
+          I(2.0) * (a.du * a.dt + a.v * a.ut),
+          I(2.0) * (bn::square(a.dt) + a.v * a.tt)};
 }
 Jet reciprocal(const Jet& a) {
   const I r = I(1.0) / a.v, r2 = bn::square(r), r3 = r2 * r;
@@ -65,7 +73,8 @@ std::array<Jet, 3> position(const Chart& ch, const I& U, const I& T, int half) {
   const Jet one = constant(I(1.0)), two_u = I(2.0) * u, two_t = I(2.0) * t;
   const Jet ru = reciprocal(one + square(u)), rt = reciprocal(one + square(t));
   const Jet cos_tilt = (one - square(u)) * ru, sin_tilt = two_u * ru;
-  const Jet c = I(static_cast<double>(half)) * ((one - square(t)) * rt), s = I(static_cast<double>(half)) * (two_t * rt);
+  const Jet c = I(static_cast<double>(half)) * ((one - square(t)) * rt),
+            s = I(static_cast<double>(half)) * (two_t * rt);
   const Jet sc = sin_tilt * c, ss = sin_tilt * s;
   std::array<Jet, 3> x;
   for (int i = 0; i < 3; ++i)
@@ -74,7 +83,8 @@ std::array<Jet, 3> position(const Chart& ch, const I& U, const I& T, int half) {
 }
 
 Jet norm2(const Rows& C, const std::array<Jet, 3>& x) {
-  const std::array<Jet, 9> h{x[0], x[1], x[2], square(x[0]), square(x[1]), square(x[2]), x[0] * x[1], x[1] * x[2], x[2] * x[0]};
+  const std::array<Jet, 9> h{x[0],         x[1],        x[2],        square(x[0]), square(x[1]),
+                             square(x[2]), x[0] * x[1], x[1] * x[2], x[2] * x[0]};
   Jet out = constant(I(0.0));
   for (int j = 0; j < C.rows(); ++j) {
     Jet y = constant(I(0.0));
@@ -92,7 +102,8 @@ double radius(const I& x) { return 0.5 * (x.upper() - x.lower()); }
 // max over s in [-R, R] of alpha + beta s + gamma s^2 (gamma exact), as a proven upper bound.
 double max_1d(const I& alpha, const I& beta, double gamma, double R) {
   const I r(R);
-  double out = std::max((alpha + beta * r + I(gamma) * bn::square(r)).upper(), (alpha - beta * r + I(gamma) * bn::square(r)).upper());
+  double out = std::max((alpha + beta * r + I(gamma) * bn::square(r)).upper(),
+                        (alpha - beta * r + I(gamma) * bn::square(r)).upper());
   if (gamma < 0) {
     const double vertex = std::abs(mid(beta)) / (-2 * gamma);
     if (vertex < R * (1 + 1e-9) + 1e-300) out = std::max(out, (alpha - bn::square(beta) / (I(4.0) * I(gamma))).upper());
@@ -115,7 +126,7 @@ double max_quadratic(double gu, double gt, double a, double b, double d, double 
   }
   const I det = I(a) * I(d) - bn::square(I(b));
   if (a < 0 && det.upper() > 0) {  // H may be negative definite: an interior maximum is possible
-    if (!(det.lower() > 0)) {  // undecided: q <= |g| . r + (a+ ru^2 + 2 |b| ru rt + d+ rt^2) / 2
+    if (!(det.lower() > 0)) {      // undecided: q <= |g| . r + (a+ ru^2 + 2 |b| ru rt + d+ rt^2) / 2
       const I crude = I(std::abs(gu)) * I(ru) + I(std::abs(gt)) * I(rt) +
                       I(0.5) * (I(std::max(a, 0.0)) * bn::square(I(ru)) + I(2.0 * std::abs(b)) * I(ru) * I(rt) +
                                 I(std::max(d, 0.0)) * bn::square(I(rt)));
@@ -146,8 +157,10 @@ double box_bound(const Rows& C, const Chart& ch, const Box& b) {
   const double cu = 0.5 * (b.u0 + b.u1), ct = 0.5 * (b.t0 + b.t1);
   const Jet at = norm2(C, position(ch, I(cu), I(ct), b.half));
   // Half-widths rounded up so that [c - r, c + r] covers the box.
-  const double ru = (I(b.u1) - I(cu)).upper() > (I(cu) - I(b.u0)).upper() ? (I(b.u1) - I(cu)).upper() : (I(cu) - I(b.u0)).upper();
-  const double rt = (I(b.t1) - I(ct)).upper() > (I(ct) - I(b.t0)).upper() ? (I(b.t1) - I(ct)).upper() : (I(ct) - I(b.t0)).upper();
+  const double ru =
+      (I(b.u1) - I(cu)).upper() > (I(cu) - I(b.u0)).upper() ? (I(b.u1) - I(cu)).upper() : (I(cu) - I(b.u0)).upper();
+  const double rt =
+      (I(b.t1) - I(ct)).upper() > (I(ct) - I(b.t0)).upper() ? (I(b.t1) - I(ct)).upper() : (I(ct) - I(b.t0)).upper();
   const double gu = mid(at.du), gt = mid(at.dt);
   const double a = mid(over.uu), hb = mid(over.ut), d = mid(over.tt);
   // What the midpoints leave out: the gradient's enclosure at c and the Hessian's over the box.
@@ -183,7 +196,8 @@ std::vector<Chart> charts_of(const Zone& zone) {
   const Vec3 helper = std::abs(a.x()) < 0.9 ? Vec3(1, 0, 0) : Vec3(0, 1, 0);
   const Vec3 e1 = (helper - helper.dot(a) * a).normalized(), e2 = a.cross(e1);
   if (zone.min_tilt_deg < 90)
-    out.push_back({a, e1, e2, half_tangent(zone.min_tilt_deg, true), half_tangent(std::min(zone.max_tilt_deg, 90.0), false)});
+    out.push_back(
+        {a, e1, e2, half_tangent(zone.min_tilt_deg, true), half_tangent(std::min(zone.max_tilt_deg, 90.0), false)});
   if (zone.max_tilt_deg > 90)
     out.push_back({Vec3(-a), e2, e1, half_tangent(180 - zone.max_tilt_deg, true),
                    half_tangent(180 - std::max(zone.min_tilt_deg, 90.0), false)});
@@ -221,8 +235,9 @@ SupBound sup_norm2_over_zone(const Rows& C, const Zone& zone, double rel_tol, lo
     for (int half : {1, -1})
       for (int i = 0; i < kStart; ++i)
         for (int j = 0; j < kStart; ++j)
-          visit(k, Box{ch.u0 + (ch.u1 - ch.u0) * i / kStart, i + 1 == kStart ? ch.u1 : ch.u0 + (ch.u1 - ch.u0) * (i + 1) / kStart,
-                       -1.0 + 2.0 * j / kStart, j + 1 == kStart ? 1.0 : -1.0 + 2.0 * (j + 1) / kStart, half, 0.0});
+          visit(k, Box{ch.u0 + (ch.u1 - ch.u0) * i / kStart,
+                       i + 1 == kStart ? ch.u1 : ch.u0 + (ch.u1 - ch.u0) * (i + 1) / kStart, -1.0 + 2.0 * j / kStart,
+                       j + 1 == kStart ? 1.0 : -1.0 + 2.0 * (j + 1) / kStart, half, 0.0});
   }
   while (true) {
     const Entry e = queue.top();

@@ -15,16 +15,16 @@
 namespace scalcal {
 
 struct SupBound {
-  double upper = 0;   // proven: |C h(x)|^2 <= upper on the whole zone (or set)
-  double lower = 0;   // attained at argmax, so lower <= the true supremum
+  double upper = 0;  // proven: |C h(x)|^2 <= upper on the whole zone (or set)
+  double lower = 0;  // attained at argmax, so lower <= the true supremum
   Vec3 argmax{0, 0, 1};
   long boxes = 0;
 };
 
 // rel_tol: stop once upper - lower <= rel_tol * upper; box_budget bounds the work (the bound stays
 // proven, only looser).
-SupBound sup_norm2_over_zone(const Eigen::Matrix<double, Eigen::Dynamic, 9>& C, const Zone& zone,
-                             double rel_tol = 1e-9, long box_budget = 400000);
+SupBound sup_norm2_over_zone(const Eigen::Matrix<double, Eigen::Dynamic, 9>& C, const Zone& zone, double rel_tol = 1e-9,
+                             long box_budget = 400000);
 SupBound sup_norm2_over_points(const Eigen::Matrix<double, Eigen::Dynamic, 9>& C, const std::vector<Vec3>& points);
 
 }  // namespace scalcal

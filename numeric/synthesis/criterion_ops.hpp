@@ -47,8 +47,10 @@ struct CriterionOps {
 namespace detail {
 template <class C>
 constexpr std::optional<CriterionKind> registered_kind() {
-  if constexpr (detail::index_in<C>(RegisteredCriteria{}) >= 0) return CriterionKind::of<C>();
-  else return std::nullopt;
+  if constexpr (detail::index_in<C>(RegisteredCriteria{}) >= 0)
+    return CriterionKind::of<C>();
+  else
+    return std::nullopt;
 }
 }  // namespace detail
 
@@ -81,7 +83,8 @@ template <class Model>
 double criterion_value(const CriterionOps<Model>& ops, const Program& program) {
   const EvaluationTpl<double, Model> ev = evaluate<Model>(program);
   if (!ev.full_rank()) return std::numeric_limits<double>::infinity();
-  return ops.value(InverseInformation<double, Model::kParameters>{ev.K, ev.K_eigenvalues}, static_cast<double>(program.size()));
+  return ops.value(InverseInformation<double, Model::kParameters>{ev.K, ev.K_eigenvalues},
+                   static_cast<double>(program.size()));
 }
 
 }  // namespace scalcal

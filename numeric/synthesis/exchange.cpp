@@ -9,8 +9,10 @@ ExchangeResult exchange(CriterionKind criterion, const std::vector<Vec3>& candid
                         int fixed, int max_passes, ModelKind model) {
   return visit_model(model, [&](auto M) -> ExchangeResult {
     using Model = decltype(M);
-    if constexpr (kSynthesisBuilt<Model>) return exchange_for<Model>(criterion, candidates, std::move(positions), fixed, max_passes);
-    else throw_no_synthesis(Model::name);
+    if constexpr (kSynthesisBuilt<Model>)
+      return exchange_for<Model>(criterion, candidates, std::move(positions), fixed, max_passes);
+    else
+      throw_no_synthesis(Model::name);
   });
 }
 
@@ -18,8 +20,10 @@ ExchangeResult greedy_exchange(CriterionKind criterion, const std::vector<Vec3>&
                                const std::vector<Vec3>& given, int count, ModelKind model) {
   return visit_model(model, [&](auto M) -> ExchangeResult {
     using Model = decltype(M);
-    if constexpr (kSynthesisBuilt<Model>) return greedy_exchange_for<Model>(criterion, candidates, given, count);
-    else throw_no_synthesis(Model::name);
+    if constexpr (kSynthesisBuilt<Model>)
+      return greedy_exchange_for<Model>(criterion, candidates, given, count);
+    else
+      throw_no_synthesis(Model::name);
   });
 }
 

@@ -38,9 +38,12 @@ struct Exchanger {
 
     int parameters() const { return P; }
     double det() const { return det_K / ratio; }
-    double trace() const { return trace_K - (S_inv(0, 0) * a.squaredNorm() + 2 * S_inv(0, 1) * a.dot(b) + S_inv(1, 1) * b.squaredNorm()); }
+    double trace() const {
+      return trace_K - (S_inv(0, 0) * a.squaredNorm() + 2 * S_inv(0, 1) * a.dot(b) + S_inv(1, 1) * b.squaredNorm());
+    }
     double entry(int r, int c) const {
-      return K(r, c) - (S_inv(0, 0) * a(r) * a(c) + S_inv(0, 1) * (a(r) * b(c) + b(r) * a(c)) + S_inv(1, 1) * b(r) * b(c));
+      return K(r, c) -
+             (S_inv(0, 0) * a(r) * a(c) + S_inv(0, 1) * (a(r) * b(c) + b(r) * a(c)) + S_inv(1, 1) * b(r) * b(c));
     }
     double diagonal(int r) const { return entry(r, r); }
     double max_eigenvalue() const {
@@ -70,7 +73,8 @@ struct Exchanger {
   static Mat inverse_or_ridge(const Mat& M, bool& ridged, double& det_K) {
     Eigen::LLT<Mat> llt(M);
     const double scale = std::max(M.trace() / P, 1e-300);
-    ridged = llt.info() != Eigen::Success || llt.matrixL().toDenseMatrix().diagonal().minCoeff() < 1e-7 * std::sqrt(scale);
+    ridged =
+        llt.info() != Eigen::Success || llt.matrixL().toDenseMatrix().diagonal().minCoeff() < 1e-7 * std::sqrt(scale);
     if (ridged) llt.compute(M + 1e-9 * scale * Mat::Identity());
     const Vec d = llt.matrixL().toDenseMatrix().diagonal();
     det_K = 1.0;
@@ -86,8 +90,8 @@ struct Exchanger {
 
   // The best candidate to put in place of `removed` (a zero row: nothing removed), and its value.
   template <class Crit>
-  static std::pair<int, double> best_swap(const Mat& K, double det_K, const Rows& Hc, const Rows& HcK, const Vec& removed,
-                                   double n) {
+  static std::pair<int, double> best_swap(const Mat& K, double det_K, const Rows& Hc, const Rows& HcK,
+                                          const Vec& removed, double n) {
     const Vec b = K * removed;
     const double dh = removed.dot(b), trace_K = K.trace();
     std::pair<int, double> best{-1, kInfinity};
@@ -107,12 +111,13 @@ struct Exchanger {
 
   template <class Crit>
   static ExchangeResult exchange_with(const std::vector<Vec3>& candidates, std::vector<Vec3> positions, int fixed,
-                               int max_passes) {
+                                      int max_passes) {
     ExchangeResult out;
     const int N = static_cast<int>(positions.size());
     const double n = N;
     Rows Hc(static_cast<Eigen::Index>(candidates.size()), P);
-    for (std::size_t j = 0; j < candidates.size(); ++j) Hc.row(static_cast<Eigen::Index>(j)) = Model::row(candidates[j]).transpose();
+    for (std::size_t j = 0; j < candidates.size(); ++j)
+      Hc.row(static_cast<Eigen::Index>(j)) = Model::row(candidates[j]).transpose();
     Mat M = information(positions);
     for (; out.passes < max_passes; ++out.passes) {
       bool changed = false;
@@ -125,7 +130,8 @@ struct Exchanger {
         const Vec removed = Model::row(positions[static_cast<std::size_t>(i)]);
         const auto [j, v] = best_swap<Crit>(K, det_K, Hc, HcK, removed, n);
         // Ranked on a ridge, any rank gain shows as a drop by orders of magnitude.
-        if (j >= 0 && v < current * (1 - kGain) && candidates[static_cast<std::size_t>(j)] != positions[static_cast<std::size_t>(i)]) {
+        if (j >= 0 && v < current * (1 - kGain) &&
+            candidates[static_cast<std::size_t>(j)] != positions[static_cast<std::size_t>(i)]) {
           positions[static_cast<std::size_t>(i)] = candidates[static_cast<std::size_t>(j)];
           M = information(positions);  // afresh: no drift from a chain of rank-one updates
           changed = true;
@@ -146,7 +152,8 @@ struct Exchanger {
   static ExchangeResult greedy_with(const std::vector<Vec3>& candidates, const std::vector<Vec3>& given, int count) {
     std::vector<Vec3> positions = given;
     Rows Hc(static_cast<Eigen::Index>(candidates.size()), P);
-    for (std::size_t j = 0; j < candidates.size(); ++j) Hc.row(static_cast<Eigen::Index>(j)) = Model::row(candidates[j]).transpose();
+    for (std::size_t j = 0; j < candidates.size(); ++j)
+      Hc.row(static_cast<Eigen::Index>(j)) = Model::row(candidates[j]).transpose();
     for (int k = 0; k < count; ++k) {
       // Adding g is a swap that removes nothing (a zero row); the value is ranked at the final size
       // so that the ridge's scale does not change along the way.
@@ -167,8 +174,8 @@ template <class Model>
 ExchangeResult exchange_for(CriterionKind criterion, const std::vector<Vec3>& candidates, std::vector<Vec3> positions,
                             int fixed, int max_passes) {
   return visit_criterion(criterion, [&](auto C) {
-    return exchange_detail::Exchanger<Model>::template exchange_with<decltype(C)>(candidates, std::move(positions), fixed,
-                                                                                  max_passes);
+    return exchange_detail::Exchanger<Model>::template exchange_with<decltype(C)>(candidates, std::move(positions),
+                                                                                  fixed, max_passes);
   });
 }
 

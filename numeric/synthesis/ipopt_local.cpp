@@ -20,7 +20,6 @@
 #include <IpSolveStatistics.hpp>
 #include <IpTNLP.hpp>
 
-
 namespace scalcal {
 
 namespace {
@@ -138,8 +137,8 @@ class ProgramNlp : public Ipopt::TNLP {
 
   // Lower triangle (dense, or the problem's pattern gathered from a dense buffer): the criterion's
   // Lagrangian Hessian plus 2 lambda_i I_3 from the norm constraints |eta_i|^2 = 1.
-  bool eval_h(Index, const Number* x, bool, Number obj_factor, Index, const Number* lambda, bool, Index,
-              Index* rows, Index* cols, Number* values) override {
+  bool eval_h(Index, const Number* x, bool, Number obj_factor, Index, const Number* lambda, bool, Index, Index* rows,
+              Index* cols, Number* values) override {
     const bool dense = dense_hessian();
     if (values == nullptr) {
       if (!dense) {
@@ -170,7 +169,8 @@ class ProgramNlp : public Ipopt::TNLP {
     if (!dense)
       for (std::size_t k = 0; k < hessian_pattern_.size(); ++k) {
         const auto [r, c] = hessian_pattern_[k];
-        values[k] = lower[static_cast<std::size_t>(r) * static_cast<std::size_t>(r + 1) / 2 + static_cast<std::size_t>(c)];
+        values[k] =
+            lower[static_cast<std::size_t>(r) * static_cast<std::size_t>(r + 1) / 2 + static_cast<std::size_t>(c)];
       }
     return true;
   }
@@ -238,7 +238,9 @@ LocalResult run_ipopt(const SmoothProblem& problem, const Program& start, const 
   }
   app->Options()->SetStringValue("hessian_approximation", "exact");
   app->Options()->SetNumericValue("tol", options.tolerance);
-  app->Options()->SetIntegerValue("max_iter", options.max_iterations > 0 ? options.max_iterations : problem.long_runs() ? 300 : 200);
+  app->Options()->SetIntegerValue("max_iter", options.max_iterations > 0 ? options.max_iterations
+                                              : problem.long_runs()      ? 300
+                                                                         : 200);
   const Ipopt::ApplicationReturnStatus status = app->OptimizeTNLP(Ipopt::SmartPtr<Ipopt::TNLP>(GetRawPtr(nlp)));
   const bool converged = status == Ipopt::Solve_Succeeded || status == Ipopt::Solved_To_Acceptable_Level;
   if (Ipopt::IsValid(app->Statistics())) out.summary.iterations = app->Statistics()->IterationCount();
@@ -246,7 +248,8 @@ LocalResult run_ipopt(const SmoothProblem& problem, const Program& start, const 
   const std::vector<double>& x = nlp->solution();
   if (x.empty()) return out;
   Program result;
-  for (int i = 0; i < start.size(); ++i) result.positions.push_back(Vec3(x[3 * i], x[3 * i + 1], x[3 * i + 2]).normalized());
+  for (int i = 0; i < start.size(); ++i)
+    result.positions.push_back(Vec3(x[3 * i], x[3 * i + 1], x[3 * i + 2]).normalized());
   const double value = value_of(result);
   if (std::isfinite(value)) {
     out.program = std::move(result);

@@ -21,7 +21,8 @@ template <class Model>
 LocalResult ipopt_local(const CriterionOps<Model>& criterion, const Program& start, const LocalOptions& options = {},
                         const PositionBounds* bounds = nullptr) {
   const std::unique_ptr<SmoothProblem> problem = make_problem<Model>(criterion, start.size());
-  return run_ipopt(*problem, start, options, [&criterion](const Program& p) { return criterion_value(criterion, p); }, bounds);
+  return run_ipopt(
+      *problem, start, options, [&criterion](const Program& p) { return criterion_value(criterion, p); }, bounds);
 }
 
 template <Criterion C, class Model = Paper9Model>
@@ -30,7 +31,7 @@ LocalResult optimize_with_ipopt(const Program& start, const LocalOptions& option
   return ipopt_local<Model>(criterion_ops<C, Model>(), start, options, bounds);
 }
 
-#define SCALCAL_IPOPT_LOCAL_INSTANCES(prefix, M)                                                             \
+#define SCALCAL_IPOPT_LOCAL_INSTANCES(prefix, M)                                                          \
   prefix template LocalResult ipopt_local<M>(const CriterionOps<M>&, const Program&, const LocalOptions&, \
                                              const PositionBounds*);
 #define SCALCAL_EXTERN_IPOPT_LOCAL(M) SCALCAL_IPOPT_LOCAL_INSTANCES(extern, M)

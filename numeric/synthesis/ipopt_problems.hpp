@@ -1,7 +1,7 @@
 // A criterion as a smooth nonlinear program over x = (eta_1..eta_N, extra variables), one class per
 // form (criteria/criterion.hpp): SmoothForm min phi; MaxDiagonalForm min t s.t. N K(r,r) <= t (lifted
-// at large N, max_diagonal_lifted.hpp); MaxEigenvalueForm max s s.t. M/N - s I = L L^T. Values, gradients and Hessians are exact (tests
-// compare them with finite differences). The Ipopt adapter (ipopt_local.cpp) sees only SmoothProblem.
+// at large N, max_diagonal_lifted.hpp); MaxEigenvalueForm max s s.t. M/N - s I = L L^T. Values, gradients and Hessians
+// are exact (tests compare them with finite differences). The Ipopt adapter (ipopt_local.cpp) sees only SmoothProblem.
 #pragma once
 #include <algorithm>
 #include <memory>
@@ -11,11 +11,11 @@
 #include <Eigen/Eigenvalues>
 
 #include "numeric/criteria/derivatives.hpp"
-#include "numeric/synthesis/max_diagonal_lifted.hpp"
-#include "numeric/synthesis/smooth_problem.hpp"
 #include "numeric/criteria/registry.hpp"
 #include "numeric/program/program.hpp"
 #include "numeric/synthesis/criterion_ops.hpp"
+#include "numeric/synthesis/max_diagonal_lifted.hpp"
+#include "numeric/synthesis/smooth_problem.hpp"
 #include "numeric/synthesis/synthesis_models.hpp"
 
 namespace scalcal {
@@ -25,7 +25,8 @@ template <class Model>
 class SmoothCriterionProblem : public SmoothProblem {
  public:
   static constexpr int P = Model::kParameters;
-  SmoothCriterionProblem(int positions, SmoothOps<double, P> criterion) : SmoothProblem(positions), criterion_(criterion) {}
+  SmoothCriterionProblem(int positions, SmoothOps<double, P> criterion)
+      : SmoothProblem(positions), criterion_(criterion) {}
   bool long_runs() const override { return false; }
   bool objective(const double* x, double& f, double* grad) const override {
     const PositionsT<double> eta = positions_of(x);
@@ -148,7 +149,9 @@ class MaxEigenvalueProblem : public SmoothProblem {
   bool lagrangian_hessian(const double* x, double, const double* lambda, double* lower) const override {
     const int N = positions(), n = variables(), l0 = 3 * N + 1;
     std::fill(lower, lower + n * (n + 1) / 2, 0.0);
-    auto at = [lower](int r, int c) -> double& { return r >= c ? lower[r * (r + 1) / 2 + c] : lower[c * (c + 1) / 2 + r]; };
+    auto at = [lower](int r, int c) -> double& {
+      return r >= c ? lower[r * (r + 1) / 2 + c] : lower[c * (c + 1) / 2 + r];
+    };
     MatP Lambda;
     for (int a = 0; a < P; ++a)
       for (int b = 0; b <= a; ++b) Lambda(a, b) = Lambda(b, a) = a == b ? lambda[pair(a, b)] : 0.5 * lambda[pair(a, b)];
@@ -217,11 +220,14 @@ inline constexpr int kLiftedFromPositions = 48;
 template <class Model>
 std::unique_ptr<SmoothProblem> make_problem(const CriterionOps<Model>& criterion, int positions) {
   switch (criterion.form) {
-    case CriterionForm::Smooth: return std::make_unique<SmoothCriterionProblem<Model>>(positions, criterion.smooth);
+    case CriterionForm::Smooth:
+      return std::make_unique<SmoothCriterionProblem<Model>>(positions, criterion.smooth);
     case CriterionForm::MaxDiagonal:
-      if (positions >= kLiftedFromPositions) return std::make_unique<MaxDiagonalLiftedProblem<Model>>(positions, criterion.rows);
+      if (positions >= kLiftedFromPositions)
+        return std::make_unique<MaxDiagonalLiftedProblem<Model>>(positions, criterion.rows);
       return std::make_unique<MaxDiagonalProblem<Model>>(positions, criterion.rows);
-    default: return std::make_unique<MaxEigenvalueProblem<Model>>(positions);
+    default:
+      return std::make_unique<MaxEigenvalueProblem<Model>>(positions);
   }
 }
 

@@ -58,7 +58,8 @@ class MaxDiagonalLiftedProblem : public SmoothProblem {
   }
   bool constraint_values(const double* x, double* g, double* jac) const override;
   bool lagrangian_hessian(const double* x, double obj_factor, const double* lambda, double* lower) const override;
-  bool lagrangian_hessian_entries(const double* x, double obj_factor, const double* lambda, double* values) const override;
+  bool lagrangian_hessian_entries(const double* x, double obj_factor, const double* lambda,
+                                  double* values) const override;
   // The positions' 3 x 3 blocks and the Y block; t enters linearly.
   bool hessian_entry_used(int r, int c) const override {
     const int s = 3 * positions();
@@ -99,7 +100,8 @@ bool MaxDiagonalLiftedProblem<Model>::constraint_values(const double* x, double*
   MatP Z;
   if (!inverse(x, Z)) return false;
   const int m = static_cast<int>(rows_.size());
-  for (int k = 0; k < m; ++k) g[Q + k] = Z(rows_[static_cast<std::size_t>(k)], rows_[static_cast<std::size_t>(k)]) - x[t0()];
+  for (int k = 0; k < m; ++k)
+    g[Q + k] = Z(rows_[static_cast<std::size_t>(k)], rows_[static_cast<std::size_t>(k)]) - x[t0()];
   if (!jac) return true;
   for (int i = 0; i < N; ++i) {
     const Vec3& e = eta[static_cast<std::size_t>(i)];
@@ -169,13 +171,16 @@ bool MaxDiagonalLiftedProblem<Model>::blocks(const double* x, const double* lamb
 }
 
 template <class Model>
-bool MaxDiagonalLiftedProblem<Model>::lagrangian_hessian(const double* x, double, const double* lambda, double* lower) const {
+bool MaxDiagonalLiftedProblem<Model>::lagrangian_hessian(const double* x, double, const double* lambda,
+                                                         double* lower) const {
   std::vector<Mat3> position;
   Eigen::Matrix<double, Q, Q> y;
   if (!blocks(x, lambda, position, y)) return false;
   const int n = variables();
   std::fill(lower, lower + static_cast<std::size_t>(n) * static_cast<std::size_t>(n + 1) / 2, 0.0);
-  auto at = [lower](int r, int c) -> double& { return lower[static_cast<std::size_t>(r) * static_cast<std::size_t>(r + 1) / 2 + static_cast<std::size_t>(c)]; };
+  auto at = [lower](int r, int c) -> double& {
+    return lower[static_cast<std::size_t>(r) * static_cast<std::size_t>(r + 1) / 2 + static_cast<std::size_t>(c)];
+  };
   for (int i = 0; i < positions(); ++i)
     for (int r = 0; r < 3; ++r)
       for (int c = 0; c <= r; ++c) at(3 * i + r, 3 * i + c) = position[static_cast<std::size_t>(i)](r, c);

@@ -34,7 +34,8 @@ bool kkt(const Eigen::VectorXd& z, int n, const std::vector<int>& active, Eigen:
   F.setZero(size);
   for (int a = 0; a < m; ++a) {
     const double mu = z(mu0 + a);
-    for (int i = 0; i < n; ++i) F.segment<3>(3 * i) += mu * grads[static_cast<std::size_t>(a)][static_cast<std::size_t>(i)];
+    for (int i = 0; i < n; ++i)
+      F.segment<3>(3 * i) += mu * grads[static_cast<std::size_t>(a)][static_cast<std::size_t>(i)];
   }
   for (int i = 0; i < n; ++i) F.segment<3>(3 * i) += 2 * z(nu0 + i) * z.segment<3>(3 * i);
   // Rows: 3N stationarity, then m equalities, one sum, N norms (the row count equals the unknowns).
@@ -74,7 +75,8 @@ bool kkt(const Eigen::VectorXd& z, int n, const std::vector<int>& active, Eigen:
 // value with every multiplier non-negative (else the active set read off `best` was not the
 // optimum's). `criterion` is of the max-diagonal form (compiled once per model).
 template <class Model>
-LocalResult refine_active_diagonal(const CriterionOps<Model>& criterion, const LocalResult& best, int max_iterations = 8) {
+LocalResult refine_active_diagonal(const CriterionOps<Model>& criterion, const LocalResult& best,
+                                   int max_iterations = 8) {
   using namespace max_diagonal_detail;
   const int n = best.program.size();
   bool ok = true;
@@ -96,7 +98,8 @@ LocalResult refine_active_diagonal(const CriterionOps<Model>& criterion, const L
     Eigen::MatrixXd A = Eigen::MatrixXd::Zero(3 * n + 1, m + n);
     Eigen::VectorXd b = Eigen::VectorXd::Zero(3 * n + 1);
     for (int a = 0; a < m; ++a) {
-      for (int i = 0; i < n; ++i) A.block<3, 1>(3 * i, a) = grads[static_cast<std::size_t>(a)][static_cast<std::size_t>(i)];
+      for (int i = 0; i < n; ++i)
+        A.block<3, 1>(3 * i, a) = grads[static_cast<std::size_t>(a)][static_cast<std::size_t>(i)];
       A(3 * n, a) = 1;
     }
     for (int i = 0; i < n; ++i) A.block<3, 1>(3 * i, m + i) = 2 * z.segment<3>(3 * i);

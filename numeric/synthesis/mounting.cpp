@@ -74,8 +74,10 @@ Local nelder_mead(const std::function<double(const Eigen::Matrix3d&)>& f, Eigen:
       if (fr < fx[lo]) {
         const Vec xe = centroid + 2 * (centroid - x[hi]);
         const double fe = value(xe);
-        if (fe < fr) x[hi] = xe, fx[hi] = fe;
-        else x[hi] = xr, fx[hi] = fr;
+        if (fe < fr)
+          x[hi] = xe, fx[hi] = fe;
+        else
+          x[hi] = xr, fx[hi] = fr;
       } else if (fr < fx[second]) {
         x[hi] = xr, fx[hi] = fr;
       } else {

@@ -22,11 +22,11 @@ struct MountingOptions {
 
 struct MountingResult {
   Eigen::Matrix3d orientation = Eigen::Matrix3d::Identity();  // rows: the meter's axes in jig coordinates
-  double value = 0;          // the criterion at `orientation`
-  double value_default = 0;  // at O = I
+  double value = 0;                                           // the criterion at `orientation`
+  double value_default = 0;                                   // at O = I
   int starts = 0;
-  int hits = 0;         // starts that ended within kHitTolerance of `value`
-  double spread = 0;    // largest relative distance of a hit's value from `value`: the precision reached
+  int hits = 0;       // starts that ended within kHitTolerance of `value`
+  double spread = 0;  // largest relative distance of a hit's value from `value`: the precision reached
 };
 
 // The program O n_j.

@@ -24,7 +24,7 @@ struct SynthesisOptions {
   // ending when the stopping rule holds (stopping_rule.hpp); > 0: exactly this many.
   int starts = 0;
   std::uint64_t seed = 1;
-  int threads = 0;           // 0: all cores
+  int threads = 0;  // 0: all cores
   LocalSolver local = LocalSolver::Automatic;
   std::function<void(int done, int total)> progress;  // called from one thread at a time
   // Start 0 is this program instead of a random one (optimize --from: a lab's program or a family
@@ -34,11 +34,11 @@ struct SynthesisOptions {
 
 struct SynthesisResult {
   Program program;
-  double value = 0;  // normalised criterion of `program`
-  int starts = 0;    // starts run
-  std::string stopping;  // what ended the multistart: "8 consecutive hits", "cap 204" or "forced 50"
-  int hits = 0;      // starts that reached `value` (to a relative kHitTolerance)
-  int distinct = 0;  // distinct programs among the hits, up to the criterion's symmetry
+  double value = 0;          // normalised criterion of `program`
+  int starts = 0;            // starts run
+  std::string stopping;      // what ended the multistart: "8 consecutive hits", "cap 204" or "forced 50"
+  int hits = 0;              // starts that reached `value` (to a relative kHitTolerance)
+  int distinct = 0;          // distinct programs among the hits, up to the criterion's symmetry
   std::string local_solver;  // "newton" or "ipopt": what ran the starts
   // converged: Ipopt confirmed the best program as a KKT point with the same value (ipopt: the best
   // start converged); the message says which.

@@ -11,8 +11,8 @@ namespace scalcal {
 struct PositionBound {
   enum class Kind { Free, Zone, Fixed };
   Kind kind = Kind::Free;
-  Vec3 axis{0, 0, 1};                  // Zone: unit axis
-  double lower = -1.0, upper = 1.0;    // Zone: cos(max tilt) <= axis . eta <= cos(min tilt)
+  Vec3 axis{0, 0, 1};                // Zone: unit axis
+  double lower = -1.0, upper = 1.0;  // Zone: cos(max tilt) <= axis . eta <= cos(min tilt)
 };
 
 using PositionBounds = std::vector<PositionBound>;

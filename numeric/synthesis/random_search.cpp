@@ -12,8 +12,8 @@
 #include <thread>
 #include <vector>
 
-#include "numeric/synthesis/random_search_kernel.hpp"
 #include "numeric/synthesis/random_search.hpp"
+#include "numeric/synthesis/random_search_kernel.hpp"
 
 #include "numeric/criteria/evaluation.hpp"
 #include "numeric/criteria/model_evaluation.hpp"
@@ -28,7 +28,7 @@ constexpr std::uint64_t kRandomStream = 0x5241'4E44'4F4D'0001ull;  // keeps apar
 
 struct Best {
   double value = std::numeric_limits<double>::infinity();
-  long long index = -1;  // global program index (chunk * kChunk + i)
+  long long index = -1;     // global program index (chunk * kChunk + i)
   std::vector<double> eta;  // xyz triples
 };
 
@@ -115,8 +115,8 @@ SCALCAL_KERNEL void search_chunk_body(Xoshiro256x4& rng, long long begin, long l
 using SearchChunk = void (*)(Xoshiro256x4&, long long, long long, int, double (*)(const double*, int), bool, ModelScore,
                              const PositionSampler&, Buffers&, Best&);
 
-#define SCALCAL_SEARCH_CHUNK_ARGS                                                                                       \
-  Xoshiro256x4 &rng, long long begin, long long end, int n, double (*score)(const double*, int), bool batched,      \
+#define SCALCAL_SEARCH_CHUNK_ARGS                                                                              \
+  Xoshiro256x4 &rng, long long begin, long long end, int n, double (*score)(const double*, int), bool batched, \
       ModelScore model_score, const PositionSampler &sampler, Buffers &buf, Best &mine
 void search_chunk_baseline(SCALCAL_SEARCH_CHUNK_ARGS) {
   search_chunk_body(rng, begin, end, n, score, batched, model_score, sampler, buf, mine);
@@ -161,12 +161,10 @@ RandomSearchResult random_search(int positions, long long count, CriterionKind c
   const long long chunks = (count + kChunk - 1) / kChunk;
   const auto score = visit_criterion(criterion, [](auto C) { return &score_information<decltype(C)>; });
   const bool batched = visit_criterion(criterion, [](auto C) { return kDeterminantOnly<decltype(C)>; });
-  const ModelScore model_score =
-      model == ModelKind::paper9 ? nullptr : visit_model(model, [criterion](auto M) {
-        return visit_criterion(criterion, [](auto C) -> ModelScore {
-          return &score_model_positions<decltype(M), decltype(C)>;
-        });
-      });
+  const ModelScore model_score = model == ModelKind::paper9 ? nullptr : visit_model(model, [criterion](auto M) {
+    return visit_criterion(criterion,
+                           [](auto C) -> ModelScore { return &score_model_positions<decltype(M), decltype(C)>; });
+  });
   static const SearchChunk search_chunk = pick_search_chunk();
   const int nthreads = static_cast<int>(std::min<long long>(thread_count(threads), chunks));
   std::vector<Best> best(static_cast<std::size_t>(nthreads));
@@ -188,17 +186,16 @@ RandomSearchResult random_search(int positions, long long count, CriterionKind c
 
   const Best* winner = &best[0];
   for (const auto& b : best)
-    if (b.index >= 0 && (winner->index < 0 || b.value < winner->value ||
-                         (b.value == winner->value && b.index < winner->index)))
+    if (b.index >= 0 &&
+        (winner->index < 0 || b.value < winner->value || (b.value == winner->value && b.index < winner->index)))
       winner = &b;
   RandomSearchResult out;
   out.count = count;
   for (int i = 0; i < positions; ++i)
     out.program.positions.emplace_back(winner->eta[3 * i], winner->eta[3 * i + 1], winner->eta[3 * i + 2]);
-  out.best = winner->index < 0 ? winner->value
-             : model == ModelKind::paper9
-                 ? criterion_value(out.program, criterion)
-                 : evaluate(model, out.program).value(criterion);
+  out.best = winner->index < 0            ? winner->value
+             : model == ModelKind::paper9 ? criterion_value(out.program, criterion)
+                                          : evaluate(model, out.program).value(criterion);
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;
 }

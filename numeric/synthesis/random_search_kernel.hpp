@@ -13,8 +13,8 @@
 #include <Eigen/Eigenvalues>
 
 #include "numeric/criteria/registry.hpp"
-#include "numeric/synthesis/seeds.hpp"
 #include "numeric/model/paper9.hpp"
+#include "numeric/synthesis/seeds.hpp"
 
 namespace scalcal {
 
@@ -156,7 +156,7 @@ constexpr int packed(int a, int b) { return a * (a + 1) / 2 + b; }
 // sphere x^2 + y^2 + z^2 = 1, so sum z^2 = count - sum x^2 - sum y^2 and every quartic moment with
 // a factor z^2 is m - m x^2 - m y^2 for a quadratic monomial m.
 SCALCAL_KERNEL void accumulate_information(const double* x, const double* y, const double* z, int n, int count,
-                                   double* m45) {
+                                           double* m45) {
   typedef double Lanes __attribute__((vector_size(kLanes * sizeof(double))));
   Lanes acc[24] = {};
   for (int i = 0; i < n; i += kLanes) {
@@ -179,18 +179,18 @@ SCALCAL_KERNEL void accumulate_information(const double* x, const double* y, con
   }
   // The 31 moments in kMoments' order (degree, then decreasing powers of x, then of y).
   double m[31];
-  for (int k = 0; k < 5; ++k) m[k] = a[k];                   // xx xy xz yy yz
-  m[5] = count - a[0] - a[3];                                 // zz
-  for (int k = 6; k <= 15; ++k) m[k] = a[k - 1];              // the ten cubic moments
+  for (int k = 0; k < 5; ++k) m[k] = a[k];                     // xx xy xz yy yz
+  m[5] = count - a[0] - a[3];                                  // zz
+  for (int k = 6; k <= 15; ++k) m[k] = a[k - 1];               // the ten cubic moments
   m[16] = a[15], m[17] = a[16], m[18] = a[17], m[19] = a[18];  // xxxx xxxy xxxz xxyy
   m[20] = a[19], m[22] = a[20], m[23] = a[21], m[26] = a[22];  // xxyz xyyy xyyz yyyy
-  m[27] = a[23];                                              // yyyz
-  m[21] = m[0] - m[16] - m[19];                               // xxzz
-  m[24] = m[1] - m[17] - m[22];                               // xyzz
-  m[25] = m[2] - m[18] - m[23];                               // xzzz
-  m[28] = m[3] - m[19] - m[26];                               // yyzz
-  m[29] = m[4] - m[20] - m[27];                               // yzzz
-  m[30] = m[5] - m[21] - m[28];                               // zzzz
+  m[27] = a[23];                                               // yyyz
+  m[21] = m[0] - m[16] - m[19];                                // xxzz
+  m[24] = m[1] - m[17] - m[22];                                // xyzz
+  m[25] = m[2] - m[18] - m[23];                                // xzzz
+  m[28] = m[3] - m[19] - m[26];                                // yyzz
+  m[29] = m[4] - m[20] - m[27];                                // yzzz
+  m[30] = m[5] - m[21] - m[28];                                // zzzz
   for (int r = 0; r < 9; ++r)
     for (int c = 0; c <= r; ++c) m45[packed(r, c)] = m[kMoments.entry[r][c]];
 }

@@ -19,18 +19,22 @@ class SmoothProblem {
 
   int positions() const { return positions_; }
   int variables() const { return 3 * positions_ + extra(); }
-  virtual int extra() const { return 0; }        // variables after the 3N coordinates
-  virtual int constraints() const { return 0; }  // rows after the N norm constraints
+  virtual int extra() const { return 0; }          // variables after the 3N coordinates
+  virtual int constraints() const { return 0; }    // rows after the N norm constraints
   virtual bool long_runs() const { return true; }  // nonsmooth reformulations get a larger iteration cap
 
   // x for a program: its coordinates, then extra variables that make the start feasible.
   virtual std::vector<double> start(const Program& program) const {
     std::vector<double> x(static_cast<std::size_t>(variables()), 0.0);
     for (int i = 0; i < positions_; ++i)
-      for (int c = 0; c < 3; ++c) x[static_cast<std::size_t>(3 * i + c)] = program.positions[static_cast<std::size_t>(i)](c);
+      for (int c = 0; c < 3; ++c)
+        x[static_cast<std::size_t>(3 * i + c)] = program.positions[static_cast<std::size_t>(i)](c);
     return x;
   }
-  virtual void constraint_bounds(double* lower, double* upper) const { (void)lower; (void)upper; }
+  virtual void constraint_bounds(double* lower, double* upper) const {
+    (void)lower;
+    (void)upper;
+  }
   // f(x) and, when grad is non-null, its gradient (grad is zeroed by the caller). False: undefined.
   virtual bool objective(const double* x, double& f, double* grad) const = 0;
   // The exact Hessian of obj_factor f + sum_r lambda_r g_r (the criterion's own constraints; the
@@ -48,13 +52,19 @@ class SmoothProblem {
   // declares (row by row, c <= r; the positions' diagonal always included), without the norm rows'
   // 2 lambda_i I, which the adapter adds. False: not provided, the adapter gathers from the dense
   // lagrangian_hessian (O(n^2) memory and time per evaluation).
-  virtual bool lagrangian_hessian_entries(const double* x, double obj_factor, const double* lambda, double* values) const {
-    (void)x; (void)obj_factor; (void)lambda; (void)values;
+  virtual bool lagrangian_hessian_entries(const double* x, double obj_factor, const double* lambda,
+                                          double* values) const {
+    (void)x;
+    (void)obj_factor;
+    (void)lambda;
+    (void)values;
     return false;
   }
   // The criterion's constraints; jac (row-major, constraints() x variables(), zeroed by the caller).
   virtual bool constraint_values(const double* x, double* g, double* jac) const {
-    (void)x; (void)g; (void)jac;
+    (void)x;
+    (void)g;
+    (void)jac;
     return true;
   }
 

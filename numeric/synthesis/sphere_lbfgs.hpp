@@ -11,9 +11,9 @@
 #include <limits>
 #include <vector>
 
-#include "numeric/program/summary.hpp"
 #include "numeric/criteria/derivatives.hpp"
 #include "numeric/model/design.hpp"
+#include "numeric/program/summary.hpp"
 #include "numeric/synthesis/criterion_ops.hpp"
 #include "numeric/synthesis/synthesis_models.hpp"
 
@@ -23,8 +23,8 @@ struct SphereLbfgsOptions {
   // As SphereNewtonOptions: 2-norm of the Riemannian gradient relative to max(1, |value|).
   double gradient_tolerance = 1e-9;
   int max_iterations = 2000;
-  int memory = 12;          // curvature pairs kept
-  double max_turn = 0.5;    // radians, per position, of the first trial step of a line search
+  int memory = 12;        // curvature pairs kept
+  double max_turn = 0.5;  // radians, per position, of the first trial step of a line search
 };
 
 struct SphereLbfgsResult {
@@ -171,7 +171,8 @@ bool SphereLbfgsSolver<Model>::evaluate(const std::vector<Vec3>& eta, double& f,
 }
 
 template <class Model>
-void SphereLbfgsSolver<Model>::two_loop(std::deque<Pair>& pairs, const VecX& g, const std::vector<Vec3>& eta, VecX& direction) {
+void SphereLbfgsSolver<Model>::two_loop(std::deque<Pair>& pairs, const VecX& g, const std::vector<Vec3>& eta,
+                                        VecX& direction) {
   for (auto& p : pairs) {
     project(eta, p.s);
     project(eta, p.y);

@@ -14,9 +14,9 @@
 #include <Eigen/Cholesky>
 #include <Eigen/Geometry>
 
-#include "numeric/program/summary.hpp"
 #include "numeric/criteria/derivatives.hpp"
 #include "numeric/model/design.hpp"
+#include "numeric/program/summary.hpp"
 #include "numeric/synthesis/criterion_ops.hpp"
 #include "numeric/synthesis/synthesis_models.hpp"
 
@@ -35,9 +35,9 @@ struct SphereNewtonOptions {
 struct SphereNewtonResult {
   Summary summary;  // converged: the Riemannian gradient fell below its tolerance; failed: rank < P at the start
   bool converged() const { return summary.converged(); }
-  int iterations = 0;       // accepted Newton steps
-  int evaluations = 0;      // criterion values at trial programs (rejected steps included)
-  double value = 0;         // the criterion's own objective (log D for D), not normalised
+  int iterations = 0;   // accepted Newton steps
+  int evaluations = 0;  // criterion values at trial programs (rejected steps included)
+  double value = 0;     // the criterion's own objective (log D for D), not normalised
   double gradient_norm = 0;
 };
 
@@ -108,7 +108,8 @@ class SphereNewton : public SphereNewtonSolver<Model, Scalar> {
 };
 
 template <class Model, class Scalar>
-bool SphereNewtonSolver<Model, Scalar>::local_model(const std::vector<Vec3T<Scalar>>& eta, Scalar& value, VecX& gradient, MatX& hessian) {
+bool SphereNewtonSolver<Model, Scalar>::local_model(const std::vector<Vec3T<Scalar>>& eta, Scalar& value,
+                                                    VecX& gradient, MatX& hessian) {
   MatrixDerivatives<Scalar, P> d;
   if (!criterion_.derivatives(information_matrix<Model>(eta), static_cast<int>(eta.size()), d)) return false;
   assemble(eta, d);
@@ -172,10 +173,12 @@ SphereNewtonResult SphereNewtonSolver<Model, Scalar>::run(std::vector<Vec3T<Scal
       if (turn > Scalar(options_.max_turn)) step_ *= Scalar(options_.max_turn) / turn;
       for (int i = 0; i < n; ++i)
         trial[static_cast<std::size_t>(i)] =
-            (eta[static_cast<std::size_t>(i)] + bases_[static_cast<std::size_t>(i)] * step_.template segment<2>(2 * i)).normalized();
+            (eta[static_cast<std::size_t>(i)] + bases_[static_cast<std::size_t>(i)] * step_.template segment<2>(2 * i))
+                .normalized();
       Scalar f_trial;
       ++out.evaluations;
-      const Scalar predicted = -(g_.dot(step_) + Scalar(0.5) * step_.dot(H_.template selfadjointView<Eigen::Lower>() * step_));
+      const Scalar predicted =
+          -(g_.dot(step_) + Scalar(0.5) * step_.dot(H_.template selfadjointView<Eigen::Lower>() * step_));
       M_trial = information_matrix<Model>(trial);
       if (criterion_.objective(M_trial, n, f_trial) && predicted > Scalar(0)) {
         // Below rounding the ratio test is noise: a step that leaves the value unchanged to
@@ -188,8 +191,10 @@ SphereNewtonResult SphereNewtonSolver<Model, Scalar>::run(std::vector<Vec3T<Scal
           stalled = abs(d.value - f_trial) <= rounding ? stalled + 1 : 0;
           eta.swap(trial);
           M = M_trial;
-          if (rho > Scalar(0.75) || in_rounding) theta = std::max(theta / Scalar(4), Scalar(1e-4));
-          else if (rho < Scalar(0.25)) theta *= Scalar(2);
+          if (rho > Scalar(0.75) || in_rounding)
+            theta = std::max(theta / Scalar(4), Scalar(1e-4));
+          else if (rho < Scalar(0.25))
+            theta *= Scalar(2);
           break;
         }
       }
@@ -215,7 +220,8 @@ void SphereNewtonSolver<Model, Scalar>::gram(const MatP& W, MatX& out) {
 }
 
 template <class Model, class Scalar>
-void SphereNewtonSolver<Model, Scalar>::assemble(const std::vector<Vec3T<Scalar>>& eta, const MatrixDerivatives<Scalar, P>& d) {
+void SphereNewtonSolver<Model, Scalar>::assemble(const std::vector<Vec3T<Scalar>>& eta,
+                                                 const MatrixDerivatives<Scalar, P>& d) {
   const int n = static_cast<int>(eta.size()), m = 2 * n;
   X_.resize(P, 3 * n);
   bases_.resize(eta.size());
@@ -258,8 +264,9 @@ void SphereNewtonSolver<Model, Scalar>::assemble(const std::vector<Vec3T<Scalar>
     g_.template segment<2>(2 * i) = Bi.transpose() * egrad;
     const Mat3T<Scalar> curvature = Model::curvature(w, eta[static_cast<std::size_t>(i)]);
     const Eigen::Matrix<Scalar, P, 2> Ti = X_.template middleCols<2>(2 * i);
-    const Eigen::Matrix<Scalar, 2, 2> extra = two * (Bi.transpose() * curvature * Bi) + two * (Ti.transpose() * d.G * Ti) -
-                                              eta[static_cast<std::size_t>(i)].dot(egrad) * Eigen::Matrix<Scalar, 2, 2>::Identity();
+    const Eigen::Matrix<Scalar, 2, 2> extra =
+        two * (Bi.transpose() * curvature * Bi) + two * (Ti.transpose() * d.G * Ti) -
+        eta[static_cast<std::size_t>(i)].dot(egrad) * Eigen::Matrix<Scalar, 2, 2>::Identity();
     H_(2 * i, 2 * i) += extra(0, 0);
     H_(2 * i + 1, 2 * i) += extra(1, 0);
     H_(2 * i + 1, 2 * i + 1) += extra(1, 1);

@@ -31,7 +31,8 @@ struct StoppingRule {
   }
 
   bool satisfied(const std::vector<LocalResult>& results) const {
-    const bool any_finite = std::any_of(results.begin(), results.end(), [](const LocalResult& r) { return std::isfinite(r.value); });
+    const bool any_finite =
+        std::any_of(results.begin(), results.end(), [](const LocalResult& r) { return std::isfinite(r.value); });
     return any_finite && trailing_hits(results) >= consecutive_hits;
   }
 

@@ -59,8 +59,8 @@ class StructuredHessian {
   std::vector<Eigen::Matrix2d> D_;
   Eigen::Matrix<double, Q, Eigen::Dynamic> U_;
   Eigen::Matrix<double, Q, Q> W_;
-  MatX V_;       // r x 2N: |lambda_k|^1/2 e_k^T U over the r nonzero eigenpairs of W
-  VecX sigma_;   // their signs
+  MatX V_;      // r x 2N: |lambda_k|^1/2 e_k^T U over the r nonzero eigenpairs of W
+  VecX sigma_;  // their signs
   VecX g_;
   // factor(mu):
   std::vector<Eigen::Matrix2d> Dinv_;
@@ -87,8 +87,8 @@ void StructuredHessian<Model>::assemble(const std::vector<Vec3>& eta, const Matr
     const RowT<Model, double> w = d.G * h;
     const Vec3 egrad = 2.0 * (J.transpose() * w);
     g_.template segment<2>(2 * i) = Bi.transpose() * egrad;
-    D_[static_cast<std::size_t>(i)] = 2.0 * (Bi.transpose() * Model::curvature(w, e) * Bi) + 2.0 * (T.transpose() * d.G * T) -
-                                      e.dot(egrad) * Eigen::Matrix2d::Identity();
+    D_[static_cast<std::size_t>(i)] = 2.0 * (Bi.transpose() * Model::curvature(w, e) * Bi) +
+                                      2.0 * (T.transpose() * d.G * T) - e.dot(egrad) * Eigen::Matrix2d::Identity();
   }
   coupling(d.A, d.B, d.c);
 }
@@ -129,14 +129,16 @@ void StructuredHessian<Model>::coupling(const MatP& A, const MatP& B, double c) 
   for (int j = 0; j < r; ++j) {
     const double lambda = es.eigenvalues()(kept[static_cast<std::size_t>(j)]);
     sigma_(j) = lambda > 0 ? 1.0 : -1.0;
-    V_.row(j).noalias() = std::sqrt(std::abs(lambda)) * (es.eigenvectors().col(kept[static_cast<std::size_t>(j)]).transpose() * U_);
+    V_.row(j).noalias() =
+        std::sqrt(std::abs(lambda)) * (es.eigenvectors().col(kept[static_cast<std::size_t>(j)]).transpose() * U_);
   }
 }
 
 template <class Model>
 typename StructuredHessian<Model>::VecX StructuredHessian<Model>::apply(const VecX& t) const {
   VecX out = U_.transpose() * (W_ * (U_ * t));
-  for (int i = 0; i < n_; ++i) out.template segment<2>(2 * i) += D_[static_cast<std::size_t>(i)] * t.template segment<2>(2 * i);
+  for (int i = 0; i < n_; ++i)
+    out.template segment<2>(2 * i) += D_[static_cast<std::size_t>(i)] * t.template segment<2>(2 * i);
   return out;
 }
 
@@ -175,7 +177,8 @@ bool StructuredHessian<Model>::factor(double mu) {
   }
   const int r = static_cast<int>(V_.rows());
   MatX Y(r, 2 * n_);
-  for (int i = 0; i < n_; ++i) Y.template middleCols<2>(2 * i).noalias() = V_.template middleCols<2>(2 * i) * Dinv_[static_cast<std::size_t>(i)];
+  for (int i = 0; i < n_; ++i)
+    Y.template middleCols<2>(2 * i).noalias() = V_.template middleCols<2>(2 * i) * Dinv_[static_cast<std::size_t>(i)];
   MatX S = sigma_.asDiagonal();
   S.noalias() += Y * V_.transpose();
   S = (0.5 * (S + S.transpose())).eval();
@@ -198,10 +201,12 @@ template <class Model>
 typename StructuredHessian<Model>::VecX StructuredHessian<Model>::solve(const VecX& b) const {
   // Woodbury: (D + V^T Sigma V)^-1 = D^-1 - D^-1 V^T S^-1 V D^-1.
   VecX x(b.size());
-  for (int i = 0; i < n_; ++i) x.template segment<2>(2 * i) = Dinv_[static_cast<std::size_t>(i)] * b.template segment<2>(2 * i);
+  for (int i = 0; i < n_; ++i)
+    x.template segment<2>(2 * i) = Dinv_[static_cast<std::size_t>(i)] * b.template segment<2>(2 * i);
   const VecX y = S_vectors_ * ((S_vectors_.transpose() * (V_ * x)).cwiseQuotient(S_values_));
   const VecX z = V_.transpose() * y;
-  for (int i = 0; i < n_; ++i) x.template segment<2>(2 * i) -= Dinv_[static_cast<std::size_t>(i)] * z.template segment<2>(2 * i);
+  for (int i = 0; i < n_; ++i)
+    x.template segment<2>(2 * i) -= Dinv_[static_cast<std::size_t>(i)] * z.template segment<2>(2 * i);
   return x;
 }
 

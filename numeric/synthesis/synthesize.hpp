@@ -1,9 +1,9 @@
 // The multistart for one criterion and model: start k is the uniform random program of seed
 // start_seed(seed, k) (for a registered model other than the paper's and a smooth criterion, every
 // second one exchanged onto a grid first), optimised by the local solver the criterion's form calls for, in
-// threads (Newton, L-BFGS) or worker processes (Ipopt); the best program (lowest value, then lowest start index) never depends on scheduling.
-// synthesize_with<Model> is compiled once per model (the criterion is a CriterionOps), in the model's
-// synthesis unit; synthesize<C, Model> is its name for one criterion type.
+// threads (Newton, L-BFGS) or worker processes (Ipopt); the best program (lowest value, then lowest start index) never
+// depends on scheduling. synthesize_with<Model> is compiled once per model (the criterion is a CriterionOps), in the
+// model's synthesis unit; synthesize<C, Model> is its name for one criterion type.
 #pragma once
 #include <chrono>
 #include <cstdio>
@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "numeric/program/program_equivalence.hpp"
 #include "numeric/criteria/starts.hpp"
+#include "numeric/program/program_equivalence.hpp"
 #include "numeric/synthesis/criterion_ops.hpp"
 #include "numeric/synthesis/exchange_start.hpp"
 #include "numeric/synthesis/ipopt_local.hpp"
@@ -50,7 +50,7 @@ LocalResult local_start(const CriterionOps<Model>& criterion, const Program& sta
     if (s == LocalSolver::Ipopt) return ipopt_local<Model>(criterion, start);
     return sphere_local<Model>(criterion, start, s);
   }
-  if (criterion.form == CriterionForm::MaxDiagonal && kModelIndex<Model> > 0) {
+  if (criterion.form == CriterionForm::MaxDiagonal && kModelIndex < Model >> 0) {
     // The other models' S optima merge positions onto the axes, which Newton from a random program
     // cannot do without the exchange (see start_at); their S starts stay random, as documented in
     // experiments/docs/sweep.md. (Tried from N = 48 on: starts exchanged for A, D or S, or their A or
@@ -107,19 +107,22 @@ void confirm_best(const CriterionOps<Model>& criterion, int positions, Synthesis
   const SmoothOptimumCheck check = check_smooth_optimum<Model>(criterion, out.program);
   if (check.passed()) {
     char text[160];
-    std::snprintf(text, sizeof text, " program is a local minimum (Riemannian gradient %.1e, Hessian + %.0e of its "
-                                     "scale positive definite; checked in double)", check.gradient_norm, check.margin);
+    std::snprintf(text, sizeof text,
+                  " program is a local minimum (Riemannian gradient %.1e, Hessian + %.0e of its "
+                  "scale positive definite; checked in double)",
+                  check.gradient_norm, check.margin);
     out.summary.termination = Termination::converged;
     out.summary.message = std::string("the best ") + out.local_solver + text;
     return;
   }
   const Program best_program = out.program;
-  const LocalResult ipopt = run_in_workers(1, 1, positions, [&](int) { return ipopt_local<Model>(criterion, best_program); })[0];
+  const LocalResult ipopt =
+      run_in_workers(1, 1, positions, [&](int) { return ipopt_local<Model>(criterion, best_program); })[0];
   const bool confirmed = ipopt.summary.converged() && ipopt.value <= out.value * (1 + kHitTolerance);
   out.summary.termination = confirmed ? Termination::converged : Termination::not_converged;
-  out.summary.message = confirmed ? std::string("Ipopt confirmed the best ") + out.local_solver + " program as a KKT point"
-                                  : std::string("Ipopt did not confirm the best ") + out.local_solver +
-                                        " program as a converged optimum";
+  out.summary.message =
+      confirmed ? std::string("Ipopt confirmed the best ") + out.local_solver + " program as a KKT point"
+                : std::string("Ipopt did not confirm the best ") + out.local_solver + " program as a converged optimum";
   out.summary.iterations = ipopt.summary.iterations;
   if (ipopt.value < out.value) {
     out.program = ipopt.program;
@@ -157,7 +160,7 @@ SynthesisResult synthesize_with(const CriterionOps<Model>& criterion, const Synt
     // the smooth criteria, whose Newton steps cannot merge positions. E and S run Ipopt, which
     // reached every limit at N = 6k for axis6 from random starts, and whose exchange would cost
     // an eigen-decomposition per trial swap (E at N = 24: 33 s of CPU instead of 2 s).
-    if (kModelIndex<Model> > 0 && criterion.form == CriterionForm::Smooth && criterion.kind && k % 2 == 1)
+    if (kModelIndex < Model >> 0 && criterion.form == CriterionForm::Smooth && criterion.kind && k % 2 == 1)
       start = exchanged_start(*criterion.kind, ModelKind(kModelIndex<Model>), start);
     return local_start<Model>(criterion, start, options.local);
   };
@@ -170,8 +173,9 @@ SynthesisResult synthesize_with(const CriterionOps<Model>& criterion, const Synt
     std::function<void(int, int)> progress;
     if (options.progress) progress = [&](int done, int) { options.progress(offset + done, cap); };
     const auto task = [&](int k) { return start_at(offset + k); };
-    const std::vector<LocalResult> done = in_processes ? run_in_workers(batch, workers, options.positions, task, progress)
-                                                       : run_in_threads(batch, workers, task, progress);
+    const std::vector<LocalResult> done = in_processes
+                                              ? run_in_workers(batch, workers, options.positions, task, progress)
+                                              : run_in_threads(batch, workers, task, progress);
     results.insert(results.end(), done.begin(), done.end());
     if (!forced && static_cast<int>(results.size()) < cap &&
         static_cast<int>(results.size()) >= criterion.minimum_starts(options.positions) && rule.satisfied(results)) {
@@ -188,13 +192,14 @@ SynthesisResult synthesize_with(const CriterionOps<Model>& criterion, const Synt
   if (solver != LocalSolver::Ipopt) {
     confirm_best<Model>(criterion, options.positions, out);
   } else {
-    out.summary.message = out.summary.converged() ? "the best Ipopt start converged"
-                                                  : "the best Ipopt start did not converge";
+    out.summary.message =
+        out.summary.converged() ? "the best Ipopt start converged" : "the best Ipopt start did not converge";
   }
   if (criterion.form == CriterionForm::MaxDiagonal && options.positions < kLiftedFromPositions) {
     // Ipopt's tolerance leaves S about 1e-12 above its optimum; Newton on the active conditions
     // takes it to rounding (a dense step: from the lifted form's N on, Ipopt's value stands).
-    const LocalResult refined = refine_active_diagonal<Model>(criterion, LocalResult{out.program, out.value, out.summary});
+    const LocalResult refined =
+        refine_active_diagonal<Model>(criterion, LocalResult{out.program, out.value, out.summary});
     if (refined.value < out.value) {
       out.program = refined.program;
       out.value = refined.value;
@@ -211,8 +216,8 @@ SynthesisResult synthesize(const SynthesisOptions& options) {
   return synthesize_with<Model>(criterion_ops<C, Model>(), options);
 }
 
-#define SCALCAL_SYNTHESIZE_INSTANCES(prefix, M)                                                              \
-  prefix template LocalResult local_start<M>(const CriterionOps<M>&, const Program&, LocalSolver);          \
+#define SCALCAL_SYNTHESIZE_INSTANCES(prefix, M)                                                    \
+  prefix template LocalResult local_start<M>(const CriterionOps<M>&, const Program&, LocalSolver); \
   prefix template SynthesisResult synthesize_with<M>(const CriterionOps<M>&, const SynthesisOptions&);
 #define SCALCAL_EXTERN_SYNTHESIZE(M) SCALCAL_SYNTHESIZE_INSTANCES(extern, M)
 SCALCAL_FOR_EACH_SYNTHESIS_MODEL(SCALCAL_EXTERN_SYNTHESIZE)

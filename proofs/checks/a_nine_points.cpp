@@ -51,7 +51,8 @@ int main() {
         "2 sigma* - 1 > 0 and sigma* > r- : the largest coordinate has m^2 >= sigma* > r-, hence m^2 >= r+");
   check(lo(r_plus) > 0.5, "r+ > 1/2: one coordinate only, so the six caps m^2 >= r+ about +-e_k are disjoint");
   const Interval t_min = Interval(2) * r_plus - Interval(1), s_min = r_plus * r_plus;
-  const Interval F = (Interval(3) + r2) * t_min * t_min + Interval(2) * t_min + (Interval(2) * r2 - Interval(1)) * s_min - r2;
+  const Interval F =
+      (Interval(3) + r2) * t_min * t_min + Interval(2) * t_min + (Interval(2) * r2 - Interval(1)) * s_min - r2;
   check(lo(t_min) >= 0 && lo(F) > 0,
         "two points in one cap: t >= 2r+ - 1 >= 0, s >= r+^2, so (2/3) k = (3+sqrt2) t^2 + 2t + (2sqrt2-1) s - sqrt2 "
         "> 0 (increasing in t >= 0 and in s): nine points in six caps cannot have k(eta_i, eta_j) = 0 for all i != j");

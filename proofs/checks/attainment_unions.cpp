@@ -82,8 +82,10 @@ int main() {
   for (const Row& r : rows) {
     const scalcal::CertifyResult c = scalcal::certify(r.program, *scalcal::parse_criterion(r.criterion));
     const bool ok = r.program.size() == r.positions && c.status == scalcal::CertifiedStatus::attained_proven;
-    if (ok) proven[r.criterion].insert(r.positions);
-    else ++failed, std::cout << "  " << r.criterion << " N = " << r.positions << ": " << c.reason << "\n";
+    if (ok)
+      proven[r.criterion].insert(r.positions);
+    else
+      ++failed, std::cout << "  " << r.criterion << " N = " << r.positions << ": " << c.reason << "\n";
     // Each exact position lies within sqrt 2 * radius of the computed one (chart coordinates u, v at
     // most the radius; normalising w = e + u t1 + v t2 moves it no farther from e), so computed
     // positions more than 2 sqrt 2 * radius apart stay distinct.

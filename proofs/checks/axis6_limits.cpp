@@ -25,7 +25,9 @@ using scalcal::symbolic::is_zero_exact;
 
 namespace {
 constexpr int P = 6;
-matrix design_row(const ex& x, const ex& y, const ex& z) { return matrix(P, 1, GiNaC::lst{x, y, z, x * x, y * y, z * z}); }
+matrix design_row(const ex& x, const ex& y, const ex& z) {
+  return matrix(P, 1, GiNaC::lst{x, y, z, x * x, y * y, z * z});
+}
 }  // namespace
 
 int main() {
@@ -34,7 +36,8 @@ int main() {
   const ex u1 = x * x, u2 = y * y, u3 = z * z;
   const ex p4 = u1 * u1 + u2 * u2 + u3 * u3, e2 = u1 * u2 + u2 * u3 + u3 * u1;
 
-  check(on_sphere(quad(h, scaled_identity(P, 1)) - (1 + p4), x, y, z).is_zero(), "h^T h = 1 + p4 on the sphere: tr M = 1 + E[p4]");
+  check(on_sphere(quad(h, scaled_identity(P, 1)) - (1 + p4), x, y, z).is_zero(),
+        "h^T h = 1 + p4 on the sphere: tr M = 1 + E[p4]");
   check(on_sphere(2 - quad(h, scaled_identity(P, 1)) - 2 * e2, x, y, z).is_zero(),
         "2 - h^T h = 2 e2 >= 0 on the sphere: tr M <= 2, = iff the measure lives where e2 = 0 (the six axis points)");
 
@@ -89,10 +92,11 @@ int main() {
     ex beta;
   };
   const matrix W = scaled_identity(P, ex(1) / 6);
-  const std::vector<Cert> certs{{"D: 6 - h^T M*^-1 h = 6 e2 (bound P = 6)", 6, K, 6},
-                                {"A: 18 - h^T M*^-2 h = 18 e2 (bound tr M*^-1 = 18)", 18, K.mul(K), 18},
-                                {"E: 1/3 - h^T (I/6) h = e2/3 (Ehat = I/6, trace 1, bound lambda_min = 1/3)", ex(1) / 3, W, ex(1) / 3},
-                                {"S: 3 - h^T K W K h = 3 e2 (W = I/6, bound tr(W K) = 3)", 3, K.mul(W).mul(K), 3}};
+  const std::vector<Cert> certs{
+      {"D: 6 - h^T M*^-1 h = 6 e2 (bound P = 6)", 6, K, 6},
+      {"A: 18 - h^T M*^-2 h = 18 e2 (bound tr M*^-1 = 18)", 18, K.mul(K), 18},
+      {"E: 1/3 - h^T (I/6) h = e2/3 (Ehat = I/6, trace 1, bound lambda_min = 1/3)", ex(1) / 3, W, ex(1) / 3},
+      {"S: 3 - h^T K W K h = 3 e2 (W = I/6, bound tr(W K) = 3)", 3, K.mul(W).mul(K), 3}};
   for (const auto& c : certs) check(on_sphere(c.bound - quad(h, c.Q) - c.beta * e2, x, y, z).is_zero(), c.name);
   check(W.mul(K).trace().is_equal(3) && K.trace().is_equal(18) && W.trace().is_equal(1),
         "the bounds: tr M*^-1 = 18, tr W = tr Ehat = 1, tr(W K) = 3");

@@ -27,13 +27,16 @@ int main() {
   const matrix h(3, 1, GiNaC::lst{x, y, z});
 
   // tr M = E[h^T h] and h^T h = 1 on the sphere.
-  check(on_sphere(quad(h, scaled_identity(3, 1)) - 1, x, y, z).is_zero(), "h^T h = x^2 + y^2 + z^2 = 1 on the sphere: tr M = 1 for every measure");
+  check(on_sphere(quad(h, scaled_identity(3, 1)) - 1, x, y, z).is_zero(),
+        "h^T h = x^2 + y^2 + z^2 = 1 on the sphere: tr M = 1 for every measure");
 
   // Eigenvalue inequalities (mu_i > 0 the eigenvalues of M, sum mu = 1).
   const symbol m1("mu1"), m2("mu2"), m3("mu3");
-  const ex cs = (m1 + m2 + m3) * (1 / m1 + 1 / m2 + 1 / m3) - 9 -
-                (GiNaC::pow(m1 - m2, 2) / (m1 * m2) + GiNaC::pow(m2 - m3, 2) / (m2 * m3) + GiNaC::pow(m3 - m1, 2) / (m3 * m1));
-  check(GiNaC::normal(cs).is_zero(), "A: (sum mu)(sum 1/mu) - 9 = sum_{i<j} (mu_i - mu_j)^2/(mu_i mu_j) >= 0, so tr M^-1 >= 9, = iff all mu = 1/3");
+  const ex cs =
+      (m1 + m2 + m3) * (1 / m1 + 1 / m2 + 1 / m3) - 9 -
+      (GiNaC::pow(m1 - m2, 2) / (m1 * m2) + GiNaC::pow(m2 - m3, 2) / (m2 * m3) + GiNaC::pow(m3 - m1, 2) / (m3 * m1));
+  check(GiNaC::normal(cs).is_zero(),
+        "A: (sum mu)(sum 1/mu) - 9 = sum_{i<j} (mu_i - mu_j)^2/(mu_i mu_j) >= 0, so tr M^-1 >= 9, = iff all mu = 1/3");
   // AM-GM for three: with mu_i = t_i^3, t1^3 + t2^3 + t3^3 - 3 t1 t2 t3 = (t1+t2+t3) sum (t_i - t_j)^2 / 2.
   const symbol t1("t1"), t2("t2"), t3("t3");
   check(GiNaC::expand(GiNaC::pow(t1, 3) + GiNaC::pow(t2, 3) + GiNaC::pow(t3, 3) - 3 * t1 * t2 * t3 -
@@ -47,7 +50,8 @@ int main() {
     const matrix S(2, 2, GiNaC::lst{s, t, t, r});
     const matrix m(2, 1, GiNaC::lst{p, q});
     const ex schur = a - m.transpose().mul(S.inverse()).mul(m)(0, 0);
-    check(GiNaC::normal(M.inverse()(0, 0) * schur - 1).is_zero(), "S: (M^-1)_11 = 1/(M_11 - m^T S^-1 m) (Schur complement)");
+    check(GiNaC::normal(M.inverse()(0, 0) * schur - 1).is_zero(),
+          "S: (M^-1)_11 = 1/(M_11 - m^T S^-1 m) (Schur complement)");
   }
 
   // Certificates with M* = I/3, K = 3I: every sensitivity is constant on the sphere.
@@ -68,9 +72,10 @@ int main() {
     const matrix e(3, 1, GiNaC::lst{GiNaC::sqrt(ex(2)) * c, GiNaC::sqrt(ex(2)) * s, 1});
     check(is_zero_exact(e.transpose().mul(e)(0, 0) - 3), "frame: |eta(t)|^2 = |e|^2/3 = 1");
     const ex c2 = 2 * c * c - 1, s2 = 2 * s * c;  // cos 2t, sin 2t
-    const matrix want(3, 3,
-                      GiNaC::lst{(1 + c2) / 3, s2 / 3, GiNaC::sqrt(ex(2)) * c / 3, s2 / 3, (1 - c2) / 3, GiNaC::sqrt(ex(2)) * s / 3,
-                                 GiNaC::sqrt(ex(2)) * c / 3, GiNaC::sqrt(ex(2)) * s / 3, ex(1) / 3});
+    const matrix want(
+        3, 3,
+        GiNaC::lst{(1 + c2) / 3, s2 / 3, GiNaC::sqrt(ex(2)) * c / 3, s2 / 3, (1 - c2) / 3, GiNaC::sqrt(ex(2)) * s / 3,
+                   GiNaC::sqrt(ex(2)) * c / 3, GiNaC::sqrt(ex(2)) * s / 3, ex(1) / 3});
     const matrix got = e.mul(e.transpose()).mul_scalar(ex(1) / 3);
     bool ok = true;
     for (int r = 0; r < 3; ++r)
@@ -95,7 +100,8 @@ int main() {
       }
       for (int r = 0; r < 3; ++r)
         for (int q = 0; q < 3; ++q) {
-          const GiNaC::numeric d = GiNaC::abs(GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(S(r, q) - (r == q ? ex(N) / 3 : ex(0)))));
+          const GiNaC::numeric d =
+              GiNaC::abs(GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(S(r, q) - (r == q ? ex(N) / 3 : ex(0)))));
           if (d > worst) worst = d;
           if (d > tol) ok = false;
         }

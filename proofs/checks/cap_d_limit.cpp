@@ -211,7 +211,8 @@ ex sensitivity(const matrix& Hi, const matrix& Bi, const ex& qi, const symbol& z
 // The moments of pole weight w1, rim weight (1-w1) alpha at z = c, circle weight (1-w1)(1-alpha) at z = t.
 std::vector<ex> three_ring_moments(const ex& w1, const ex& alpha, const ex& c, const ex& t) {
   std::vector<ex> m;
-  for (int k = 0; k <= 4; ++k) m.push_back(GiNaC::expand(w1 + (1 - w1) * (alpha * ipow(c, k) + (1 - alpha) * ipow(t, k))));
+  for (int k = 0; k <= 4; ++k)
+    m.push_back(GiNaC::expand(w1 + (1 - w1) * (alpha * ipow(c, k) + (1 - alpha) * ipow(t, k))));
   return m;
 }
 
@@ -255,9 +256,11 @@ int main() {
       }
       linear = linear && GiNaC::expand(rest).is_zero();
     }
-    const ex det = GiNaC::expand(TR.determinant()).subs(GiNaC::pow(si, 2) == 1 - co * co, GiNaC::subs_options::algebraic);
-    check(linear && GiNaC::expand(det - 1).is_zero(),
-          "step 1: h(R x) = T_R h(x) for the rotation R about z by any angle (co, si), det T_R = 1 when co^2 + si^2 = 1");
+    const ex det =
+        GiNaC::expand(TR.determinant()).subs(GiNaC::pow(si, 2) == 1 - co * co, GiNaC::subs_options::algebraic);
+    check(
+        linear && GiNaC::expand(det - 1).is_zero(),
+        "step 1: h(R x) = T_R h(x) for the rotation R about z by any angle (co, si), det T_R = 1 when co^2 + si^2 = 1");
   }
   // Step 2: the mean over a circle, and the moment matrix of a rotation-invariant measure.
   {
@@ -278,7 +281,9 @@ int main() {
         for (int k = 0; k < 6; ++k) six += ipow(co6[k], a) * ipow(si6[k], b);
         hexagon = hexagon && zero(six / 6 - want);
       }
-    check(wallis, "step 2: mean of cos^a sin^b over a turn (constant Fourier term) = (a-1)!!(b-1)!!/(a+b)!! (a, b even), else 0; a+b <= 4");
+    check(wallis,
+          "step 2: mean of cos^a sin^b over a turn (constant Fourier term) = (a-1)!!(b-1)!!/(a+b)!! (a, b even), else "
+          "0; a+b <= 4");
     check(hexagon, "remark: 6 equally spaced points on a circle have the circle's means of cos^a sin^b, a+b <= 4");
   }
   const symbol m0("m0"), m1("m1"), m2("m2"), m3("m3"), m4("m4");
@@ -324,15 +329,19 @@ int main() {
     bool ok = true;
     for (int i = 0; i < 9; ++i)
       for (int j = 0; j < 9; ++j) ok = ok && GiNaC::expand(Mu(i, j) - want(i, j)).is_zero();
-    check(ok, "step 2: T M_h T^T = diag(H, B/2, B/2, q/2, q/2) for symbolic moments m0..m4 (every entry of M_h from the circle means)");
+    check(ok,
+          "step 2: T M_h T^T = diag(H, B/2, B/2, q/2, q/2) for symbolic moments m0..m4 (every entry of M_h from the "
+          "circle means)");
     const ex detMh = GiNaC::expand(Mh.determinant());
     const ex want_det = GiNaC::expand(G.H.determinant() * GiNaC::pow(G.B.determinant(), 2) * G.q * G.q / 64);
     check(GiNaC::expand(detMh * 16 - want_det).is_zero(),
-          "step 2: det M_h = det H det(B)^2 q^2 / (64 det T^2) = det H det(B)^2 q^2 / 1024 (9x9 determinant, symbolic moments)");
+          "step 2: det M_h = det H det(B)^2 q^2 / (64 det T^2) = det H det(B)^2 q^2 / 1024 (9x9 determinant, symbolic "
+          "moments)");
   }
   // Step 3: the sensitivity, identically in the inverses (any symmetric Hi, Bi and qi).
   {
-    const symbol k00("k00"), k01("k01"), k02("k02"), k11("k11"), k12("k12"), k22("k22"), b00("b00"), b01("b01"), b11("b11"), qi("qi");
+    const symbol k00("k00"), k01("k01"), k02("k02"), k11("k11"), k12("k12"), k22("k22"), b00("b00"), b01("b01"),
+        b11("b11"), qi("qi");
     const matrix Hi(3, 3, GiNaC::lst{k00, k01, k02, k01, k11, k12, k02, k12, k22});
     const matrix Bi(2, 2, GiNaC::lst{b00, b01, b01, b11});
     matrix Ki(9, 9);  // the inverse of diag(H, B/2, B/2, q/2, q/2)
@@ -343,10 +352,12 @@ int main() {
         for (int j = 0; j < 2; ++j) Ki(k + i, k + j) = 2 * Bi(i, j);
     Ki(7, 7) = 2 * qi, Ki(8, 8) = 2 * qi;
     const ex d_u = u.transpose().mul(Ki).mul(u)(0, 0);
-    const ex diff = GiNaC::expand(
-        GiNaC::expand(d_u - sensitivity(Hi, Bi, qi, z)).subs(GiNaC::pow(x, 2) == 1 - y * y - z * z, GiNaC::subs_options::algebraic));
-    check(diff.is_zero(), "step 3: h^T M_h^-1 h = u^T M_u^-1 u = v^T H^-1 v + 2(1-z^2) w^T B^-1 w + 2(1-z^2)^2/q on the sphere");
-    check(GiNaC::expand(sensitivity(Hi, Bi, qi, z)).degree(z) == 4, "step 3: d is a polynomial in z of degree <= 4 (here 4)");
+    const ex diff = GiNaC::expand(GiNaC::expand(d_u - sensitivity(Hi, Bi, qi, z))
+                                      .subs(GiNaC::pow(x, 2) == 1 - y * y - z * z, GiNaC::subs_options::algebraic));
+    check(diff.is_zero(),
+          "step 3: h^T M_h^-1 h = u^T M_u^-1 u = v^T H^-1 v + 2(1-z^2) w^T B^-1 w + 2(1-z^2)^2/q on the sphere");
+    check(GiNaC::expand(sensitivity(Hi, Bi, qi, z)).degree(z) == 4,
+          "step 3: d is a polynomial in z of degree <= 4 (here 4)");
   }
 
   // =============================================================================================
@@ -359,30 +370,37 @@ int main() {
     const Blocks G3 = blocks_of(three_ring_moments(w1, al, c, t));
     check(GiNaC::expand(G3.H.determinant() - w1 * GiNaC::pow(1 - w1, 2) * al * (1 - al) * V * V).is_zero(),
           "step 5: det H = w1 (1-w1)^2 alpha (1-alpha) V^2, V = (c-1)(t-1)(t-c)");
-    check(GiNaC::expand(G3.B.determinant() - GiNaC::pow(1 - w1, 2) * al * (1 - al) * rc * rt * GiNaC::pow(t - c, 2)).is_zero(),
+    check(GiNaC::expand(G3.B.determinant() - GiNaC::pow(1 - w1, 2) * al * (1 - al) * rc * rt * GiNaC::pow(t - c, 2))
+              .is_zero(),
           "step 5: det B = (1-w1)^2 alpha (1-alpha) r(c) r(t) (t-c)^2, r(z) = 1 - z^2");
     check(GiNaC::expand(G3.q - (1 - w1) * Q).is_zero(), "step 5: q = (1-w1) Q, Q = alpha r(c)^2 + (1-alpha) r(t)^2");
   }
-  const ex prod = GiNaC::pow(al * (1 - al), 3) * Q * Q * GiNaC::pow(1 + c, 2) * GiNaC::pow(1 - c, 4) * GiNaC::pow(1 + t, 2) *
-                  GiNaC::pow(1 - t, 4) * GiNaC::pow(t - c, 6);
-  check(GiNaC::expand(GiNaC::pow(al * (1 - al), 3) * V * V * GiNaC::pow(rc * rt, 2) * GiNaC::pow(t - c, 4) * Q * Q - prod).is_zero(),
-        "step 5: (alpha(1-alpha))^3 V^2 (r(c) r(t))^2 (t-c)^4 Q^2 = (alpha(1-alpha))^3 Q^2 (1+c)^2 (1-c)^4 (1+t)^2 (1-t)^4 (t-c)^6");
+  const ex prod = GiNaC::pow(al * (1 - al), 3) * Q * Q * GiNaC::pow(1 + c, 2) * GiNaC::pow(1 - c, 4) *
+                  GiNaC::pow(1 + t, 2) * GiNaC::pow(1 - t, 4) * GiNaC::pow(t - c, 6);
+  check(
+      GiNaC::expand(GiNaC::pow(al * (1 - al), 3) * V * V * GiNaC::pow(rc * rt, 2) * GiNaC::pow(t - c, 4) * Q * Q - prod)
+          .is_zero(),
+      "step 5: (alpha(1-alpha))^3 V^2 (r(c) r(t))^2 (t-c)^4 Q^2 = (alpha(1-alpha))^3 Q^2 (1+c)^2 (1-c)^4 (1+t)^2 "
+      "(1-t)^4 (t-c)^6");
   {
     const ex f = GiNaC::log(w1) + 8 * GiNaC::log(1 - w1);
     check(zero(f.diff(w1).subs(w1 == ex(1) / 9)) && zero(f.diff(w1, 2) + 1 / (w1 * w1) + 8 / GiNaC::pow(1 - w1, 2)),
           "step 5: w1 (1-w1)^8 is maximised on (0,1) at w1 = 1/9 only (log strictly concave, derivative 0 there)");
   }
-  const ex Phi = 3 * GiNaC::log(al * (1 - al)) + 2 * GiNaC::log(Q) + 2 * GiNaC::log(1 + c) + 4 * GiNaC::log(1 - c) + 2 * GiNaC::log(1 + t) +
-                 4 * GiNaC::log(1 - t) + 6 * GiNaC::log(t - c);
+  const ex Phi = 3 * GiNaC::log(al * (1 - al)) + 2 * GiNaC::log(Q) + 2 * GiNaC::log(1 + c) + 4 * GiNaC::log(1 - c) +
+                 2 * GiNaC::log(1 + t) + 4 * GiNaC::log(1 - t) + 6 * GiNaC::log(t - c);
   const ex Dl = rc * rc - rt * rt;
   const ex E1 = GiNaC::expand(-8 * Dl * al * al + (5 * Dl - 6 * rt * rt) * al + 3 * rt * rt);
   const ex Qt = -4 * t * (1 - al) * rt;
   const ex E2 = GiNaC::expand(Qt * rt * (t - c) + Q * ((1 - t) * (t - c) - 2 * (1 + t) * (t - c) + 3 * rt));
   check(zero(Phi.diff(al) * al * (1 - al) * Q - E1),
-        "step 5: dPhi/dalpha * alpha(1-alpha) Q = E1 = -8 Delta alpha^2 + (5 Delta - 6 r(t)^2) alpha + 3 r(t)^2, Delta = r(c)^2 - r(t)^2");
-  check(zero(Phi.diff(t) * Q * rt * (t - c) / 2 - E2),
-        "step 5: dPhi/dt * Q (1-t^2)(t-c)/2 = E2 = -4t(1-alpha)(1-t^2)^2(t-c) + Q ((1-t)(t-c) - 2(1+t)(t-c) + 3(1-t^2))");
-  check(GiNaC::expand(E1.subs(al == 0) - 3 * rt * rt).is_zero() && GiNaC::expand(E1.subs(al == 1) + 3 * rc * rc).is_zero(),
+        "step 5: dPhi/dalpha * alpha(1-alpha) Q = E1 = -8 Delta alpha^2 + (5 Delta - 6 r(t)^2) alpha + 3 r(t)^2, Delta "
+        "= r(c)^2 - r(t)^2");
+  check(
+      zero(Phi.diff(t) * Q * rt * (t - c) / 2 - E2),
+      "step 5: dPhi/dt * Q (1-t^2)(t-c)/2 = E2 = -4t(1-alpha)(1-t^2)^2(t-c) + Q ((1-t)(t-c) - 2(1+t)(t-c) + 3(1-t^2))");
+  check(GiNaC::expand(E1.subs(al == 0) - 3 * rt * rt).is_zero() &&
+            GiNaC::expand(E1.subs(al == 1) + 3 * rc * rc).is_zero(),
         "step 5: E1(alpha=0) = 3 r(t)^2 > 0, E1(alpha=1) = -3 r(c)^2 < 0: one root alpha in (0,1) for every c < t < 1");
   const ex Dform = GiNaC::pow(ex(9), 9) / (GiNaC::pow(ex(2), 14) * prod);
   {
@@ -390,20 +408,24 @@ int main() {
     const Blocks G3 = blocks_of(mm);
     const ex detMu = G3.H.determinant() * GiNaC::pow(G3.B.determinant(), 2) * G3.q * G3.q / 64;
     check(zero(16 / detMu - Dform),
-          "step 5: D(alpha, t; c) = det T^2 / det M_u = 9^9 / (2^14 (alpha(1-alpha))^3 Q^2 (1+c)^2 (1-c)^4 (1+t)^2 (1-t)^4 (t-c)^6)");
+          "step 5: D(alpha, t; c) = det T^2 / det M_u = 9^9 / (2^14 (alpha(1-alpha))^3 Q^2 (1+c)^2 (1-c)^4 (1+t)^2 "
+          "(1-t)^4 (t-c)^6)");
   }
   // The resultant and its factors.
   const ex P = GiNaC::expand(-39 * GiNaC::pow(c, 4) * t * t - 16 * GiNaC::pow(c, 4) * t - GiNaC::pow(c, 4) +
-                             48 * GiNaC::pow(c, 3) * GiNaC::pow(t, 3) + 6 * GiNaC::pow(c, 3) * t * t - 48 * GiNaC::pow(c, 3) * t -
-                             6 * GiNaC::pow(c, 3) + 39 * c * c * GiNaC::pow(t, 4) + 6 * c * c * GiNaC::pow(t, 3) + 48 * c * c * t * t +
-                             26 * c * c * t - 7 * c * c + 30 * c * GiNaC::pow(t, 5) + 6 * c * GiNaC::pow(t, 4) -
-                             108 * c * GiNaC::pow(t, 3) - 18 * c * t * t + 78 * c * t + 12 * c + 10 * GiNaC::pow(t, 5) -
-                             29 * GiNaC::pow(t, 4) - 26 * GiNaC::pow(t, 3) - 29 * t * t + 18);
+                             48 * GiNaC::pow(c, 3) * GiNaC::pow(t, 3) + 6 * GiNaC::pow(c, 3) * t * t -
+                             48 * GiNaC::pow(c, 3) * t - 6 * GiNaC::pow(c, 3) + 39 * c * c * GiNaC::pow(t, 4) +
+                             6 * c * c * GiNaC::pow(t, 3) + 48 * c * c * t * t + 26 * c * c * t - 7 * c * c +
+                             30 * c * GiNaC::pow(t, 5) + 6 * c * GiNaC::pow(t, 4) - 108 * c * GiNaC::pow(t, 3) -
+                             18 * c * t * t + 78 * c * t + 12 * c + 10 * GiNaC::pow(t, 5) - 29 * GiNaC::pow(t, 4) -
+                             26 * GiNaC::pow(t, 3) - 29 * t * t + 18);
   {
     const ex R = GiNaC::expand(GiNaC::resultant(E1, E2, al));
-    const ex trivial = GiNaC::pow(c - 1, 2) * GiNaC::pow(c + 1, 2) * GiNaC::pow(t - 1, 2) * GiNaC::pow(t - c, 2) * GiNaC::pow(t + 1, 2);
+    const ex trivial = GiNaC::pow(c - 1, 2) * GiNaC::pow(c + 1, 2) * GiNaC::pow(t - 1, 2) * GiNaC::pow(t - c, 2) *
+                       GiNaC::pow(t + 1, 2);
     const ex k = GiNaC::normal(R / (trivial * P));
-    std::cout << "  R(c,t) = Res_alpha(E1, E2): degree " << R.degree(t) << " in t, " << R.degree(c) << " in c, " << R.nops() << " terms\n";
+    std::cout << "  R(c,t) = Res_alpha(E1, E2): degree " << R.degree(t) << " in t, " << R.degree(c) << " in c, "
+              << R.nops() << " terms\n";
     std::cout << "  factored: " << sym::canonical_text(GiNaC::factor(R)) << "\n";
     check(is_rational(k) && GiNaC::expand(R - k * trivial * P).is_zero(),
           "step 5: R = Res_alpha(E1, E2) = 2 (c-1)^2 (c+1)^2 (t-1)^2 (t-c)^2 (t+1)^2 P(c,t)");
@@ -415,7 +437,8 @@ int main() {
   }
   // One root of P(c, .) in (c, 1) for every c in (-1, 1).
   {
-    check(GiNaC::expand(P.subs(t == c) - 6 * GiNaC::pow(c - 1, 2) * GiNaC::pow(c + 1, 2) * (13 * c * c + 2 * c + 3)).is_zero() &&
+    check(GiNaC::expand(P.subs(t == c) - 6 * GiNaC::pow(c - 1, 2) * GiNaC::pow(c + 1, 2) * (13 * c * c + 2 * c + 3))
+                  .is_zero() &&
               real_roots(13 * c * c + 2 * c + 3, c) == 0 && num((13 * c * c + 2 * c + 3).subs(c == 0)).is_positive(),
           "step 5: P(c,c) = 6 (c-1)^2 (c+1)^2 (13c^2+2c+3) > 0 on (-1,1) (13c^2+2c+3 has no real root)");
     check(GiNaC::expand(P.subs(t == 1) + 56 * GiNaC::pow(c - 1, 2) * GiNaC::pow(c + 1, 2)).is_zero(),
@@ -425,9 +448,11 @@ int main() {
     const ex rest = GiNaC::normal(Rd / known);
     const ex restq = GiNaC::expand(rest);
     bool poly = GiNaC::expand(rest * known - Rd).is_zero() && restq.is_polynomial(c);
-    std::cout << "  Res_t(P, dP/dt): degree " << Rd.degree(c) << " in c, factored: " << sym::canonical_text(GiNaC::factor(Rd)) << "\n";
+    std::cout << "  Res_t(P, dP/dt): degree " << Rd.degree(c)
+              << " in c, factored: " << sym::canonical_text(GiNaC::factor(Rd)) << "\n";
     check(poly && restq.degree(c) == 16 && real_roots(restq, c) == 0,
-          "step 5: Res_t(P, dP/dt) = (3c+1)(c+3)^2(c-1)^4(c+1)^4 f(c), f of degree 16 (times a constant) with no real root (Sturm)");
+          "step 5: Res_t(P, dP/dt) = (3c+1)(c+3)^2(c-1)^4(c+1)^4 f(c), f of degree 16 (times a constant) with no real "
+          "root (Sturm)");
     const ex Pm = GiNaC::expand(P.subs(c == -ex(1) / 3));
     check(Pm.degree(t) == 4 && !GiNaC::expand(GiNaC::resultant(Pm, Pm.diff(t), t)).is_zero(),
           "step 5: at c = -1/3 (leading coefficient 10(3c+1) = 0) P(-1/3, t) has degree 4 and no multiple root");
@@ -440,14 +465,17 @@ int main() {
   {
     std::vector<ex> mu;  // z-moments of the uniform sphere: z uniform on [-1, 1] (Archimedes)
     for (int k = 0; k <= 4; ++k) mu.push_back(GiNaC::integral(z, -1, 1, GiNaC::pow(z, k) / 2).eval_integ());
-    check(mu[0].is_equal(1) && mu[1].is_equal(0) && mu[2].is_equal(ex(1) / 3) && mu[3].is_equal(0) && mu[4].is_equal(ex(1) / 5),
+    check(mu[0].is_equal(1) && mu[1].is_equal(0) && mu[2].is_equal(ex(1) / 3) && mu[3].is_equal(0) &&
+              mu[4].is_equal(ex(1) / 5),
           "step 6: the uniform sphere has (m0..m4) = (1, 0, 1/3, 0, 1/5)");
     const matrix Mun = moment_matrix(mu);
     const matrix Msym = sym::symmetric_moment_matrix(ex(1) / 15);
     bool same = true;
     for (int i = 0; i < 9; ++i)
       for (int j = 0; j < 9; ++j) same = same && zero(Mun(i, j) - Msym(i, j));
-    check(same, "step 6: a rotation-invariant measure with these z-moments has the uniform moment matrix of Theorem 2 (b = 1/15)");
+    check(same,
+          "step 6: a rotation-invariant measure with these z-moments has the uniform moment matrix of Theorem 2 (b = "
+          "1/15)");
     const Blocks Gu = blocks_of(mu);
     check(num(Gu.H(0, 0)).is_positive() && num(Gu.H(0, 0) * Gu.H(1, 1) - Gu.H(0, 1) * Gu.H(1, 0)).is_positive() &&
               GiNaC::expand(Gu.H.determinant() - ex(4) / 135).is_zero(),
@@ -461,8 +489,8 @@ int main() {
     check(GiNaC::expand(L.determinant() - ex(2) / 45 * (5 * c * c + 2 * c - 1)).is_zero(),
           "step 6: its determinant is (2/45)(5c^2 + 2c - 1)");
     const ex other = (GiNaC::sqrt(ex(6)) - 1) / 5;  // the other root
-    check(zero((5 * c * c + 2 * c - 1).subs(c == cs)) && zero((5 * c * c + 2 * c - 1).subs(c == other)) && sign_in(cs + ex(1) / 3, 6) < 0 &&
-              sign_in(other + ex(1) / 3, 6) > 0,
+    check(zero((5 * c * c + 2 * c - 1).subs(c == cs)) && zero((5 * c * c + 2 * c - 1).subs(c == other)) &&
+              sign_in(cs + ex(1) / 3, 6) < 0 && sign_in(other + ex(1) / 3, 6) > 0,
           "step 6: 5c^2+2c-1 = 5 (c - c*)(c - (sqrt6-1)/5) and c* < -1/3 < (sqrt6-1)/5: PSD iff c <= c*");
     const ex k0 = L(0, 0) - L(0, 1) / ts, k1 = L(1, 0) - L(1, 1) / ts;
     check(zero(k0.subs(c == cs)) && zero(k1.subs(c == cs)),
@@ -474,21 +502,27 @@ int main() {
     const ex wr = sym::canonical(W(0, 0)), wt = sym::canonical(W(1, 0)), wp = sym::canonical(W(2, 0));
     bool moments_ok = true;
     for (int k = 0; k <= 4; ++k)
-      moments_ok = moments_ok && zero(wr * GiNaC::pow(cs, k) + wt * GiNaC::pow(ts, k) + wp - mu[static_cast<std::size_t>(k)]);
+      moments_ok =
+          moments_ok && zero(wr * GiNaC::pow(cs, k) + wt * GiNaC::pow(ts, k) + wp - mu[static_cast<std::size_t>(k)]);
     std::cout << "  c* = " << sym::canonical_text(cs) << ", t* = " << sym::canonical_text(ts) << "\n";
     std::cout << "  weights: rim " << sym::canonical_text(wr) << ", circle " << sym::canonical_text(wt) << ", pole "
               << sym::canonical_text(wp) << "\n";
-    check(moments_ok && zero(wr - (16 - GiNaC::sqrt(ex(6))) / 36) && zero(wt - (16 + GiNaC::sqrt(ex(6))) / 36) && zero(wp - ex(1) / 9),
-          "step 6: on {c*, t*, 1}, t* = (sqrt6-1)/5, the weights ((16-sqrt6)/36, (16+sqrt6)/36, 1/9) give moments (1, 0, 1/3, 0, 1/5)");
-    check(sign_in(wr, 6) > 0 && sign_in(wt, 6) > 0 && sign_in(ts - cs, 6) > 0 && sign_in(1 - ts, 6) > 0 && sign_in(cs + 1, 6) > 0,
+    check(moments_ok && zero(wr - (16 - GiNaC::sqrt(ex(6))) / 36) && zero(wt - (16 + GiNaC::sqrt(ex(6))) / 36) &&
+              zero(wp - ex(1) / 9),
+          "step 6: on {c*, t*, 1}, t* = (sqrt6-1)/5, the weights ((16-sqrt6)/36, (16+sqrt6)/36, 1/9) give moments (1, "
+          "0, 1/3, 0, 1/5)");
+    check(sign_in(wr, 6) > 0 && sign_in(wt, 6) > 0 && sign_in(ts - cs, 6) > 0 && sign_in(1 - ts, 6) > 0 &&
+              sign_in(cs + 1, 6) > 0,
           "step 6: the weights are positive and -1 < c* < t* < 1 (exact signs in Q(sqrt 6))");
     const ex as = wr * 9 / 8;
-    check(zero(as - (ex(1) / 2 - GiNaC::sqrt(ex(6)) / 32)), "step 6: its alpha* = 1/2 - sqrt6/32 (pole weight exactly 1/9)");
+    check(zero(as - (ex(1) / 2 - GiNaC::sqrt(ex(6)) / 32)),
+          "step 6: its alpha* = 1/2 - sqrt6/32 (pole weight exactly 1/9)");
     const GiNaC::exmap at{{al, as}, {t, ts}, {c, cs}};
     check(zero(E1.subs(at)) && zero(E2.subs(at)) && zero(P.subs(at)),
           "step 6: (alpha*, t*) solves E1 = E2 = 0 at c = c*, and P(c*, t*) = 0: the end of the family t(c)");
     check(zero(Dform.subs(at) - ex(61509375) / 4), "step 6: D(alpha*, t*; c*) = 61509375/4, the sphere's limit");
-    std::cout << "  theta* = arccos(c*) = " << GiNaC::evalf(GiNaC::acos(cs) * 180 / GiNaC::Pi) << " degrees (numerically)\n";
+    std::cout << "  theta* = arccos(c*) = " << GiNaC::evalf(GiNaC::acos(cs) * 180 / GiNaC::Pi)
+              << " degrees (numerically)\n";
   }
 
   // =============================================================================================
@@ -500,7 +534,8 @@ int main() {
       {"c = 0 (90 deg, hemisphere)", 0, 0, 0, numeric(58703203, 100000000)},
       {"c = -1/2 (120 deg)", numeric(-1, 2), numeric(-1, 2), -ex(1) / 2, numeric(36902257, 100000000)},
   };
-  check(s3low.is_positive() && s3low * s3low < numeric(3, 4) && (s3low + pow10(-50)) * (s3low + pow10(-50)) > numeric(3, 4),
+  check(s3low.is_positive() && s3low * s3low < numeric(3, 4) &&
+            (s3low + pow10(-50)) * (s3low + pow10(-50)) > numeric(3, 4),
         "step 7: c_low < sqrt(3)/2 < c_high = c_low + 10^-50 (exact squares)");
   const numeric sphere_limit = numeric(61509375, 4);
   for (const auto& cc : cases) {
@@ -552,7 +587,8 @@ int main() {
     bool proven = false;
     for (int tries = 0; tries < 6 && !proven; ++tries, eps *= 10) {
       const ex g = GiNaC::expand(9 * (1 + eps) - dhat);
-      proven = num(g.subs(z == cc.c_low)).is_positive() && num(g.subs(z == 1)).is_positive() && roots_between(g, z, cc.c_low, 1) == 0;
+      proven = num(g.subs(z == cc.c_low)).is_positive() && num(g.subs(z == 1)).is_positive() &&
+               roots_between(g, z, cc.c_low, 1) == 0;
       if (proven) break;
     }
     const numeric lower = Dhat / (1 + eps).power(9);
@@ -560,26 +596,32 @@ int main() {
     // t(c): the unique root of P(c, .) in (c, 1) lies within 10^-44 of t^ (P changes sign there).
     const ex Pc = P.subs(c == cc.c_exact);
     const int s_lo = sign_in(Pc.subs(t == th - pow10(-44)), 3), s_hi = sign_in(Pc.subs(t == th + pow10(-44)), 3);
-    std::cout << "    Newton: " << iterations << " steps; t^ = " << fixed(th, 45) << ", alpha^ = " << fixed(ah, 45) << "\n";
-    std::cout << "    weights (rim, circle, pole) = (" << fixed(ah * 8 / 9, 30) << ", " << fixed((1 - ah) * 8 / 9, 30) << ", 1/9)\n";
+    std::cout << "    Newton: " << iterations << " steps; t^ = " << fixed(th, 45) << ", alpha^ = " << fixed(ah, 45)
+              << "\n";
+    std::cout << "    weights (rim, circle, pole) = (" << fixed(ah * 8 / 9, 30) << ", " << fixed((1 - ah) * 8 / 9, 30)
+              << ", 1/9)\n";
     const numeric kappa = num(dhat.coeff(z, 4));
     const ex shape = GiNaC::expand(dhat - 9 - kappa * (z - cc.c_high) * (z - 1) * GiNaC::pow(z - th, 2));
     numeric off = 0;
     for (int k = 0; k <= 4; ++k) off = std::max(off, GiNaC::abs(num(shape.coeff(z, k))));
-    std::cout << "    d^ - 9 = kappa (z-c)(z-1)(z-t^)^2 up to coefficients below 1e-38, kappa = " << sci(kappa, 12, false) << "\n";
+    std::cout << "    d^ - 9 = kappa (z-c)(z-1)(z-t^)^2 up to coefficients below 1e-38, kappa = "
+              << sci(kappa, 12, false) << "\n";
     std::cout << "    sup d^ <= 9 (1 + eps), eps = " << sci(eps, 1, true) << "\n";
     std::cout << "    D limit in [" << sci(lower, 36, false) << ", " << sci(Dhat, 36, true) << "]\n";
-    std::cout << "    relative width < " << sci(width, 2, true) << "; limit / sphere's limit ~ " << sci(Dhat / sphere_limit, 12, false)
-              << "\n";
+    std::cout << "    relative width < " << sci(width, 2, true) << "; limit / sphere's limit ~ "
+              << sci(Dhat / sphere_limit, 12, false) << "\n";
     const std::string n = cc.name;
     check(ah.is_positive() && ah < 1 && th > cc.c_high && th < 1,
-          (n + ": xi^ (pole 1/9, rim (8/9) alpha^ at c_high >= c, circle (8/9)(1-alpha^) at t^) lies in the cap").c_str());
+          (n + ": xi^ (pole 1/9, rim (8/9) alpha^ at c_high >= c, circle (8/9)(1-alpha^) at t^) lies in the cap")
+              .c_str());
     check(rational_quartic, (n + ": d^(z) of the rational measure xi^ is an exact rational quartic").c_str());
     check(off < pow10(-38) && kappa.is_positive(),
-          (n + ": d^ - 9 - kappa (z-c)(z-1)(z-t^)^2 has coefficients below 1e-38, kappa > 0 (the shape of step 5)").c_str());
+          (n + ": d^ - 9 - kappa (z-c)(z-1)(z-t^)^2 has coefficients below 1e-38, kappa > 0 (the shape of step 5)")
+              .c_str());
     check(proven, (n + ": 9(1+eps) - d^(z) > 0 on [c_low, 1] (endpoint values and no root: Sturm, exact)").c_str());
     check(width < pow10(-30) && lower > sphere_limit,
-          (n + ": the enclosure [D(xi^)(1+eps)^-9, D(xi^)] has relative width < 1e-30 and lies above 61509375/4").c_str());
+          (n + ": the enclosure [D(xi^)(1+eps)^-9, D(xi^)] has relative width < 1e-30 and lies above 61509375/4")
+              .c_str());
     check(s_lo > 0 && s_hi < 0, (n + ": P(c, t^ - 1e-44) > 0 > P(c, t^ + 1e-44): |t(c) - t^| < 1e-44").c_str());
   }
   return scalcal::proofs::finish();

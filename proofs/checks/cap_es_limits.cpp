@@ -77,7 +77,8 @@ GiNaC::matrix circle(const ex& z) {
   GiNaC::matrix M = sym::moment_matrix(hexagon);
   for (int i = 0; i < 9; ++i)
     for (int j = 0; j < 9; ++j)
-      M(i, j) = GiNaC::expand(GiNaC::expand(M(i, j)).subs(GiNaC::pow(r, 2) == 1 - z * z, GiNaC::subs_options::algebraic));
+      M(i, j) =
+          GiNaC::expand(GiNaC::expand(M(i, j)).subs(GiNaC::pow(r, 2) == 1 - z * z, GiNaC::subs_options::algebraic));
   return M;
 }
 
@@ -110,7 +111,8 @@ int main() {
         "1 - T2(t)^2 = 4 t^2 (1 - t^2) >= 0 for |t| <= 1, i.e. on the cap");
   const ex E = (3 * GiNaC::pow(c, 4) + 36 * GiNaC::pow(c, 3) + 194 * c * c + 260 * c + 147) / GiNaC::pow(d, 4);
   const ex S = GiNaC::pow((3 + c) / d, 4);
-  check(GiNaC::normal((u.transpose().mul(u))(0, 0) - E).is_zero(), "|u|^2 = E(c) = (3c^4+36c^3+194c^2+260c+147)/(1-c)^4");
+  check(GiNaC::normal((u.transpose().mul(u))(0, 0) - E).is_zero(),
+        "|u|^2 = E(c) = (3c^4+36c^3+194c^2+260c+147)/(1-c)^4");
   check(GiNaC::normal(GiNaC::pow(a0 + a2, 2) - S).is_zero(), "(e6^T u)^2 = (a0 + a2)^2 = S(c) = ((3+c)/(1-c))^4");
 
   const GiNaC::matrix rim = circle(c), middle = circle((1 + c) / 2), pole = circle(ex(1));
@@ -134,8 +136,8 @@ int main() {
   for (int i = 0; i < 9; ++i)
     for (int j = 0; j < 9; ++j) {
       bool same = false;
-      for (const auto& b : blocks) same = same || (std::find(b.begin(), b.end(), i) != b.end() &&
-                                                   std::find(b.begin(), b.end(), j) != b.end());
+      for (const auto& b : blocks)
+        same = same || (std::find(b.begin(), b.end(), i) != b.end() && std::find(b.begin(), b.end(), j) != b.end());
       if (!same) pattern = pattern && GiNaC::normal(A(i, j)).is_zero();
     }
   check(pattern, "M_E is block diagonal: {x, zx}, {y, yz}, {xy}, {z, x^2, y^2, z^2}");
@@ -179,7 +181,8 @@ int main() {
   check(GiNaC::expand(cS * cS + 6 * cS + 1).is_zero(), "c_S = -3 + 2 sqrt 2 is a root of c^2 + 6c + 1");
   const numeric lo_S("-1/5");  // -0.2 < c_S
   const ex gap_yz = GiNaC::normal(S - Kx(1, 1));
-  check(roots_in(without_one(GiNaC::numer(gap_yz)), lo_S, 1) == 1 && positive_on(GiNaC::normal(gap_yz / (c * c + 6 * c + 1)), lo_S),
+  check(roots_in(without_one(GiNaC::numer(gap_yz)), lo_S, 1) == 1 &&
+            positive_on(GiNaC::normal(gap_yz / (c * c + 6 * c + 1)), lo_S),
         "K_66 - K_zx,zx = (c^2 + 6c + 1) times a factor positive on (-0.2, 1): >= 0 exactly for c >= c_S");
   check(positive_on(S - Kx(0, 0), lo_S) && positive_on(S - Kxy, lo_S) && positive_on(S - K4(0, 0), lo_S) &&
             positive_on(S - K4(1, 1), lo_S),
@@ -188,7 +191,9 @@ int main() {
         "S: the measure is symmetric in x <-> y");
 
   // The values the regions document quotes.
-  auto at = [](const ex& f, const numeric& v, const ex& want) { return GiNaC::normal(f.subs(c == v) - want).is_zero(); };
+  auto at = [](const ex& f, const numeric& v, const ex& want) {
+    return GiNaC::normal(f.subs(c == v) - want).is_zero();
+  };
   check(at(E, 0, 147) && at(S, 0, 81), "hemisphere (c = 0): E = 147, S = 81");
   check(at(E, numeric(1, 2), 5283) && at(S, numeric(1, 2), 2401), "60-degree cap (c = 1/2): E = 5283, S = 2401");
   check(at(wE[0], 0, numeric(53, 147)) && at(wE[1], 0, numeric(68, 147)) && at(wS[0], 0, numeric(1, 3)) &&

@@ -5,7 +5,10 @@
 #include <iostream>
 
 namespace scalcal::proofs {
-inline int& failures() { static int n = 0; return n; }
+inline int& failures() {
+  static int n = 0;
+  return n;
+}
 inline void check(bool ok, const char* claim) {
   std::cout << (ok ? "  ok    " : "  FAIL  ") << claim << "\n";
   if (!ok) ++failures();

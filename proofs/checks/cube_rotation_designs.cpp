@@ -77,9 +77,11 @@ int main() {
     for (int c = 0; c < 9 && proportional; ++c) {
       const ex diff = on_sphere(M(r, c) / 24 - Mu(r, c), x, y, z);
       const ex factor = GiNaC::expand(diff).coeff(x, 4).coeff(y, 0).coeff(z, 0) / q4;
-      proportional = on_sphere(diff - factor * q, x, y, z).is_zero() && !factor.has(x) && !factor.has(y) && !factor.has(z);
+      proportional =
+          on_sphere(diff - factor * q, x, y, z).is_zero() && !factor.has(x) && !factor.has(y) && !factor.has(z);
     }
-  check(proportional, "orbit moments / 24 - uniform moments = const * (x^4 + y^4 + z^4 - 3/5) on the sphere, entrywise");
+  check(proportional,
+        "orbit moments / 24 - uniform moments = const * (x^4 + y^4 + z^4 - 3/5) on the sphere, entrywise");
 
   // N = 24: p = (sqrt((5 + sqrt 5)/10), sqrt((5 - sqrt 5)/10), 0), where x^4 + y^4 = 3/5.
   const ex s5 = GiNaC::sqrt(ex(5));

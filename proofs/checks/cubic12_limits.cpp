@@ -37,7 +37,6 @@ matrix design_row(const Pt& e) {
   return matrix(P, 1, GiNaC::lst{x, y, z, x * x, y * y, z * z, x * y, y * z, z * x, x * x * x, y * y * y, z * z * z});
 }
 
-
 bool is_zero_matrix(const matrix& m) {
   for (unsigned r = 0; r < m.rows(); ++r)
     for (unsigned c = 0; c < m.cols(); ++c)
@@ -121,7 +120,6 @@ int exact_rank(matrix A) {
   return static_cast<int>(rank);
 }
 
-
 bool divides(long d, long n) { return n % d == 0; }
 
 matrix at(const matrix& m, const GiNaC::exmap& sub) { return canon(GiNaC::ex_to<matrix>(m.subs(sub))); }
@@ -171,7 +169,8 @@ int main() {
       ++count;
     }
   } while (std::next_permutation(perm.begin(), perm.end()));
-  check(count == 48 && signed_perm, "each of the 48 signed permutations g acts on h by a signed permutation matrix T_g");
+  check(count == 48 && signed_perm,
+        "each of the 48 signed permutations g acts on h by a signed permutation matrix T_g");
   check(equivariant, "h(g eta) = T_g h(eta) as polynomial identities");
   {
     const ex a4 = p4 / 3, a6 = p6 / 3;
@@ -180,7 +179,9 @@ int main() {
     for (int r = 0; r < P; ++r)
       for (int c = 0; c < P; ++c)
         if (!on_sphere(avg(r, c) / 48 - model(r, c), x, y, z).is_zero()) ok = false;
-    check(ok, "G-average of h h^T = blocks [[1/3,a4],[a4,a6]] x3, (a4-b)I+bJ, bI with a4=p4/3, a6=p6/3, b=(1/3-a4)/2 on the sphere");
+    check(ok,
+          "G-average of h h^T = blocks [[1/3,a4],[a4,a6]] x3, (a4-b)I+bJ, bI with a4=p4/3, a6=p6/3, b=(1/3-a4)/2 on "
+          "the sphere");
     const symbol A4("a4"), A6("a6"), B("b");
     const matrix dM = GiNaC::ex_to<matrix>(symmetric_model(A4, A6, B).diff(A6));
     bool loewner = true;
@@ -196,9 +197,11 @@ int main() {
     const ex E1 = v1 + v2 + v3, E2 = v1 * v2 + v2 * v3 + v3 * v1, E3 = v1 * v2 * v3;
     const ex P4 = v1 * v1 + v2 * v2 + v3 * v3, P6 = GiNaC::pow(v1, 3) + GiNaC::pow(v2, 3) + GiNaC::pow(v3, 3);
     const ex chord = P6 - ex(1) / 9 - ex(4) / 3 * (P4 - ex(1) / 3) + (E2 - 9 * E3) / 3;
-    check(GiNaC::expand(chord.subs(v3 == 1 - v1 - v2)).is_zero(), "p6 - 1/9 - (4/3)(p4 - 1/3) = -(e2 - 9 e3)/3 when u1 + u2 + u3 = 1");
+    check(GiNaC::expand(chord.subs(v3 == 1 - v1 - v2)).is_zero(),
+          "p6 - 1/9 - (4/3)(p4 - 1/3) = -(e2 - 9 e3)/3 when u1 + u2 + u3 = 1");
     const ex sos = v1 * GiNaC::pow(v2 - v3, 2) + v2 * GiNaC::pow(v3 - v1, 2) + v3 * GiNaC::pow(v1 - v2, 2);
-    check(GiNaC::expand(E1 * E2 - 9 * E3 - sos).is_zero(), "e1 e2 - 9 e3 = u1(u2-u3)^2 + u2(u3-u1)^2 + u3(u1-u2)^2 >= 0 (AM-GM)");
+    check(GiNaC::expand(E1 * E2 - 9 * E3 - sos).is_zero(),
+          "e1 e2 - 9 e3 = u1(u2-u3)^2 + u2(u3-u1)^2 + u3(u1-u2)^2 >= 0 (AM-GM)");
     bool zeros = true;
     for (const auto& p : fourteen()) {
       const GiNaC::exmap at{{x, p[0]}, {y, p[1]}, {z, p[2]}};
@@ -213,8 +216,9 @@ int main() {
   const ex a4 = (1 + 2 * lam) / 9, a6 = (1 + 8 * lam) / 27, b = (1 - lam) / 9;
   check(is_zero_matrix(M.sub(symmetric_model(a4, a6, b))),
         "M(xi_lambda) = symmetric form with a4 = (1+2l)/9, a6 = (1+8l)/27, b = (1-l)/9");
-  check(is_zero_exact(3 * a6 - (ex(1) / 9 + ex(4) / 3 * (3 * a4 - ex(1) / 3))) && is_zero_exact(b - (ex(1) / 3 - a4) / 2),
-        "xi_lambda lies on the chord (3 a6 = 1/9 + (4/3)(3 a4 - 1/3)) and b = (1/3 - a4)/2");
+  check(
+      is_zero_exact(3 * a6 - (ex(1) / 9 + ex(4) / 3 * (3 * a4 - ex(1) / 3))) && is_zero_exact(b - (ex(1) / 3 - a4) / 2),
+      "xi_lambda lies on the chord (3 a6 = 1/9 + (4/3)(3 a4 - 1/3)) and b = (1/3 - a4)/2");
   const matrix Bl(2, 2, GiNaC::lst{ex(1) / 3, a4, a4, a6});
   check(is_zero_exact(Bl.determinant() - 4 * lam * (1 - lam) / 81) && is_zero_exact(a4 - b - lam / 3),
         "det B = 4 l (1 - l)/81, a4 - b = l/3");
@@ -236,19 +240,24 @@ int main() {
 
   // ---- 4. D: log det M = const + 5 log l + 6 log(1 - l).
   const ex lD = ex(5) / 11;
-  check(is_zero_exact((5 / lam - 6 / (1 - lam)).subs(lam == lD)), "D: d/dl (5 log l + 6 log(1-l)) = 0 at l = 5/11 (max: strictly concave)");
+  check(is_zero_exact((5 / lam - 6 / (1 - lam)).subs(lam == lD)),
+        "D: d/dl (5 log l + 6 log(1-l)) = 0 at l = 5/11 (max: strictly concave)");
   const ex Dval = canonical(1 / at(M, lam, lD).determinant());
   std::cout << "  D limit = " << Dval << " ~ " << GiNaC::evalf(Dval) << "\n";
-  check(Dval.is_equal(GiNaC::numeric(4093910627611872177LL, 12800000)), "D limit = 4093910627611872177/12800000 ~ 3.19837e11");
-  check(is_zero_exact(Dval - GiNaC::pow(ex(3), 15) * GiNaC::pow(ex(11), 11) / (GiNaC::pow(ex(2), 12) * GiNaC::pow(ex(5), 5))),
+  check(Dval.is_equal(GiNaC::numeric(4093910627611872177LL, 12800000)),
+        "D limit = 4093910627611872177/12800000 ~ 3.19837e11");
+  check(is_zero_exact(Dval -
+                      GiNaC::pow(ex(3), 15) * GiNaC::pow(ex(11), 11) / (GiNaC::pow(ex(2), 12) * GiNaC::pow(ex(5), 5))),
         "D limit = 3^15 11^11 / (2^12 5^5) = 3^21 / (64 l^5 (1-l)^6) at l = 5/11");
-  check((lD / 6).is_equal(ex(5) / 66) && ((1 - lD) / 8).is_equal(ex(3) / 44), "D: weights 5/66 per axis point, 3/44 per cube point");
+  check((lD / 6).is_equal(ex(5) / 66) && ((1 - lD) / 8).is_equal(ex(3) / 44),
+        "D: weights 5/66 per axis point, 3/44 per cube point");
 
   // ---- 5. A.
   const ex trK = 3 + (57 + 78 * lam) / (2 * lam * (1 - lam));
   {
     const ex dA = GiNaC::normal(trK.diff(lam));
-    const ex ratio = GiNaC::normal(dA * 2 * GiNaC::pow(lam, 2) * GiNaC::pow(1 - lam, 2) / (26 * lam * lam + 38 * lam - 19));
+    const ex ratio =
+        GiNaC::normal(dA * 2 * GiNaC::pow(lam, 2) * GiNaC::pow(1 - lam, 2) / (26 * lam * lam + 38 * lam - 19));
     check(ratio.is_equal(3), "A: d/dl tr M^-1 = 3 (26 l^2 + 38 l - 19) / (2 l^2 (1-l)^2)");
   }
   const ex s95 = GiNaC::sqrt(ex(95));
@@ -307,7 +316,8 @@ int main() {
       if (!basis[k].second.is_equal(ex(1) / 39))
         others = others && GiNaC::ex_to<GiNaC::numeric>(canonical(basis[k].second - ex(1) / 39)).is_positive();
     check(others && mu2.is_equal(ex(55) / 117),
-          "E: the other eigenvalues 55/117, 15/234, 11/78, 1/3 all exceed 1/39: lambda_min M(11/26) = 1/39, E limit = 39");
+          "E: the other eigenvalues 55/117, 15/234, 11/78, 1/3 all exceed 1/39: lambda_min M(11/26) = 1/39, E limit = "
+          "39");
   }
 
   // ---- 7. S: the cubic diagonal dominates and is minimal at l = 1/2.
@@ -352,7 +362,8 @@ int main() {
       Eh(i, 9 + i) = Eh(9 + i, i) = ex(-6) / 39;
       Eh(9 + i, 9 + i) = ex(9) / 39;
     }
-    check(is_zero_exact(Eh.trace() - 1), "E: Ehat = (1/3) sum_axes v v^T, v = (2,-3)/sqrt13, is PSD (rank-1 blocks) with trace 1");
+    check(is_zero_exact(Eh.trace() - 1),
+          "E: Ehat = (1/3) sum_axes v v^T, v = (2,-3)/sqrt13, is PSD (rank-1 blocks) with trace 1");
     check(is_zero_exact(Eh.mul(at(M, lam, lE)).trace() - ex(1) / 39), "E: tr(Ehat M*) = 1/39 = lambda_min(M*)");
     certify("E", ex(1) / 39, Eh, ex(1) / 13);
   }
@@ -363,7 +374,7 @@ int main() {
     const matrix Q = KS.mul(W).mul(KS);
     check(is_zero_exact(W.mul(KS).trace() - 27), "S: W = 1/3 on the cubic rows, trace 1, tr(W M*^-1) = 27");
     check(is_zero_exact(on_sphere(quad(h, Q) - 27 * (u1 * GiNaC::pow(3 * u1 - 2, 2) + u2 * GiNaC::pow(3 * u2 - 2, 2) +
-                                                       u3 * GiNaC::pow(3 * u3 - 2, 2)),
+                                                     u3 * GiNaC::pow(3 * u3 - 2, 2)),
                                   x, y, z)),
           "S: h^T K W K h = 27 sum u (3u - 2)^2 on the sphere");
     certify("S", 27, Q, 81);
@@ -390,7 +401,8 @@ int main() {
       for (int k = 0; k < 8; ++k) Wm(j, k) = canonical(hs[6 + k](walsh[j].first, 0) * hs[6 + k](walsh[j].second, 0));
     }
     check(axes_zero && exact_rank(Wm) == 8,
-          "the entries xy.xy, x.y^2, y.z^2, z.x^2, x.y, y.z, z.x, x.yz vanish on the axes and carry the 8 Walsh functions (rank 8)");
+          "the entries xy.xy, x.y^2, y.z^2, z.x^2, x.y, y.z, z.x, x.yz vanish on the axes and carry the 8 Walsh "
+          "functions (rank 8)");
   }
   {
     bool d132 = true, d624 = true, d48 = true;
@@ -405,7 +417,8 @@ int main() {
   }
   // (b) E and S on the 14 points: the (x, x^3) principal block is W pp^T + C qq^T.
   const symbol Wx("W"), C("C");
-  const matrix p(2, 1, GiNaC::lst{1, 1}), q(2, 1, GiNaC::lst{1 / GiNaC::sqrt(ex(3)), 1 / GiNaC::pow(GiNaC::sqrt(ex(3)), 3)});
+  const matrix p(2, 1, GiNaC::lst{1, 1}),
+      q(2, 1, GiNaC::lst{1 / GiNaC::sqrt(ex(3)), 1 / GiNaC::pow(GiNaC::sqrt(ex(3)), 3)});
   const matrix Bwc = canon(p.mul(p.transpose()).mul_scalar(Wx).add(q.mul(q.transpose()).mul_scalar(C)));
   {
     std::vector<symbol> ws;
@@ -417,11 +430,14 @@ int main() {
     const matrix blk(2, 2, GiNaC::lst{Mw(0, 0), Mw(0, 9), Mw(9, 0), Mw(9, 9)});
     check(is_zero_matrix(blk.sub(at(Bwc, GiNaC::exmap{{Wx, ws[0] + ws[1]}, {C, Ctot}}))),
           "on the 14 points the (x, x^3) block is W_x [[1,1],[1,1]] + C [[1/3,1/9],[1/9,1/27]]");
-    check(is_zero_matrix(at(Bwc, GiNaC::exmap{{Wx, lam / 3}, {C, 1 - lam}}).sub(Bl)), "with W = l/3, C = 1 - l the block is B(l)");
+    check(is_zero_matrix(at(Bwc, GiNaC::exmap{{Wx, lam / 3}, {C, 1 - lam}}).sub(Bl)),
+          "with W = l/3, C = 1 - l the block is B(l)");
   }
   {
-    const ex dE = canonical(at(Bwc, C, ex(15) / 26).sub(matrix(2, 2, GiNaC::lst{ex(1) / 39, 0, 0, ex(1) / 39})).determinant());
-    check(is_zero_exact(dE - (dE.coeff(Wx, 1)) * (Wx - ex(11) / 78)) && !is_zero_exact(dE.coeff(Wx, 1)) && dE.degree(Wx) == 1,
+    const ex dE =
+        canonical(at(Bwc, C, ex(15) / 26).sub(matrix(2, 2, GiNaC::lst{ex(1) / 39, 0, 0, ex(1) / 39})).determinant());
+    check(is_zero_exact(dE - (dE.coeff(Wx, 1)) * (Wx - ex(11) / 78)) && !is_zero_exact(dE.coeff(Wx, 1)) &&
+              dE.degree(Wx) == 1,
           "E: at C = 15/26, det(block - I/39) is linear in W with its only root W = 11/78");
     // Eigenvector equations M(w) vt_i = vt_i/39, vt_i = 2 e_i - 3 e_{9+i}: rank 14 in the weights.
     matrix A(36, 14);
@@ -439,13 +455,15 @@ int main() {
       vt(i, 0) = 2, vt(9 + i, 0) = -3;
       sol = sol && is_zero_matrix(ME.mul(vt).sub(vt.mul_scalar(ex(1) / 39)));
     }
-    check(sol && is_zero_matrix(ME.sub(at(M, lam, lE))), "E: the unique solution is 11/156 per axis point, 15/208 per cube point (= xi_{11/26})");
+    check(sol && is_zero_matrix(ME.sub(at(M, lam, lE))),
+          "E: the unique solution is 11/156 per axis point, 15/208 per cube point (= xi_{11/26})");
   }
   {
     const matrix Bs = Bwc;
     check(is_zero_exact(Bs(0, 0) / Bs.determinant() - (ex(27) / (4 * C) + ex(9) / (4 * Wx))),
           "S: 1/min_a E[(x^3 - a x)^2] = B11/det B = 27/(4C) + 9/(4W) on the 14 points");
-    check(is_zero_exact(ex(27) / (4 * C) + ex(27) / (4 * (1 - C)) - 27 - 27 * GiNaC::pow(1 - 2 * C, 2) / (4 * C * (1 - C))),
+    check(is_zero_exact(ex(27) / (4 * C) + ex(27) / (4 * (1 - C)) - 27 -
+                        27 * GiNaC::pow(1 - 2 * C, 2) / (4 * C * (1 - C))),
           "S: 27/(4C) + 27/(4(1-C)) - 27 = 27(1-2C)^2/(4C(1-C)): C = 1/2 forced (then W_x = 1/6 by strict Jensen)");
     const matrix B6 = at(Bs, GiNaC::exmap{{Wx, ex(1) / 6}, {C, ex(1) / 2}});
     const ex alpha = canonical(B6(0, 1) / B6(0, 0));
@@ -467,12 +485,15 @@ int main() {
       ut12(i, 0) = ex(-2) / 3, ut12(9 + i, 0) = 1, e(9 + i, 0) = ex(1) / 27;
       sol = sol && is_zero_matrix(MS.mul(ut12).sub(e));
     }
-    check(sol && is_zero_matrix(MS.sub(at(M, lam, lS))), "S: the unique solution is 1/12 per axis point, 1/16 per cube point (= xi_{1/2})");
+    check(sol && is_zero_matrix(MS.sub(at(M, lam, lS))),
+          "S: the unique solution is 1/12 per axis point, 1/16 per cube point (= xi_{1/2})");
   }
   {
     bool none = true;
     for (long N = 1; N <= 40; ++N) none = none && !divides(132, N) && !divides(624, N) && !divides(48, N);
-    check(none, "no program with N <= 40 attains D, E or S (132, 624, 48 do not divide N); A is never attained (l_A irrational)");
+    check(none,
+          "no program with N <= 40 attains D, E or S (132, 624, 48 do not divide N); A is never attained (l_A "
+          "irrational)");
   }
   return scalcal::proofs::finish();
 }

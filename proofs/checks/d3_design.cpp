@@ -102,8 +102,9 @@ int main() {
       spanned = sym::is_zero_exact(on_sphere(rest.subs(solution), x, y, z));
       for (int k = 0; k < 4; ++k) A[k][9 * r + c] = unknowns.op(k).subs(solution);
     }
-  check(spanned, "O(p) - 6 M_u = sum_k A_k J_k(p) on the sphere, A_k constant (J = z^2-1/3, z^4-1/5, "
-                 "x^3-3xy^2, z(3x^2y-y^3))");
+  check(spanned,
+        "O(p) - 6 M_u = sum_k A_k J_k(p) on the sphere, A_k constant (J = z^2-1/3, z^4-1/5, "
+        "x^3-3xy^2, z(3x^2y-y^3))");
   bool used = false;  // the identity is not vacuous: the m = 3 invariants enter M
   for (int e = 0; e < 81; ++e) used = used || !A[2][e].is_zero() || !A[3][e].is_zero();
   check(used, "the m = 3 invariants x^3-3xy^2 and z(3x^2y-y^3) enter M (A_3, A_4 nonzero)");

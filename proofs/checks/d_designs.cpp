@@ -28,8 +28,10 @@ bool is_uniform(const std::string& family, const std::vector<std::string>& param
 int main() {
   check(is_uniform("icosahedral", {}), "icosahedral jig (N = 20): M/N = M_u exactly");
   check(is_uniform("dodecahedral", {}), "dodecahedral jig (N = 12): M/N = M_u exactly");
-  check(is_uniform("octahedral", {"axes=1", "edges=2", "diagonals=0"}), "octahedral(1, 2, 0) (N = 30): M/N = M_u exactly");
-  check(!is_uniform("octahedral", {"axes=1", "edges=1", "diagonals=0"}), "octahedral(1, 1, 0) (N = 18) is not a 4-design");
+  check(is_uniform("octahedral", {"axes=1", "edges=2", "diagonals=0"}),
+        "octahedral(1, 2, 0) (N = 30): M/N = M_u exactly");
+  check(!is_uniform("octahedral", {"axes=1", "edges=1", "diagonals=0"}),
+        "octahedral(1, 1, 0) (N = 18) is not a 4-design");
   // N = 9: P = H M^-1 H^T = I, so K(t_ij) = 0 off the diagonal: 15 t^2 + 6 t - 3 = 0.
   const GiNaC::symbol t("t");
   const ex kern = (15 * t * t + 6 * t - 3) / 2;

@@ -24,8 +24,9 @@ ex on_sphere(const ex& e, const symbol& x, const symbol& y, const symbol& z) {
 int main() {
   const symbol b("b");
   const auto pieces = sym::criterion_pieces(scalcal::CriterionKind::D, b);
-  check(pieces.size() == 1 && sym::is_zero_exact(pieces[0] - 81 / (GiNaC::pow(ex(1) / 3 - 3 * b, 2) * GiNaC::pow(b, 3))),
-        "1/det(M/N) = 81 / ((1/3 - 3b)^2 b^3) for the symmetric measure");
+  check(
+      pieces.size() == 1 && sym::is_zero_exact(pieces[0] - 81 / (GiNaC::pow(ex(1) / 3 - 3 * b, 2) * GiNaC::pow(b, 3))),
+      "1/det(M/N) = 81 / ((1/3 - 3b)^2 b^3) for the symmetric measure");
   const auto lim = sym::symbolic_limit(scalcal::CriterionKind::D);
   check(sym::is_zero_exact(lim.value - ex(61509375) / 4) && sym::is_zero_exact(lim.b - ex(1) / 15),
         "minimum over b in (0, 1/9) is 61509375/4 at b = 1/15");
@@ -33,7 +34,8 @@ int main() {
   // E[x^2 y^2] = (1 - 3 E[x^4]) / 6 = 1/15: the D-optimal symmetric measure is the uniform one.
   const symbol t("t");
   const ex ez4 = GiNaC::integral(t, -1, 1, GiNaC::pow(t, 4) / 2).eval_integ();
-  check(ez4.is_equal(ex(1) / 5) && sym::is_zero_exact((1 - 3 * ez4) / 6 - lim.b), "uniform sphere moments give b = 1/15");
+  check(ez4.is_equal(ex(1) / 5) && sym::is_zero_exact((1 - 3 * ez4) / 6 - lim.b),
+        "uniform sphere moments give b = 1/15");
   // numeric/limits.hpp states the same value.
   const auto stated = scalcal::criterion_limit<double>(scalcal::CriterionKind::D);
   GiNaC::parser reader;
@@ -45,7 +47,8 @@ int main() {
   const GiNaC::matrix h = sym::design_row({x, y, z});
   const GiNaC::matrix hx = sym::design_row({u, v, w});
   const ex d = h.transpose().mul(Ki).mul(h)(0, 0);
-  check(on_sphere(d - 9, x, y, z).is_zero(), "h(eta)^T Mu^-1 h(eta) - 9 == 0 identically on the sphere (sensitivity constant)");
+  check(on_sphere(d - 9, x, y, z).is_zero(),
+        "h(eta)^T Mu^-1 h(eta) - 9 == 0 identically on the sphere (sensitivity constant)");
   const ex kern = h.transpose().mul(Ki).mul(hx)(0, 0);
   const ex tt = x * u + y * v + z * w;
   ex diff = on_sphere(kern - (15 * tt * tt + 6 * tt - 3) / 2, x, y, z);

@@ -53,18 +53,26 @@ int main() {
   }
   bool rot5 = true;
   for (int k : {5, 6, 7, 8, 12, 97})
-    for (const char* ph : {"0", "13", "p"}) rot5 = rot5 && equals_model(member("rotation", {"k=" + std::to_string(k), std::string("phase=") + ph}), ex(1) / 24);
+    for (const char* ph : {"0", "13", "p"})
+      rot5 =
+          rot5 && equals_model(member("rotation", {"k=" + std::to_string(k), std::string("phase=") + ph}), ex(1) / 24);
   check(rot5, "rotation k = 5, 6, 7, 8, 12, 97, phase 0, 13 deg and symbolic: M = 3k * model(1/24)");
   check(!equals_model(member("rotation", {"k=4", "phase=0"}), ex(1) / 24) &&
             !equals_model(member("rotation", {"k=4", "phase=45"}), ex(1) / 24) &&
             !equals_model(member("rotation", {"k=3", "phase=0"}), ex(1) / 24),
         "rotation k = 3, 4 differ from k >= 5");
-  check(equals_model(member("rotation", {"k=4", "phase=45"}), ex(1) / 12), "rotation k = 4, phase 45: the 12 edges, b = 1/12 (attains E = 12)");
+  check(equals_model(member("rotation", {"k=4", "phase=45"}), ex(1) / 12),
+        "rotation k = 4, phase 45: the 12 edges, b = 1/12 (attains E = 12)");
   // Lower bound on examples: each criterion of each member is >= its limit.
   bool above = true;
   for (const auto& [name, params] : std::vector<std::pair<std::string, std::vector<std::string>>>{
-           {"octahedral", {}}, {"octahedral", {"axes=2", "edges=1", "diagonals=3"}}, {"rotation", {"k=3", "phase=10"}},
-           {"rotation", {"k=4", "phase=10"}}, {"rotation", {"k=9"}}, {"dodecahedral", {}}, {"icosahedral", {}}}) {
+           {"octahedral", {}},
+           {"octahedral", {"axes=2", "edges=1", "diagonals=3"}},
+           {"rotation", {"k=3", "phase=10"}},
+           {"rotation", {"k=4", "phase=10"}},
+           {"rotation", {"k=9"}},
+           {"dodecahedral", {}},
+           {"icosahedral", {}}}) {
     const auto in = member(name, params);
     const auto c = sym::exact_criteria(in.M, in.N);
     for (auto k : scalcal::kCriteria) {

@@ -36,14 +36,16 @@ bool invariant(const std::vector<sym::WeightedPoint>& pts, const GiNaC::matrix& 
 int main() {
   const symbol a("a"), b("b"), c("c"), d("d");
   const ex n = a * a + b * b + c * c + d * d;
-  const GiNaC::matrix R(3, 3, GiNaC::lst{a * a + b * b - c * c - d * d, 2 * (b * c - a * d), 2 * (b * d + a * c),
-                                         2 * (b * c + a * d), a * a - b * b + c * c - d * d, 2 * (c * d - a * b),
-                                         2 * (b * d - a * c), 2 * (c * d + a * b), a * a - b * b - c * c + d * d});
+  const GiNaC::matrix R(3, 3,
+                        GiNaC::lst{a * a + b * b - c * c - d * d, 2 * (b * c - a * d), 2 * (b * d + a * c),
+                                   2 * (b * c + a * d), a * a - b * b + c * c - d * d, 2 * (c * d - a * b),
+                                   2 * (b * d - a * c), 2 * (c * d + a * b), a * a - b * b - c * c + d * d});
   const GiNaC::matrix RRt = R.mul(R.transpose());
   bool orth = true;
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) orth = orth && GiNaC::expand(RRt(i, j) - (i == j ? n * n : ex(0))).is_zero();
-  check(orth && GiNaC::expand(R.determinant() - GiNaC::pow(n, 3)).is_zero(), "R(q) = R~/|q|^2 is a rotation for every q != 0");
+  check(orth && GiNaC::expand(R.determinant() - GiNaC::pow(n, 3)).is_zero(),
+        "R(q) = R~/|q|^2 is a rotation for every q != 0");
   check(invariant(sym::dodecahedral_points(), R, n), "dodecahedral jig: H^T H unchanged by every rotation R(q)");
   check(invariant(sym::icosahedral_points(), R, n), "icosahedral jig: H^T H unchanged by every rotation R(q)");
   // Control: the six axis positions (a 3-design, not a 4-design) must fail the same test.

@@ -40,7 +40,8 @@ bool design(const std::vector<sym::WeightedPoint>& pts, int t) {
 ex fourth_norm(const std::vector<sym::WeightedPoint>& pts) {
   ex s = 0;
   for (const auto& u : pts)
-    for (const auto& v : pts) s += GiNaC::expand(GiNaC::pow(u.eta[0] * v.eta[0] + u.eta[1] * v.eta[1] + u.eta[2] * v.eta[2], 4));
+    for (const auto& v : pts)
+      s += GiNaC::expand(GiNaC::pow(u.eta[0] * v.eta[0] + u.eta[1] * v.eta[1] + u.eta[2] * v.eta[2], 4));
   return sym::canonical(s / static_cast<long>(pts.size() * pts.size()));
 }
 
@@ -50,8 +51,10 @@ GiNaC::matrix representation(const GiNaC::matrix& R) {
   const GiNaC::symbol x("x"), y("y"), z("z");
   const ex v[3] = {R(0, 0) * x + R(0, 1) * y + R(0, 2) * z, R(1, 0) * x + R(1, 1) * y + R(1, 2) * z,
                    R(2, 0) * x + R(2, 1) * y + R(2, 2) * z};
-  const ex rotated[9] = {v[0], v[1], v[2], v[0] * v[0], v[1] * v[1], v[2] * v[2], v[0] * v[1], v[1] * v[2], v[2] * v[0]};
-  const ex basis[9][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {2, 0, 0}, {0, 2, 0}, {0, 0, 2}, {1, 1, 0}, {0, 1, 1}, {1, 0, 1}};
+  const ex rotated[9] = {v[0],        v[1],        v[2],        v[0] * v[0], v[1] * v[1],
+                         v[2] * v[2], v[0] * v[1], v[1] * v[2], v[2] * v[0]};
+  const ex basis[9][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {2, 0, 0}, {0, 2, 0},
+                          {0, 0, 2}, {1, 1, 0}, {0, 1, 1}, {1, 0, 1}};
   GiNaC::matrix T(9, 9);
   for (int r = 0; r < 9; ++r) {
     const ex e = GiNaC::expand(rotated[r]);
@@ -76,7 +79,8 @@ int main() {
     const GiNaC::matrix Rx(3, 3, GiNaC::lst{1, 0, 0, 0, c, -s, 0, s, c});
     for (const auto& [R, name] : {std::pair{Rz, "z"}, std::pair{Rx, "x"}}) {
       const ex det = GiNaC::expand(representation(R).determinant());
-      const ex reduced = GiNaC::expand(det.subs(GiNaC::pow(s, 2) == 1 - GiNaC::pow(c, 2), GiNaC::subs_options::algebraic));
+      const ex reduced =
+          GiNaC::expand(det.subs(GiNaC::pow(s, 2) == 1 - GiNaC::pow(c, 2), GiNaC::subs_options::algebraic));
       check(GiNaC::expand(reduced - 1).is_zero(),
             (std::string("det T(R) = 1 for every turn about ") + name + ": D is the same in every mounting").c_str());
     }
@@ -84,7 +88,7 @@ int main() {
   const ex d_limit = ex(61509375) / 4;
   const ex target_a = sym::canonical((ex(225) - 96 * GiNaC::sqrt(ex(2))) / 441);  // 1/3 - 4b + 30b^2 at b_A
   check(sym::is_zero_exact(target_a - sym::canonical(ex(1) / 3 - 4 * ((3 - GiNaC::sqrt(ex(2))) / 21) +
-                                                       30 * GiNaC::pow((3 - GiNaC::sqrt(ex(2))) / 21, 2))),
+                                                     30 * GiNaC::pow((3 - GiNaC::sqrt(ex(2))) / 21, 2))),
         "the A optimum (E[x^2 y^2] = (3 - sqrt 2)/21) has fourth-moment norm (225 - 96 sqrt 2)/441");
   for (const auto& j : sym::printable_jigs()) {
     const std::string name = "jig:" + j.name + ": ";
@@ -93,9 +97,11 @@ int main() {
     if (icosahedral) {
       check(design(j.normals, 5), (name + "a 5-design: H^T H/N is the sphere's in every mounting").c_str());
       const auto c = sym::exact_criteria(sym::moment_matrix(j.normals), static_cast<long>(j.normals.size()));
-      check(sym::is_zero_exact(c.at("D").value() - d_limit), (name + "D = 61509375/4, the limit, in every mounting").c_str());
+      check(sym::is_zero_exact(c.at("D").value() - d_limit),
+            (name + "D = 61509375/4, the limit, in every mounting").c_str());
       // By hand at b = 1/15: A = 12 + 2/(1/3 - 3b) + 3/b = 72; E = S = 1/b = 15.
-      check(sym::is_zero_exact(c.at("A").value() - 72) && sym::is_zero_exact(c.at("E").value() - 15) && sym::is_zero_exact(c.at("S").value() - 15),
+      check(sym::is_zero_exact(c.at("A").value() - 72) && sym::is_zero_exact(c.at("E").value() - 15) &&
+                sym::is_zero_exact(c.at("S").value() - 15),
             (name + "A = 72, E = 15, S = 15 in every mounting: above 45+18 sqrt 2, 12, 6+3 sqrt 3").c_str());
     } else {
       ex quartic = 0;
@@ -107,7 +113,8 @@ int main() {
     check(!sym::is_zero_exact(own - target_a),
           (name + "fourth-moment norm " + sym::canonical_text(own) + " != the A optimum's: never A's limit").c_str());
     if (j.normals.size() < 9)
-      check(true, (name + std::to_string(j.normals.size()) + " faces < 9 parameters: rank-deficient in every mounting").c_str());
+      check(true, (name + std::to_string(j.normals.size()) + " faces < 9 parameters: rank-deficient in every mounting")
+                      .c_str());
   }
   // E's limit at the default mounting of the rhombic dodecahedron (its faces are the 12 edge positions).
   const auto& rd = sym::printable_jigs()[8];

@@ -6,12 +6,10 @@
 namespace scalcal::proofs {
 
 // The unique form p0(x, y) + z p1(x, y) of e modulo x^2 + y^2 + z^2 = 1.
-inline GiNaC::ex on_sphere(const GiNaC::ex& e, const GiNaC::symbol& x, const GiNaC::symbol& y,
-                           const GiNaC::symbol& z) {
+inline GiNaC::ex on_sphere(const GiNaC::ex& e, const GiNaC::symbol& x, const GiNaC::symbol& y, const GiNaC::symbol& z) {
   GiNaC::ex p = GiNaC::expand(e);
   for (int pass = 0; pass < 20; ++pass) {
-    const GiNaC::ex q =
-        GiNaC::expand(p.subs(GiNaC::pow(z, 2) == 1 - x * x - y * y, GiNaC::subs_options::algebraic));
+    const GiNaC::ex q = GiNaC::expand(p.subs(GiNaC::pow(z, 2) == 1 - x * x - y * y, GiNaC::subs_options::algebraic));
     if (q.is_equal(p)) break;
     p = q;
   }

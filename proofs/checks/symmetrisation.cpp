@@ -62,7 +62,8 @@ int main() {
     }
   check(equal, "G-average of h h^T = diag(I/3, (a-b)I + bJ, bI), a = 1/3 - 2b, identically on the sphere");
   // b ranges over [0, 1/9]: (x^2 - y^2)^2 >= 0 gives E[x^4] >= E[x^2 y^2], i.e. 1/3 - 2b >= b.
-  check(GiNaC::expand(GiNaC::pow(x * x - y * y, 2) - (GiNaC::pow(x, 4) + GiNaC::pow(y, 4) - 2 * x * x * y * y)).is_zero(),
-        "(x^2 - y^2)^2 = x^4 + y^4 - 2 x^2 y^2, so a >= b, b <= 1/9");
+  check(
+      GiNaC::expand(GiNaC::pow(x * x - y * y, 2) - (GiNaC::pow(x, 4) + GiNaC::pow(y, 4) - 2 * x * x * y * y)).is_zero(),
+      "(x^2 - y^2)^2 = x^4 + y^4 - 2 x^2 y^2, so a >= b, b <= 1/9");
   return scalcal::proofs::finish();
 }

@@ -13,7 +13,8 @@ namespace {
 
 std::vector<WeightedPoint> octahedral_points(const ex& axes, const ex& edges, const ex& diagonals) {
   std::vector<WeightedPoint> pts = axis_orbit(axes);
-  for (const auto& more : {edge_orbit(edges), diagonal_orbit(diagonals)}) pts.insert(pts.end(), more.begin(), more.end());
+  for (const auto& more : {edge_orbit(edges), diagonal_orbit(diagonals)})
+    pts.insert(pts.end(), more.begin(), more.end());
   return pts;
 }
 

@@ -112,7 +112,9 @@ std::vector<WeightedPoint> oriented(const GiNaC::matrix& O, const std::vector<We
 }
 
 GiNaC::matrix orientation_matrix(const std::string& text, GiNaC::parser& reader) {
-  auto fail = [&](const std::string& why) { return InputError("--param", 0, "orientation=" + display_name(text) + ": " + why); };
+  auto fail = [&](const std::string& why) {
+    return InputError("--param", 0, "orientation=" + display_name(text) + ": " + why);
+  };
   auto components = [&](std::size_t from, std::size_t count) {
     std::vector<ex> v;
     std::size_t start = from;

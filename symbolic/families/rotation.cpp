@@ -34,7 +34,7 @@ ex rotation_moment(int k, const ex& phi, const int (&e)[3]) {
   ex total = 0;
   for (int axis = 0; axis < 3; ++axis) {
     const int a = (axis + 2) % 3, ic = (a + 1) % 3, is = (a + 2) % 3;  // cos and sin slots
-    if (e[a] != 0) continue;  // the ring has coordinate a equal to 0
+    if (e[a] != 0) continue;                                           // the ring has coordinate a equal to 0
     total += ring_sum(e[ic], e[is], k, phi);
   }
   return canonical(total);
@@ -71,8 +71,7 @@ std::vector<Family> rotation_families() {
     const int k = integer_param(p, "k", 3, 100000);
     // For k = 3, 4 the criteria are rational functions of cos and sin of 3 or 4 phase, too
     // large to simplify in reasonable time; k >= 5 does not depend on the phase at all.
-    if (k < 5 && !is_number(p.at("phase")))
-      throw InputError("--param", 0, "phase must be a number when k = 3 or 4");
+    if (k < 5 && !is_number(p.at("phase"))) throw InputError("--param", 0, "phase must be a number when k = 3 or 4");
     return rotation_instance(k, p.at("phase"));
   };
   f.numeric = [](const ParamMap& p) -> std::optional<Program> {

@@ -13,14 +13,18 @@ namespace {
 using Json = nlohmann::json;
 
 std::string program_with(const std::string& name, const std::string& region) {
-  return write_file(name, "# region: " + region + "\nx,y,z\n1,0,0\n-1,0,0\n0,1,0\n0,-1,0\n0,0,1\n0,0,-1\n"
-                          "1,1,0\n1,-1,0\n0,1,1\n0,1,-1\n1,0,1\n-1,0,1\n");
+  return write_file(name, "# region: " + region +
+                              "\nx,y,z\n1,0,0\n-1,0,0\n0,1,0\n0,-1,0\n0,0,1\n0,0,-1\n"
+                              "1,1,0\n1,-1,0\n0,1,1\n0,1,-1\n1,0,1\n-1,0,1\n");
 }
 
 TEST(CalibrateRegionCli, TheRegionComesFromTheProgramOrTheLog) {
-  const std::string program = program_with("carried.csv", "cap:180"), other = program_with("other.csv", "cap:180:1,0,0");
+  const std::string program = program_with("carried.csv", "cap:180"),
+                    other = program_with("other.csv", "cap:180:1,0,0");
   const std::string log = (scratch_dir() / "carried_log.csv").string();
-  ASSERT_EQ(run_cli("simulate --program " + program + " --noise 1e-3 --log " + log + " --still 2 --dwell 2 --rate 50").status, 0);
+  ASSERT_EQ(
+      run_cli("simulate --program " + program + " --noise 1e-3 --log " + log + " --still 2 --dwell 2 --rate 50").status,
+      0);
   EXPECT_EQ(slurp(log).rfind("# region: cap:180\n", 0), 0u);
   const std::string calibrate = "calibrate --measurements " + log + " --magnitude 1 --suggest 1 --json";
   const CliResult from_log = run_cli(calibrate);

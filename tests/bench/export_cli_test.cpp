@@ -15,8 +15,8 @@
 #include <regex>
 #include <sstream>
 
-#include <Eigen/Dense>
 #include <gtest/gtest.h>
+#include <Eigen/Dense>
 #include <nlohmann/json.hpp>
 
 #include "tests/common/run_cli.hpp"
@@ -87,7 +87,8 @@ std::vector<double> numbers_after(const std::string& text, const std::string& ke
   const std::regex number(R"([-+]?[0-9]*\.?[0-9]+(?:[eE][-+]?[0-9]+)?)");
   std::vector<double> out;
   std::string rest = text.substr(text.find(key) + key.size());
-  for (std::sregex_iterator it(rest.begin(), rest.end(), number); it != std::sregex_iterator() && static_cast<int>(out.size()) < count; ++it)
+  for (std::sregex_iterator it(rest.begin(), rest.end(), number);
+       it != std::sregex_iterator() && static_cast<int>(out.size()) < count; ++it)
     out.push_back(std::stod(it->str()));
   return out;
 }
@@ -104,8 +105,10 @@ std::map<std::string, double> parameters(const std::string& text) {
     std::istringstream fields(line);
     const char sep = line.find('\t') != std::string::npos ? '\t' : ',';
     while (std::getline(fields, field, sep)) f.push_back(field);
-    if (sep == '\t') p[f[2]] = std::stod(f[3]);
-    else p[f[0]] = std::stod(f[1]);
+    if (sep == '\t')
+      p[f[2]] = std::stod(f[3]);
+    else
+      p[f[0]] = std::stod(f[1]);
   }
   return p;
 }
@@ -130,13 +133,23 @@ TEST(ExportCli, ExactFormsGiveCorrectsVectors) {
     for (int k = 0; k < 3; ++k) C(i, k) = j["matrix"][i][k];
   }
   EXPECT_EQ(j["format_version"], 1);
-  expect_vectors([&](const V3& r) { V3 v = C * (r - o); return v; }, 1e-12, "json");
+  expect_vectors(
+      [&](const V3& r) {
+        V3 v = C * (r - o);
+        return v;
+      },
+      1e-12, "json");
   // magcal: rows, corrected = (d - b) A.
   const std::string m = exported("--format magcal");
   const auto a = numbers_after(m, "A = [", 9), b = numbers_after(m, "b = [", 3);
   Eigen::Matrix<double, 3, 3, Eigen::RowMajor> A(a.data());
   const Eigen::RowVector3d brow(b[0], b[1], b[2]);
-  expect_vectors([&](const V3& r) { V3 v = ((r.transpose() - brow) * A).transpose(); return v; }, 1e-12, "magcal");
+  expect_vectors(
+      [&](const V3& r) {
+        V3 v = ((r.transpose() - brow) * A).transpose();
+        return v;
+      },
+      1e-12, "magcal");
   // imu_tk: T (9, row-major), K (9), B (3); X' = T K (X - B).
   std::istringstream t(exported("--format imu_tk"));
   double n[21];
@@ -145,7 +158,12 @@ TEST(ExportCli, ExactFormsGiveCorrectsVectors) {
   const Eigen::Matrix<double, 3, 3, Eigen::RowMajor> T(n), K(n + 9);
   const V3 B(n[18], n[19], n[20]);
   EXPECT_EQ(T(0, 0), 1);
-  expect_vectors([&](const V3& r) { V3 v = T * K * (r - B); return v; }, 1e-12, "imu_tk");
+  expect_vectors(
+      [&](const V3& r) {
+        V3 v = T * K * (r - B);
+        return v;
+      },
+      1e-12, "imu_tk");
 }
 
 TEST(ExportCli, KalibrIsCorrectTurnedByItsRotation) {
@@ -209,10 +227,12 @@ TEST(ExportCli, MagnetometerParametersKeepTheModuliAndTurnByTheReportedRotation)
   const V3 off(px4.at("CAL_MAG2_XOFF"), px4.at("CAL_MAG2_YOFF"), px4.at("CAL_MAG2_ZOFF"));
   const auto ap = parameters(exported("--format ardupilot --instrument mag"));
   M3 A;
-  A << ap.at("COMPASS_DIA_X"), ap.at("COMPASS_ODI_X"), ap.at("COMPASS_ODI_Y"), ap.at("COMPASS_ODI_X"), ap.at("COMPASS_DIA_Y"),
-      ap.at("COMPASS_ODI_Z"), ap.at("COMPASS_ODI_Y"), ap.at("COMPASS_ODI_Z"), ap.at("COMPASS_DIA_Z");
+  A << ap.at("COMPASS_DIA_X"), ap.at("COMPASS_ODI_X"), ap.at("COMPASS_ODI_Y"), ap.at("COMPASS_ODI_X"),
+      ap.at("COMPASS_DIA_Y"), ap.at("COMPASS_ODI_Z"), ap.at("COMPASS_ODI_Y"), ap.at("COMPASS_ODI_Z"),
+      ap.at("COMPASS_DIA_Z");
   const V3 ofs(ap.at("COMPASS_OFS_X"), ap.at("COMPASS_OFS_Y"), ap.at("COMPASS_OFS_Z"));
-  const double turn = Json::parse(run_cli("export " + d.calibration + " --format px4 --instrument mag --json").out)["rotation_rad"];
+  const double turn =
+      Json::parse(run_cli("export " + d.calibration + " --format px4 --instrument mag --json").out)["rotation_rad"];
   EXPECT_GT(turn, 0);
   EXPECT_LT(turn, 1e-3);  // of order gamma^2
   for (std::size_t i = 0; i < d.raw.size(); ++i) {

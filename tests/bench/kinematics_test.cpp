@@ -50,12 +50,10 @@ TEST(BenchKinematics, GimbalSettingsComposeToThePosition) {
     std::vector<Vec3> axes;
   };
   const Vec3 x = Vec3::UnitX(), y = Vec3::UnitY(), z = Vec3::UnitZ();
-  const std::vector<Case> cases = {{"gimbal:x,y", {x, y}},
-                                   {"gimbal:y,x", {y, x}},
-                                   {"gimbal:-x,z", {-x, z}},
-                                   {"gimbal:x,y,x", {x, y, x}},
-                                   {"gimbal:z,y,x", {z, y, x}},
-                                   {"gimbal:y,z,x:limits=-90..90,-180..180,-45..45", {y, z, x}}};
+  const std::vector<Case> cases = {
+      {"gimbal:x,y", {x, y}},      {"gimbal:y,x", {y, x}},
+      {"gimbal:-x,z", {-x, z}},    {"gimbal:x,y,x", {x, y, x}},
+      {"gimbal:z,y,x", {z, y, x}}, {"gimbal:y,z,x:limits=-90..90,-180..180,-45..45", {y, z, x}}};
   for (const auto& c : cases) {
     const Bench bench = parse_bench(c.spec);
     int reached = 0;
@@ -64,7 +62,8 @@ TEST(BenchKinematics, GimbalSettingsComposeToThePosition) {
       reached += !settings.empty();
       for (const BenchSetting& s : settings) {
         Mat3 R = Mat3::Identity();
-        for (std::size_t k = 0; k < c.axes.size(); ++k) R = R * rotation(c.axes[k], std::isnan(s.angles[k]) ? 0 : s.angles[k]);
+        for (std::size_t k = 0; k < c.axes.size(); ++k)
+          R = R * rotation(c.axes[k], std::isnan(s.angles[k]) ? 0 : s.angles[k]);
         EXPECT_LT((up_in_meter(R) - eta).norm(), 1e-12) << c.spec;
         EXPECT_LT((bench.orientation(s) - R).norm(), 1e-12) << c.spec;  // the orientation the bench reports
         for (std::size_t k = 0; k < s.angles.size(); ++k)
@@ -75,8 +74,10 @@ TEST(BenchKinematics, GimbalSettingsComposeToThePosition) {
       }
     }
     // Unlimited x,y-type gimbals and any three-axis one reach every direction; the limited one a part.
-    if (std::string(c.spec).find("limits") == std::string::npos) EXPECT_EQ(reached, 300) << c.spec;
-    else EXPECT_GT(reached, 0) << c.spec;
+    if (std::string(c.spec).find("limits") == std::string::npos)
+      EXPECT_EQ(reached, 300) << c.spec;
+    else
+      EXPECT_GT(reached, 0) << c.spec;
   }
 }
 
@@ -99,8 +100,10 @@ TEST(BenchKinematics, TiltTableSettingsComposeToThePositionAndStayWithinTheTilt)
     const Bench bench = parse_bench(spec);
     const auto& mountings = bench.mountings();
     std::vector<Vec3> ups;
-    if (std::string(spec).starts_with("tilt")) ups = {Vec3::UnitZ(), -Vec3::UnitZ()};
-    else ups = {Vec3::UnitZ(), -Vec3::UnitZ(), Vec3::UnitX(), -Vec3::UnitX(), Vec3::UnitY(), -Vec3::UnitY()};
+    if (std::string(spec).starts_with("tilt"))
+      ups = {Vec3::UnitZ(), -Vec3::UnitZ()};
+    else
+      ups = {Vec3::UnitZ(), -Vec3::UnitZ(), Vec3::UnitX(), -Vec3::UnitX(), Vec3::UnitY(), -Vec3::UnitY()};
     const double max_tilt = bench.axes()[0].hi;
     std::vector<Vec3> positions = random_positions(500, 11);
     for (const Vec3& u : ups) positions.push_back(u);  // poles: the azimuth is free
@@ -111,7 +114,8 @@ TEST(BenchKinematics, TiltTableSettingsComposeToThePositionAndStayWithinTheTilt)
       EXPECT_EQ(!settings.empty(), in_reach) << spec;
       for (const BenchSetting& s : settings) {
         const double t = s.angles[0], a = std::isnan(s.angles[1]) ? 0 : s.angles[1];
-        const Mat3 R = rotation(Vec3::UnitY(), -t) * rotation(Vec3::UnitZ(), -a) * mounting(ups[static_cast<std::size_t>(s.mounting)]);
+        const Mat3 R = rotation(Vec3::UnitY(), -t) * rotation(Vec3::UnitZ(), -a) *
+                       mounting(ups[static_cast<std::size_t>(s.mounting)]);
         EXPECT_LT((up_in_meter(R) - eta).norm(), 1e-12) << spec;
         EXPECT_LT((bench.orientation(s) - R).norm(), 1e-12) << spec;
         EXPECT_LE(std::abs(t), max_tilt) << spec;
@@ -123,8 +127,9 @@ TEST(BenchKinematics, TiltTableSettingsComposeToThePositionAndStayWithinTheTilt)
 }
 
 TEST(BenchKinematics, BadSpecsAreRefusedByName) {
-  for (const char* spec : {"gimbal:x", "gimbal:x,x", "gimbal:x,w", "gimbal:x,y:limits=0..10", "gimbal:x,y:limits=5..1,0..1",
-                           "tilt:0", "tilt:200", "tilt:40:spin", "faces:-1", "wheel:3", "jig:no-such-jig"}) {
+  for (const char* spec :
+       {"gimbal:x", "gimbal:x,x", "gimbal:x,w", "gimbal:x,y:limits=0..10", "gimbal:x,y:limits=5..1,0..1", "tilt:0",
+        "tilt:200", "tilt:40:spin", "faces:-1", "wheel:3", "jig:no-such-jig"}) {
     try {
       parse_bench(spec);
       ADD_FAILURE() << spec << " was accepted";

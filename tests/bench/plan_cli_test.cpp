@@ -39,7 +39,8 @@ TEST(PlanCli, StepsComposeToTheirPositionsAndTheOrderSavesTravel) {
     const double t1 = s["angles_deg"][0], t2 = s["angles_deg"][1];
     EXPECT_NEAR(std::remainder(t1, 0.5), 0, 1e-9);
     // R = R_x(t1) R_y(t2), eta = R^T e_z = R_y(-t2) (0, sin t1, cos t1).
-    const double e[3] = {-std::cos(t1 * kDeg) * std::sin(t2 * kDeg), std::sin(t1 * kDeg), std::cos(t1 * kDeg) * std::cos(t2 * kDeg)};
+    const double e[3] = {-std::cos(t1 * kDeg) * std::sin(t2 * kDeg), std::sin(t1 * kDeg),
+                         std::cos(t1 * kDeg) * std::cos(t2 * kDeg)};
     for (int k = 0; k < 3; ++k) EXPECT_NEAR(s["eta"][k].get<double>(), e[k], 1e-12);
     const double z = std::abs(e[2]);
     EXPECT_GE(z, std::cos(40 * kDeg) - 1e-12);  // rounding stayed in the caps
@@ -77,7 +78,8 @@ TEST(PlanCli, APositionOutOfReachIsExitTwoNamingIt) {
   const std::string program = two_caps_program();
   const CliResult r = run_cli("plan " + program + " --bench tilt:40");
   EXPECT_EQ(r.status, 2);
-  EXPECT_NE(r.err.find("6 of 12 positions are beyond the reach of the bench tilt:40: position 2 "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("6 of 12 positions are beyond the reach of the bench tilt:40: position 2 "), std::string::npos)
+      << r.err;
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1);
   const CliResult bad = run_cli("plan " + program + " --bench gimbal:x,x");
   EXPECT_EQ(bad.status, 2);

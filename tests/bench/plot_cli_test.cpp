@@ -17,7 +17,8 @@ TEST(PlotCli, APlanFileIsDrawnWithItsScriptAndData) {
   fs::create_directories(dir);
   const std::string design = (dir / "design.csv").string(), plan = (dir / "plan.csv").string();
   ASSERT_EQ(run_cli("plan classic18 --bench gimbal:x,y --resolution 1 --out " + plan).status, 0);
-  const CliResult r = run_cli("plot " + plan + " --region cap:50 --region cap:50:0,0,-1 --out " + (dir / "plan.svg").string());
+  const CliResult r =
+      run_cli("plot " + plan + " --region cap:50 --region cap:50:0,0,-1 --out " + (dir / "plan.svg").string());
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find("plot (hemispheres)"), std::string::npos) << r.out;
   for (const char* f : {"plan.gp", "plan.pdf", "plan.png", "plan.svg", "plan_positions.csv", "plan_path.csv",
@@ -42,9 +43,11 @@ TEST(PlotCli, ALogIsDrawnWithItsCalibration) {
   const fs::path dir = scratch_dir() / "plot_log";
   fs::create_directories(dir);
   const std::string log = (dir / "log.csv").string(), cal = (dir / "cal.json").string();
-  ASSERT_EQ(run_cli("simulate --program classic18 --noise 1e-3 --log " + log + " --still 2 --dwell 2 --rate 50").status, 0);
+  ASSERT_EQ(run_cli("simulate --program classic18 --noise 1e-3 --log " + log + " --still 2 --dwell 2 --rate 50").status,
+            0);
   ASSERT_EQ(run_cli("calibrate --measurements " + log + " --magnitude 1 --suggest 0 --out " + cal).status, 0);
-  const CliResult r = run_cli("plot --log " + log + " --calibration " + cal + " --out " + (dir / "figure.png").string());
+  const CliResult r =
+      run_cli("plot --log " + log + " --calibration " + cal + " --out " + (dir / "figure.png").string());
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_TRUE(fs::exists(dir / "figure_intervals.csv"));
   EXPECT_TRUE(fs::exists(dir / "figure_log.csv"));
@@ -56,7 +59,8 @@ TEST(PlotCli, ALogIsDrawnWithItsCalibration) {
 TEST(PlotCli, NeverWritesOverItsInputAndRefusesOtherFormats) {
   const fs::path dir = scratch_dir() / "plot_refuse";
   fs::create_directories(dir);
-  const std::string input = write_file("plot_refuse/x_positions.csv", "x,y,z\n1,0,0\n0,1,0\n0,0,1\n-1,0,0\n0,-1,0\n0,0,-1\n1,1,0\n0,1,1\n1,0,1\n");
+  const std::string input = write_file("plot_refuse/x_positions.csv",
+                                       "x,y,z\n1,0,0\n0,1,0\n0,0,1\n-1,0,0\n0,-1,0\n0,0,-1\n1,1,0\n0,1,1\n1,0,1\n");
   const std::string before = slurp(input);
   const CliResult r = run_cli("plot " + input + " --out " + (dir / "x.pdf").string());
   EXPECT_EQ(r.status, 2);

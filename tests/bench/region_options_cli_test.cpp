@@ -21,13 +21,15 @@ constexpr double kDeg = std::numbers::pi / 180;
 
 TEST(RegionOptionsCli, MarginDesignsInsideAndJudgesOnTheRegion) {
   const std::string out = (scratch_dir() / "margin.csv").string();
-  const CliResult r = run_cli("optimize --positions 12 --criterion D --region cap:40 --margin 0.5 --starts 2 --json --out " + out);
+  const CliResult r =
+      run_cli("optimize --positions 12 --criterion D --region cap:40 --margin 0.5 --starts 2 --json --out " + out);
   ASSERT_EQ(r.status, 0) << r.err;
   const Json j = Json::parse(r.out);
   EXPECT_EQ(j["region"], "cap:40");
   EXPECT_EQ(j["designed_on"], "cap:40 inset by 0.5 deg");
   double widest = 0;
-  for (const auto& x : j["program"]) widest = std::max(widest, std::acos(std::clamp(x[2].get<double>(), -1.0, 1.0)) / kDeg);
+  for (const auto& x : j["program"])
+    widest = std::max(widest, std::acos(std::clamp(x[2].get<double>(), -1.0, 1.0)) / kDeg);
   EXPECT_LE(widest, 39.5 + 1e-6);
   EXPECT_GT(widest, 39.4);  // the optimum still uses the (inset) rim
   EXPECT_LT(j["efficiency"].get<double>(), 1.0);

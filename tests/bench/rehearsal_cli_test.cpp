@@ -4,10 +4,10 @@
 // sampling spread is 1/sqrt(360) = 0.05), none beyond 4.5 and at most 3 beyond 3 (0.5 expected). The
 // true offset and matrix are checked by correcting each resting position's mean: |corrected| = |I|.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <sstream>
-#include <array>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -22,14 +22,16 @@ using Json = nlohmann::json;
 constexpr double kMagnitude = 9.80665;
 
 TEST(RehearsalCli, ALogCalibratesToItsTruthWithinTheReportedUncertainty) {
-  const std::string program = write_file("rehearsed.csv", "x,y,z\n1,0,0\n-1,0,0\n0,1,0\n0,-1,0\n0,0,1\n0,0,-1\n"
-                                                          "1,1,0\n1,-1,0\n0,1,1\n0,1,-1\n1,0,1\n-1,0,1\n"
-                                                          "1,1,1\n-1,1,1\n1,-1,1\n1,1,-1\n");
+  const std::string program = write_file("rehearsed.csv",
+                                         "x,y,z\n1,0,0\n-1,0,0\n0,1,0\n0,-1,0\n0,0,1\n0,0,-1\n"
+                                         "1,1,0\n1,-1,0\n0,1,1\n0,1,-1\n1,0,1\n-1,0,1\n"
+                                         "1,1,1\n-1,1,1\n1,-1,1\n1,1,-1\n");
   const std::string log = (scratch_dir() / "rehearsal.csv").string(), truth = (scratch_dir() / "truth.json").string();
   std::vector<double> z;
   for (int seed = 1; seed <= 20; ++seed) {
-    const CliResult s = run_cli("simulate --program " + program + " --noise 1e-3 --log " + log + " --truth " + truth +
-                                " --seed " + std::to_string(seed) + " --still 3 --dwell 3 --rate 50 --magnitude 9.80665");
+    const CliResult s =
+        run_cli("simulate --program " + program + " --noise 1e-3 --log " + log + " --truth " + truth + " --seed " +
+                std::to_string(seed) + " --still 3 --dwell 3 --rate 50 --magnitude 9.80665");
     ASSERT_EQ(s.status, 0) << s.err;
     const CliResult c = run_cli("calibrate --measurements " + log + " --magnitude 9.80665 --still 3 --json");
     ASSERT_EQ(c.status, 0) << c.err;
@@ -37,7 +39,8 @@ TEST(RehearsalCli, ALogCalibratesToItsTruthWithinTheReportedUncertainty) {
     ASSERT_EQ(cal["positions"], 16) << "seed " << seed;
     for (const char* key : {"bias", "scale_deviation", "nonorthogonality"})
       for (int k = 0; k < 3; ++k)
-        z.push_back((cal[key][k].get<double>() - t[key][k].get<double>()) / cal[std::string(key) + "_std"][k].get<double>());
+        z.push_back((cal[key][k].get<double>() - t[key][k].get<double>()) /
+                    cal[std::string(key) + "_std"][k].get<double>());
   }
   double ss = 0, worst = 0;
   int beyond3 = 0;
@@ -84,7 +87,8 @@ TEST(RehearsalCli, TheTrueCorrectionMakesEveryRestingPositionModulusI) {
     for (int i = 0; i < 3; ++i)
       for (int k = 0; k < 3; ++k)
         corrected[i] += t["matrix"][i][k].get<double>() * (mean[k] - t["offset"][k].get<double>());
-    const double modulus = std::sqrt(corrected[0] * corrected[0] + corrected[1] * corrected[1] + corrected[2] * corrected[2]);
+    const double modulus =
+        std::sqrt(corrected[0] * corrected[0] + corrected[1] * corrected[1] + corrected[2] * corrected[2]);
     EXPECT_NEAR(modulus, kMagnitude, 5 * 1e-3 * kMagnitude / std::sqrt(static_cast<double>(rows.size()))) << position;
   }
 }

@@ -21,7 +21,8 @@ double tilt_from(const Vec3& axis, const Vec3& x) { return std::atan2(axis.cross
 // Positions on the rim of the cap about `axis` (tilt exactly max_tilt) and uniformly inside it.
 std::vector<Vec3> cap_positions(const Vec3& axis, double max_tilt, std::uint64_t seed) {
   SphereSampler s(seed);
-  const Vec3 e1 = (std::abs(axis.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY()).cross(axis).normalized(), e2 = axis.cross(e1);
+  const Vec3 e1 = (std::abs(axis.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY()).cross(axis).normalized(),
+             e2 = axis.cross(e1);
   std::vector<Vec3> out;
   for (int i = 0; i < 40; ++i) {
     const double a = 2 * std::numbers::pi * s.uniform();

@@ -29,7 +29,8 @@ double travel_here(const Bench& bench, const RunPlan& plan) {
 
 int mounting_changes(const RunPlan& plan) {
   int n = 0;
-  for (std::size_t k = 1; k < plan.steps.size(); ++k) n += plan.steps[k].setting.mounting != plan.steps[k - 1].setting.mounting;
+  for (std::size_t k = 1; k < plan.steps.size(); ++k)
+    n += plan.steps[k].setting.mounting != plan.steps[k - 1].setting.mounting;
   return n;
 }
 
@@ -43,7 +44,8 @@ std::vector<Vec3> reachable_positions(const Bench& bench, int n, std::uint64_t s
 }
 
 TEST(RunOrder, NeverTravelsMoreThanTheGivenOrderAndMeasuresEveryPosition) {
-  for (const char* spec : {"tilt:40:flip", "gimbal:x,y", "gimbal:y,x:limits=-120..120,-90..90", "faces:30", "gimbal:z,y,x"}) {
+  for (const char* spec :
+       {"tilt:40:flip", "gimbal:x,y", "gimbal:y,x:limits=-120..120,-90..90", "faces:30", "gimbal:z,y,x"}) {
     const Bench bench = parse_bench(spec);
     double saved = 0, given_total = 0;
     for (std::uint64_t seed = 1; seed <= 20; ++seed) {
@@ -64,7 +66,8 @@ TEST(RunOrder, NeverTravelsMoreThanTheGivenOrderAndMeasuresEveryPosition) {
       EXPECT_NEAR(travel_here(bench, given), given.travel_deg, 1e-9) << spec;
       EXPECT_LE(planned.remounts, given.remounts) << spec;
       EXPECT_EQ(planned.remounts, mounting_changes(planned)) << spec;
-      if (planned.remounts == given.remounts) EXPECT_LE(planned.travel_deg, given.travel_deg + 1e-9) << spec << " seed " << seed;
+      if (planned.remounts == given.remounts)
+        EXPECT_LE(planned.travel_deg, given.travel_deg + 1e-9) << spec << " seed " << seed;
       saved += given.travel_deg - planned.travel_deg;
       given_total += given.travel_deg;
     }

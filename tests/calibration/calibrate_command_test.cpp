@@ -38,7 +38,8 @@ CalibrateRequest request(const std::string& magnitude) {
 CalibrateResult run(const LogSpec& spec, const std::vector<V3>& directions, const CalibrateRequest& q,
                     double rate = 0) {
   const SimulatedLog s = simulate_log(spec, directions);
-  return commands::calibrate(q, commands::calibration_input(parse_raw_log(s.text, "simulated", LogFormat::text, rate), q));
+  return commands::calibrate(q,
+                             commands::calibration_input(parse_raw_log(s.text, "simulated", LogFormat::text, rate), q));
 }
 
 // The meter's truth in the reported form: offsets in counts, gains in counts per unit, gammas.
@@ -91,7 +92,8 @@ TEST(CalibrateCommand, FacesOnlyFitAxis6) {
   for (int rep = 0; rep < 2; ++rep)
     for (const V3& f : faces()) {
       const double k = d.size() + 1.0, tip = 0.02;  // radians
-      d.push_back(unit({f[0] + tip * std::sin(1.7 * k), f[1] + tip * std::cos(2.3 * k), f[2] + tip * std::sin(0.9 * k + 1)}));
+      d.push_back(
+          unit({f[0] + tip * std::sin(1.7 * k), f[1] + tip * std::cos(2.3 * k), f[2] + tip * std::sin(0.9 * k + 1)}));
     }
   const CalibrateResult r = run(spec, d, request("9.81"));
   EXPECT_EQ(model_name(r.model), "axis6");
@@ -200,7 +202,8 @@ TEST(CalibrateCommand, OneSchemaForEveryModel) {
   spec.noise = 0.002;
   spec.quantum = 1e-6;
   std::vector<V3> d = fourteen_directions();
-  for (const V3& v : std::vector<V3>{{1, 1, 0}, {0, 1, 1}, {1, 0, 1}, {1, -1, 0}, {0, 1, -1}, {-1, 0, 1}}) d.push_back(v);
+  for (const V3& v : std::vector<V3>{{1, 1, 0}, {0, 1, 1}, {1, 0, 1}, {1, -1, 0}, {0, 1, -1}, {-1, 0, 1}})
+    d.push_back(v);
   std::set<std::string> first;
   for (const char* name : {"paper9", "axis6", "bias3", "cubic12"}) {
     CalibrateRequest q = request("9.81");

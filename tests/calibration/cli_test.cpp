@@ -86,8 +86,8 @@ TEST(CalibrateCli, RecoversASimulatedAccelerometer) {
   const TrueMeter m = example_meter(s, kG);
   const fs::path file = write_file("bench.csv", bench_csv(m, sigma, 8, 5));
   for (const std::string modulus : {"norm", "projection"}) {
-    const CliRun r = scalcal("calibrate --measurements " + file.string() + " --magnitude 9.80665 --modulus " + modulus +
-                          " --json");
+    const CliRun r =
+        scalcal("calibrate --measurements " + file.string() + " --magnitude 9.80665 --modulus " + modulus + " --json");
     ASSERT_EQ(r.status, 0) << r.err;
     const auto bias = json_triple(r.out, "bias"), bias_std = json_triple(r.out, "bias_std");
     const auto dk = json_triple(r.out, "scale_deviation"), dk_std = json_triple(r.out, "scale_deviation_std");
@@ -229,8 +229,9 @@ TEST(SimulateCli, SameSeedSameOutputAndThetaWithinSamplingError) {
   // (by hand: H^T H is block diagonal, bias block 6 E, scale block 3 E + ones, nonorth block E).
   const double se = json_number(a.out, "std_sampling_error");
   EXPECT_NEAR(se, 1 / std::sqrt(2.0 * 399), 1e-12);
-  const std::regex re("\"theta_empirical\"[^}]*\"bias\"\\s*:\\s*([-0-9.eE+]+)[^}]*\"scale\"\\s*:\\s*([-0-9.eE+]+)"
-                      "[^}]*\"nonorth\"\\s*:\\s*([-0-9.eE+]+)");
+  const std::regex re(
+      "\"theta_empirical\"[^}]*\"bias\"\\s*:\\s*([-0-9.eE+]+)[^}]*\"scale\"\\s*:\\s*([-0-9.eE+]+)"
+      "[^}]*\"nonorth\"\\s*:\\s*([-0-9.eE+]+)");
   std::smatch m;
   ASSERT_TRUE(std::regex_search(a.out, m, re)) << a.out;
   const double expected[3] = {std::sqrt(3.0), std::sqrt(5.0), std::sqrt(18.0)};

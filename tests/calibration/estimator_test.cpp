@@ -4,8 +4,8 @@
 
 #include <cmath>
 
-#include "numeric/criteria/evaluation.hpp"
 #include "numeric/calibration/scalar_calibration.hpp"
+#include "numeric/criteria/evaluation.hpp"
 #include "tests/calibration/independent_simulator.hpp"
 
 namespace {
@@ -19,8 +19,8 @@ using scalcal::Vec3;
 
 constexpr double kG = 9.80665;
 
-std::vector<PositionSamples> bench(const TrueMeter& m, double magnitude, double sigma, int samples,
-                                   double tilt_rad, std::uint64_t seed) {
+std::vector<PositionSamples> bench(const TrueMeter& m, double magnitude, double sigma, int samples, double tilt_rad,
+                                   std::uint64_t seed) {
   Noise rng(seed);
   std::vector<PositionSamples> out;
   for (const V3& eta : classic18_positions()) {
@@ -29,8 +29,8 @@ std::vector<PositionSamples> bench(const TrueMeter& m, double magnitude, double 
     PositionSamples p;
     p.nominal = Vec3(eta[0], eta[1], eta[2]);
     for (int s = 0; s < samples; ++s)
-      p.samples.push_back(Vec3(clean[0] + sigma * rng.gauss(), clean[1] + sigma * rng.gauss(),
-                               clean[2] + sigma * rng.gauss()));
+      p.samples.push_back(
+          Vec3(clean[0] + sigma * rng.gauss(), clean[1] + sigma * rng.gauss(), clean[2] + sigma * rng.gauss()));
     out.push_back(p);
   }
   return out;
@@ -87,10 +87,9 @@ TEST(Estimator, NoisyRecoveryWithinFourStandardErrors) {
     EXPECT_NEAR(r.noise / sigma, 1.0, 0.2);
     // Standard errors: sigma/|I| sqrt(K(r,r)/samples), with K of the 18 positions (evaluate()).
     const scalcal::Evaluation ev = scalcal::evaluate(scalcal::Program::classic18());
-    for (int k = 0; k < 9; ++k)
-      EXPECT_NEAR(r.X_std(k) / (sigma / kG * std::sqrt(ev.K(k, k) / samples)), 1.0, 0.2) << k;
-    const double truth[9] = {m.bias[0] / kG, m.bias[1] / kG, m.bias[2] / kG, m.dk[0], m.dk[1], m.dk[2],
-                             m.gamma()[0], m.gamma()[1], m.gamma()[2]};
+    for (int k = 0; k < 9; ++k) EXPECT_NEAR(r.X_std(k) / (sigma / kG * std::sqrt(ev.K(k, k) / samples)), 1.0, 0.2) << k;
+    const double truth[9] = {m.bias[0] / kG, m.bias[1] / kG, m.bias[2] / kG, m.dk[0],     m.dk[1],
+                             m.dk[2],        m.gamma()[0],   m.gamma()[1],   m.gamma()[2]};
     for (int k = 0; k < 9; ++k) EXPECT_LT(std::abs(r.X(k) - truth[k]), 4 * r.X_std(k)) << k;
   }
 }

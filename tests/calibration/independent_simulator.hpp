@@ -40,9 +40,12 @@ inline TrueMeter example_meter(double s, double magnitude) {
   TrueMeter m;
   m.bias = {1.3 * s * magnitude, -0.7 * s * magnitude, 0.4 * s * magnitude};
   m.dk = {-0.9 * s, 0.5 * s, 1.1 * s};
-  m.phi[0][1] = 0.8 * s;  m.phi[1][0] = -0.2 * s;
-  m.phi[1][2] = 0.3 * s;  m.phi[2][1] = 0.6 * s;
-  m.phi[2][0] = -0.5 * s; m.phi[0][2] = -0.4 * s;
+  m.phi[0][1] = 0.8 * s;
+  m.phi[1][0] = -0.2 * s;
+  m.phi[1][2] = 0.3 * s;
+  m.phi[2][1] = 0.6 * s;
+  m.phi[2][0] = -0.5 * s;
+  m.phi[0][2] = -0.4 * s;
   return m;
 }
 

@@ -15,8 +15,8 @@ TEST(MeterModel, RowsOfPhiAreTheSensitivityAxes) {
   const double a = 0.01;
   m.misalignment(0, 1) = a;  // phi_xy: sensor x leans towards the y axis
   const Vec3 along_y = m.measure(Vec3(0, 1, 0));
-  EXPECT_DOUBLE_EQ(along_y(0), a);    // sensor x sees a of a vector along y
-  EXPECT_DOUBLE_EQ(along_y(1), 1.0);  // sensor y is untouched
+  EXPECT_DOUBLE_EQ(along_y(0), a);                                      // sensor x sees a of a vector along y
+  EXPECT_DOUBLE_EQ(along_y(1), 1.0);                                    // sensor y is untouched
   EXPECT_DOUBLE_EQ(m.measure(Vec3(1, 0, 0))(0), std::sqrt(1 - a * a));  // unit axis
   EXPECT_DOUBLE_EQ(m.nonorthogonality()(0), a);
 }

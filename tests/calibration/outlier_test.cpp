@@ -27,8 +27,8 @@ std::vector<PositionSamples> bench(const TrueMeter& m, double sigma, int samples
     PositionSamples p;
     p.line = line;
     for (int s = 0; s < samples; ++s) {
-      p.samples.push_back(Vec3(clean[0] + sigma * rng.gauss(), clean[1] + sigma * rng.gauss(),
-                               clean[2] + sigma * rng.gauss()));
+      p.samples.push_back(
+          Vec3(clean[0] + sigma * rng.gauss(), clean[1] + sigma * rng.gauss(), clean[2] + sigma * rng.gauss()));
       p.sample_lines.push_back(line++);
     }
     out.push_back(p);
@@ -44,8 +44,8 @@ scalcal::CalibrationResult calibrate(const std::vector<PositionSamples>& data) {
 
 // The largest error of the estimate in units of `std` (standard errors of a clean fit).
 double worst_error_in(const scalcal::CalibrationResult& r, const scalcal::Vec9& std, const TrueMeter& m) {
-  const double truth[9] = {m.bias[0] / kG, m.bias[1] / kG, m.bias[2] / kG, m.dk[0], m.dk[1], m.dk[2],
-                           m.gamma()[0], m.gamma()[1], m.gamma()[2]};
+  const double truth[9] = {m.bias[0] / kG, m.bias[1] / kG, m.bias[2] / kG, m.dk[0],     m.dk[1],
+                           m.dk[2],        m.gamma()[0],   m.gamma()[1],   m.gamma()[2]};
   double worst = 0;
   for (int k = 0; k < 9; ++k) worst = std::max(worst, std::abs(r.X(k) - truth[k]) / std(k));
   return worst;

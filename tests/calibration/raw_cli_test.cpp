@@ -105,7 +105,8 @@ TEST(RawCalibrateCli, MagnitudeAutoNamesWhatIsNotIdentifiable) {
   const Json j = Json::parse(r.out);
   EXPECT_EQ(j["magnitude"], "auto");
   bool named = false;
-  for (const auto& what : j["not_identifiable"]) named = named || what.get<std::string>().find("field's strength") != std::string::npos;
+  for (const auto& what : j["not_identifiable"])
+    named = named || what.get<std::string>().find("field's strength") != std::string::npos;
   EXPECT_TRUE(named) << j["not_identifiable"];
   double logsum = 0;
   for (const auto& v : j["scale_deviation"]) logsum += std::log1p(v.get<double>());
@@ -113,11 +114,11 @@ TEST(RawCalibrateCli, MagnitudeAutoNamesWhatIsNotIdentifiable) {
 }
 
 TEST(CorrectCli, RefusesABadCalibrationFile) {
-  for (const auto& [name, text, words] :
-       std::vector<std::tuple<std::string, std::string, std::string>>{
+  for (const auto& [name, text, words] : std::vector<std::tuple<std::string, std::string, std::string>>{
            {"notjson.json", "offset: 1", "not a JSON object"},
            {"nokeys.json", "{\"bias\": [0, 0, 0]}", "needs the keys 'offset' and 'matrix'"},
-           {"short.json", "{\"offset\": [0, 0], \"matrix\": [[1,0,0],[0,1,0],[0,0,1]]}", "'offset' must be three numbers"},
+           {"short.json", "{\"offset\": [0, 0], \"matrix\": [[1,0,0],[0,1,0],[0,0,1]]}",
+            "'offset' must be three numbers"},
            {"singular.json", "{\"offset\": [0, 0, 0], \"matrix\": [[1,0,0],[1,0,0],[0,0,1]]}", "singular"}}) {
     const auto r = run_cli("correct --calibration " + write_file(name, text) + " --measurements " + kXsens);
     EXPECT_EQ(r.status, 2) << name;

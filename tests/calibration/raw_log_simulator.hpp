@@ -25,15 +25,15 @@ struct SimulatedLog {
 };
 
 struct LogSpec {
-  TrueMeter meter;            // in units of the field
-  double magnitude = 9.81;    // the field
-  double zero = 32768, counts_per_unit = 400;  // raw = zero + counts_per_unit * meter.measure(I)
-  double noise = 2.0;         // counts, per sample and output
-  double quantum = 1.0;       // the ADC's step: outputs are whole multiples of it
-  double rate = 100;          // Hz
+  TrueMeter meter;                                 // in units of the field
+  double magnitude = 9.81;                         // the field
+  double zero = 32768, counts_per_unit = 400;      // raw = zero + counts_per_unit * meter.measure(I)
+  double noise = 2.0;                              // counts, per sample and output
+  double quantum = 1.0;                            // the ADC's step: outputs are whole multiples of it
+  double rate = 100;                               // Hz
   double first_still = 40, still = 6, motion = 3;  // seconds
-  double lead_motion = 0;     // seconds of motion before the first still segment (a log without a still start)
-  bool time_column = true;    // false: "ix iy iz" lines, the time only in the rate
+  double lead_motion = 0;   // seconds of motion before the first still segment (a log without a still start)
+  bool time_column = true;  // false: "ix iy iz" lines, the time only in the rate
   std::uint64_t seed = 7;
 };
 
@@ -54,7 +54,9 @@ inline SimulatedLog simulate_log(const LogSpec& spec, const std::vector<V3>& dir
   const auto emit = [&](const V3& d) {
     const V3 I{spec.magnitude * d[0], spec.magnitude * d[1], spec.magnitude * d[2]};
     const V3 m = spec.meter.measure(I);
-    const auto adc = [&](double v) { return spec.quantum * std::round((spec.zero + spec.counts_per_unit * v + gauss(rng)) / spec.quantum); };
+    const auto adc = [&](double v) {
+      return spec.quantum * std::round((spec.zero + spec.counts_per_unit * v + gauss(rng)) / spec.quantum);
+    };
     if (spec.time_column)
       std::snprintf(line, sizeof line, "%.6f %.10g %.10g %.10g\n", t, adc(m[0]), adc(m[1]), adc(m[2]));
     else
@@ -75,7 +77,8 @@ inline SimulatedLog simulate_log(const LogSpec& spec, const std::vector<V3>& dir
       const int steps = static_cast<int>(spec.motion * spec.rate);
       for (int s = 0; s < steps; ++s) {
         const double u = (s + 1.0) / (steps + 1.0), wobble = 0.35 * std::sin(3.14159265 * u) * std::sin(17.0 * u);
-        V3 v{a[0] * (1 - u) + d[0] * u + wobble, a[1] * (1 - u) + d[1] * u - wobble, a[2] * (1 - u) + d[2] * u + 0.5 * wobble};
+        V3 v{a[0] * (1 - u) + d[0] * u + wobble, a[1] * (1 - u) + d[1] * u - wobble,
+             a[2] * (1 - u) + d[2] * u + 0.5 * wobble};
         emit(unit(v));
       }
     }

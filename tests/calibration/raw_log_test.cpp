@@ -8,9 +8,9 @@
 #include <gtest/gtest.h>
 
 #include "numeric/calibration/any_units.hpp"
+#include "numeric/calibration/raw_log.hpp"
 #include "numeric/calibration/static_intervals.hpp"
 #include "numeric/io/input_error.hpp"
-#include "numeric/calibration/raw_log.hpp"
 #include "tests/calibration/raw_log_simulator.hpp"
 
 namespace scalcal {
@@ -44,7 +44,7 @@ TEST(RawLog, TextAndCsvReadTheSame) {
   ASSERT_EQ(b.size(), 4);
   EXPECT_EQ(b.samples[3], a.samples[3]);
   EXPECT_THROW(parse_raw_log("0.0 1 2 3\n0.0 1 2 3\n", "c.txt"), InputError);  // time does not increase
-  EXPECT_THROW(parse_raw_log("0.0 1 2\n", "d.txt"), InputError);                // three columns
+  EXPECT_THROW(parse_raw_log("0.0 1 2\n", "d.txt"), InputError);               // three columns
   EXPECT_THROW(parse_raw_log("t,ix,iy\n0,1,2\n", "e.csv"), InputError);        // no iz
 }
 
@@ -68,7 +68,7 @@ TEST(StaticIntervals, FindTheKnownStillSegments) {
 TEST(StaticIntervals, DropoutsAndSaturationAreCounted) {
   SimulatedLog s = simulate_log(LogSpec{}, fourteen_directions());
   RawLog log = parse_raw_log(s.text, "s.txt");
-  log.samples[5000](1) = NAN;                             // a dropout
+  log.samples[5000](1) = NAN;                                                             // a dropout
   for (int i = 7000; i < 7010; ++i) log.samples[static_cast<std::size_t>(i)](0) = 65535;  // clipped at the rail
   const IntervalDetection d = detect_static_intervals(log);
   EXPECT_EQ(d.nonfinite, 1);
@@ -132,7 +132,9 @@ TEST(AnyUnits, MagnitudeAutoKeepsTheRatiosOfTheScaleFactors) {
   for (double dk : spec.meter.dk) mean *= 1 + dk;
   mean = std::cbrt(mean);
   for (int k = 0; k < 3; ++k)
-    EXPECT_NEAR(a.scale_deviation(k), (1 + spec.meter.dk[static_cast<std::size_t>(k)]) / mean - 1, 6 * a.scale_deviation_std(k)) << k;
+    EXPECT_NEAR(a.scale_deviation(k), (1 + spec.meter.dk[static_cast<std::size_t>(k)]) / mean - 1,
+                6 * a.scale_deviation_std(k))
+        << k;
   const V3 u = unit({0.2, 0.7, -0.4});
   const V3 m = spec.meter.measure({spec.magnitude * u[0], spec.magnitude * u[1], spec.magnitude * u[2]});
   const Vec3 raw(spec.zero + spec.counts_per_unit * m[0], spec.zero + spec.counts_per_unit * m[1],

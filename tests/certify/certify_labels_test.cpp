@@ -103,12 +103,12 @@ TEST(CertifyLabels, MissedNeverComesWithAnEnclosureHoldingTheLimit) {
 // strictly convex), E's symmetric one is sufficient only.
 TEST(CertifyLabels, AttainmentReasonsAreTrueForEachCriterion) {
   const certify_detail::IntervalPrecision precision(60);
-  const auto a = certify_detail::attainment(moved(optimum(12, "A", 1), 1e-4, 3),
-                                            certify_detail::target_of<ACriterion>(), 60);
+  const auto a =
+      certify_detail::attainment(moved(optimum(12, "A", 1), 1e-4, 3), certify_detail::target_of<ACriterion>(), 60);
   ASSERT_FALSE(a.proven);
   EXPECT_NE(a.reason.find("the only optimal one for A"), std::string::npos) << a.reason;
-  const auto e = certify_detail::attainment(moved(optimum(12, "E", 1), 1e-4, 3),
-                                            certify_detail::target_of<ECriterion>(), 60);
+  const auto e =
+      certify_detail::attainment(moved(optimum(12, "E", 1), 1e-4, 3), certify_detail::target_of<ECriterion>(), 60);
   ASSERT_FALSE(e.proven);
   EXPECT_NE(e.reason.find("sufficient, not necessary"), std::string::npos) << e.reason;
 }
@@ -118,12 +118,14 @@ TEST(CertifyLabels, AttainmentReasonsAreTrueForEachCriterion) {
 TEST(CertifyLabels, MomentBIsEnclosedFromTheCriterion) {
   const certify_detail::IntervalPrecision precision(60);
   const std::pair<certify_detail::CertifyTarget, std::string> targets[] = {
-      {certify_detail::target_of<DCriterion>(), "1/15"}, {certify_detail::target_of<ACriterion>(), "A"},
-      {certify_detail::target_of<ECriterion>(), "1/12"}, {certify_detail::target_of<SCriterion>(), "S"}};
+      {certify_detail::target_of<DCriterion>(), "1/15"},
+      {certify_detail::target_of<ACriterion>(), "A"},
+      {certify_detail::target_of<ECriterion>(), "1/12"},
+      {certify_detail::target_of<SCriterion>(), "S"}};
   for (const auto& [t, which] : targets) {
     const certify_detail::IntervalPrecision fine(80);
-    const Real b = which == "1/15" ? Real(1) / 15
-                   : which == "A"  ? (3 - sqrt(Real(2))) / 21
+    const Real b = which == "1/15"   ? Real(1) / 15
+                   : which == "A"    ? (3 - sqrt(Real(2))) / 21
                    : which == "1/12" ? Real(1) / 12
                                      : (2 - sqrt(Real(3))) / 3;
     EXPECT_LE(certify_detail::lo(t.b), b) << t.name;

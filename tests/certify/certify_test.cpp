@@ -7,12 +7,12 @@
 #include <random>
 
 #include "numeric/certify/certify.hpp"
-#include "numeric/criteria/evaluation.hpp"
-#include "numeric/program/program_csv.hpp"
 #include "numeric/certify/eigenvalue_kkt.hpp"
 #include "numeric/certify/interval.hpp"
+#include "numeric/criteria/evaluation.hpp"
 #include "numeric/polish/polish.hpp"
 #include "numeric/program/catalogue.hpp"
+#include "numeric/program/program_csv.hpp"
 #include "numeric/synthesis/synthesize.hpp"
 #include "tests/common/run_cli.hpp"
 

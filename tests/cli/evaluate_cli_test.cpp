@@ -52,7 +52,11 @@ TEST(EvaluateCli, BadInputsExitTwoWithAMessage) {
       {"word.csv", "x,y,z\n1,0,zero\n", "is not a number", true},
       {"short.csv", "x,y,z\n1,0,0\n0,1,0\n0,0,1\n", "only 3 positions", false},
       {"zero.csv", "x,y,z\n" + kNine + "0,0,0\n", "zero vector", true},
-      {"binary.csv", std::string("\x7f" "ELF\0\0\x01", 7), "not a text file", false},
+      {"binary.csv",
+       std::string("\x7f"
+                   "ELF\0\0\x01",
+                   7),
+       "not a text file", false},
       {"planar.csv", "x,y,z\n1,0,0\n0,1,0\n-1,0,0\n0,-1,0\n1,1,0\n1,-1,0\n-1,1,0\n-1,-1,0\n2,1,0\n1,2,0\n",
        "rank 5 of 9", false},
   };
@@ -84,7 +88,10 @@ TEST(EvaluateCli, IllConditionedProgramIsExplained) {
   std::string rows = "x,y,z\n";
   for (int j = 0; j < 12; ++j)
     rows += std::to_string(std::cos(0.5 * j)) + "," + std::to_string(std::sin(0.5 * j)) + "," +
-            (j % 3 == 0 ? "0.001" : j % 3 == 1 ? "-0.001" : "0.0005") + "\n";
+            (j % 3 == 0   ? "0.001"
+             : j % 3 == 1 ? "-0.001"
+                          : "0.0005") +
+            "\n";
   const auto path = write_file("flat.csv", rows);
   const auto r = run_cli("evaluate " + path);
   EXPECT_EQ(r.status, 0) << r.err;
@@ -111,8 +118,8 @@ TEST(EvaluateCli, MissingFileAndUsageErrors) {
 TEST(CatalogueCli, ListsThePaperPrograms) {
   const auto r = run_cli("catalogue");
   ASSERT_EQ(r.status, 0) << r.err;
-  for (const char* name : {"classic18", "rotation-6", "nine-2axes", "nine-3axes", "octahedral-1-1-0",
-                           "dodecahedral-12", "icosahedral-20", "table1-A", "table2-E", "table3-S"})
+  for (const char* name : {"classic18", "rotation-6", "nine-2axes", "nine-3axes", "octahedral-1-1-0", "dodecahedral-12",
+                           "icosahedral-20", "table1-A", "table2-E", "table3-S"})
     EXPECT_NE(r.out.find(name), std::string::npos) << name;
   const auto j = run_cli("catalogue --json");
   ASSERT_EQ(j.status, 0) << j.err;

@@ -70,8 +70,8 @@ TEST(OptionsCli, EveryOptionShowsItsUnitAndDefault) {
       std::istringstream words(text.substr(first));
       std::string name, token;
       words >> name >> token;
-      const bool takes_value =
-          token.find('|') != std::string::npos || (!token.empty() && std::isupper(static_cast<unsigned char>(token[0])));
+      const bool takes_value = token.find('|') != std::string::npos ||
+                               (!token.empty() && std::isupper(static_cast<unsigned char>(token[0])));
       if (!takes_value) {
         EXPECT_EQ(text.find("unit: "), std::string::npos) << text;
         continue;

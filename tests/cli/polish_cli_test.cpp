@@ -54,8 +54,8 @@ TEST(PolishCli, PolishesAFileAndWritesThePolishedProgram) {
   const auto r = run_cli("polish " + in + " --criterion D --digits 30 --out " + out + " --json");
   ASSERT_EQ(r.status, 0) << r.err;
   const json j = json::parse(r.out);
-  for (const char* key : {"criterion", "positions", "value_digits", "residual", "digits", "iterations", "converged",
-                          "program"})
+  for (const char* key :
+       {"criterion", "positions", "value_digits", "residual", "digits", "iterations", "converged", "program"})
     EXPECT_TRUE(j.contains(key)) << key;
   EXPECT_EQ(j["criterion"], "D");
   EXPECT_EQ(j["positions"], 20);

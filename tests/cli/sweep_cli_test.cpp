@@ -3,8 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <sstream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "tests/common/number_text.hpp"
 #include "tests/common/run_cli.hpp"
@@ -31,7 +31,8 @@ TEST(SweepCli, JsonOneObjectPerSizeAndCriterion) {
     EXPECT_LE(j["hits"].get<int>(), 4);
     EXPECT_GE(j["hits"].get<int>(), 1);
     ASSERT_EQ(j["program"].size(), 12u + i);
-    for (const auto& p : j["program"]) EXPECT_NEAR(std::hypot(p[0].get<double>(), p[1].get<double>(), p[2].get<double>()), 1, 1e-12);
+    for (const auto& p : j["program"])
+      EXPECT_NEAR(std::hypot(p[0].get<double>(), p[1].get<double>(), p[2].get<double>()), 1, 1e-12);
     EXPECT_NEAR(j["ratio"].get<double>(), j["value"].get<double>() / kLimitD, 1e-15);
     EXPECT_GE(j["ratio"].get<double>(), 1 - 1e-12);  // the limit bounds every program
   }

@@ -24,11 +24,11 @@ namespace scalcal::testing {
 enum class Expect { error, warn, same, write };
 
 struct Case {
-  std::string name;                         // the test's name
-  std::function<std::string()> args;        // generates its inputs, returns the CLI arguments
+  std::string name;                   // the test's name
+  std::function<std::string()> args;  // generates its inputs, returns the CLI arguments
   Expect expect;
-  std::vector<std::string> needles;         // words the message (error, warn, write) must contain
-  std::function<std::string()> reference;   // for `same`: the arguments of the clean input
+  std::vector<std::string> needles;        // words the message (error, warn, write) must contain
+  std::function<std::string()> reference;  // for `same`: the arguments of the clean input
 
   Case(std::string n, std::function<std::string()> a, Expect e, std::vector<std::string> words,
        std::function<std::string()> clean = {})
@@ -55,8 +55,8 @@ inline CliResult run_limited(const std::string& args) {
   static int counter = 0;
   const auto base = (scratch_dir() / ("limited" + std::to_string(counter++))).string();
   const std::string limit = kAddressSanitizer ? "" : "ulimit -v 8000000; ";
-  const std::string cmd = limit + "exec timeout -s KILL 60 " + std::string(SCALCAL_CLI) + " " + args +
-                          " >" + base + ".out 2>" + base + ".err </dev/null";
+  const std::string cmd = limit + "exec timeout -s KILL 60 " + std::string(SCALCAL_CLI) + " " + args + " >" + base +
+                          ".out 2>" + base + ".err </dev/null";
   const int raw = std::system(cmd.c_str());
   CliResult r;
   r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;

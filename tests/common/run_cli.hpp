@@ -1,13 +1,13 @@
 // Runs the scalcal binary as a user would, capturing exit status, stdout and stderr.
 #pragma once
+#include <sys/wait.h>
+#include <unistd.h>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
-#include <sys/wait.h>
-#include <unistd.h>
 
 namespace scalcal::testing {
 
@@ -47,8 +47,8 @@ inline CliResult run_cli(const std::string& args, const CliOptions& options = {}
   static int counter = 0;
   const auto base = scratch_dir() / ("run" + std::to_string(counter++));
   const std::string out = options.stdout_path.empty() ? base.string() + ".out" : options.stdout_path;
-  const std::string cmd = (options.cwd.empty() ? "" : "cd '" + options.cwd + "' && ") + std::string(SCALCAL_CLI) +
-                          " " + args + " >" + out + " 2>" + base.string() + ".err </dev/null";
+  const std::string cmd = (options.cwd.empty() ? "" : "cd '" + options.cwd + "' && ") + std::string(SCALCAL_CLI) + " " +
+                          args + " >" + out + " 2>" + base.string() + ".err </dev/null";
   const int raw = std::system(cmd.c_str());
   CliResult r;
   r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;

@@ -8,12 +8,12 @@
 #include <string>
 
 #include "numeric/calibration/any_units.hpp"
+#include "numeric/calibration/measurements_csv.hpp"
 #include "numeric/calibration/outlier_samples.hpp"
+#include "numeric/calibration/raw_log.hpp"
 #include "numeric/calibration/static_intervals.hpp"
 #include "numeric/io/csv_table.hpp"
 #include "numeric/io/input_error.hpp"
-#include "numeric/calibration/measurements_csv.hpp"
-#include "numeric/calibration/raw_log.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size == 0) return 0;

@@ -4,10 +4,10 @@
 // meter's size), the Monte-Carlo covariance against sigma^2 K, and the refusals.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <unistd.h>
 
 #include <nlohmann/json.hpp>
 
@@ -144,7 +144,8 @@ TEST(ModelCalibrationCli, AxisPositionsIdentifyAxis6ButNotCubic12) {
 }
 
 TEST(ModelCalibrationCli, SimulateTakesTheModel) {
-  const auto r = run_cli("simulate --program octahedral-1-1-1 --trials 300 --noise 1e-4 --model cubic12 --modulus norm --json");
+  const auto r =
+      run_cli("simulate --program octahedral-1-1-1 --trials 300 --noise 1e-4 --model cubic12 --modulus norm --json");
   ASSERT_EQ(r.status, 0) << r.err;
   const Json j = Json::parse(r.out);
   EXPECT_EQ(j["model"], "cubic12");

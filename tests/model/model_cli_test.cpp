@@ -23,7 +23,8 @@ TEST(ModelCli, EvaluateOfTheSixPositionTestUnderAxis6ReachesItsLimits) {
   const auto l = run_cli("limits --model axis6 --json");
   ASSERT_EQ(l.status, 0) << l.err;
   const Json lim = Json::parse(l.out);
-  for (const char* c : {"D", "A", "E", "S"}) EXPECT_NEAR(j[c].get<double>() / lim[c]["value"].get<double>(), 1.0, 1e-12) << c;
+  for (const char* c : {"D", "A", "E", "S"})
+    EXPECT_NEAR(j[c].get<double>() / lim[c]["value"].get<double>(), 1.0, 1e-12) << c;
   EXPECT_EQ(lim["D"]["exact"], "729");
 }
 
@@ -32,7 +33,8 @@ TEST(ModelCli, Cubic12LimitsAgreeWithTheProgramsTheProofsName) {
   ASSERT_EQ(l.status, 0) << l.err;
   const Json lim = Json::parse(l.out);
   EXPECT_EQ(lim["model"], "cubic12");
-  for (const char* key : {"exact", "value", "moments", "b", "measure", "attained", "proof"}) EXPECT_TRUE(lim["D"].contains(key)) << key;
+  for (const char* key : {"exact", "value", "moments", "b", "measure", "attained", "proof"})
+    EXPECT_TRUE(lim["D"].contains(key)) << key;
   EXPECT_EQ(lim["A"]["exact"], "99+9*sqrt(95)");
   // 10 positions per axis direction and 9 per cube diagonal: N = 132 (written as a program file).
   const auto d = run_cli("evaluate octahedral-10-0-9 --model cubic12 --json");
@@ -73,14 +75,15 @@ TEST(ModelCli, RefusalsSayWhy) {
 TEST(ModelCli, FamilyAndEvaluateAgreeOnEveryModel) {
   // The same program, closed forms from the family's moments and the numeric evaluation.
   for (const char* m : {"axis6", "bias3", "cubic12"}) {
-    const auto f = run_cli(std::string("family octahedral --param axes=2 --param edges=1 --param diagonals=1 --model ") +
-                           m + " --json");
+    const auto f = run_cli(
+        std::string("family octahedral --param axes=2 --param edges=1 --param diagonals=1 --model ") + m + " --json");
     ASSERT_EQ(f.status, 0) << f.err;
     const auto e = run_cli(std::string("evaluate octahedral-2-1-1 --model ") + m + " --json");
     ASSERT_EQ(e.status, 0) << e.err;
     const Json fj = Json::parse(f.out), ej = Json::parse(e.out);
     EXPECT_EQ(fj["model"], m);
-    for (const char* c : {"D", "A", "E", "S"}) EXPECT_NEAR(fj[c].get<double>() / ej[c].get<double>(), 1.0, 1e-10) << m << c;
+    for (const char* c : {"D", "A", "E", "S"})
+      EXPECT_NEAR(fj[c].get<double>() / ej[c].get<double>(), 1.0, 1e-10) << m << c;
     EXPECT_EQ(fj.contains("theta_cubic"), std::string(m) == "cubic12") << m;
     EXPECT_EQ(fj.contains("theta_scale"), std::string(m) != "bias3") << m;
   }

@@ -42,17 +42,14 @@ TEST(ModelFamily, Paper9MomentMatrixFromMomentsIsTheFamilysOwnHtH) {
 
 TEST(ModelFamily, ExactCriteriaOfEveryModelMatchTheNumericEvaluation) {
   const std::vector<std::pair<std::string, std::vector<std::string>>> cases = {
-      {"octahedral", {"axes=1", "edges=1", "diagonals=1"}},
-      {"rotation", {"k=5", "phase=10"}},
-      {"icosahedral", {}}};
+      {"octahedral", {"axes=1", "edges=1", "diagonals=1"}}, {"rotation", {"k=5", "phase=10"}}, {"icosahedral", {}}};
   for (const char* m : {"axis6", "bias3", "cubic12"}) {
     for (const auto& [name, settings] : cases) {
       const auto& f = sym::find_family(name);
       const auto params = sym::parse_params(f, settings);
       const auto in = f.instance(params);
       const ModelKind kind = model(m);
-      const auto exact =
-          sym::exact_criteria(sym::model_moment_matrix(kind, in.moment), in.N, sym::model_groups(kind));
+      const auto exact = sym::exact_criteria(sym::model_moment_matrix(kind, in.moment), in.N, sym::model_groups(kind));
       const ModelEvaluation ev = evaluate(kind, *f.numeric(params));
       ASSERT_TRUE(ev.full_rank()) << m << " " << name;
       for (CriterionKind c : kCriteria)
@@ -69,7 +66,8 @@ TEST(ModelFamily, Cubic12AttainingOctahedralProgramsGiveTheProvenLimitsExactly) 
   const auto groups = sym::model_groups(cubic);
   const auto d = instance("octahedral", {"axes=10", "edges=0", "diagonals=9"});
   const auto cd = sym::exact_criteria(sym::model_moment_matrix(cubic, d.moment), d.N, groups);
-  EXPECT_TRUE(sym::is_zero_exact(cd.at("D").value() - GiNaC::numeric(4093910627611872177L) / 12800000)) << cd.at("D").str();
+  EXPECT_TRUE(sym::is_zero_exact(cd.at("D").value() - GiNaC::numeric(4093910627611872177L) / 12800000))
+      << cd.at("D").str();
   const auto s = instance("octahedral", {"axes=4", "edges=0", "diagonals=3"});
   const auto cs = sym::exact_criteria(sym::model_moment_matrix(cubic, s.moment), s.N, groups);
   EXPECT_TRUE(sym::is_zero_exact(cs.at("S").value() - 27)) << cs.at("S").str();

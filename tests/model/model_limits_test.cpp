@@ -91,7 +91,8 @@ TEST(ModelLimits, TheProgramsTheProofsNameHaveTheStatedValues) {
   }
   // cubic12: 10 per axis direction and 9 per cube diagonal (N = 132) for D, 4 and 3 (N = 48) for S,
   // 44 and 45 (N = 624) for E.
-  EXPECT_NEAR(evaluate<Cubic12Model>(Program::octahedral(10, 0, 9)).value(CriterionKind::D) / stated(cubic, "D"), 1.0, 1e-11);
+  EXPECT_NEAR(evaluate<Cubic12Model>(Program::octahedral(10, 0, 9)).value(CriterionKind::D) / stated(cubic, "D"), 1.0,
+              1e-11);
   EXPECT_NEAR(evaluate<Cubic12Model>(Program::octahedral(4, 0, 3)).value(CriterionKind::S), stated(cubic, "S"), 1e-9);
   EXPECT_NEAR(evaluate<Cubic12Model>(Program::octahedral(44, 0, 45)).value(CriterionKind::E), stated(cubic, "E"), 1e-9);
   // Off the optimal weights the values are higher.
@@ -120,7 +121,8 @@ double sensitivity_max(const InformationT<Model, double>& Q) {
     const auto h = Model::row(x);
     worst = std::max(worst, h.dot(Q * h));
   }
-  for (const Vec3& x : Program::octahedral(1, 0, 1).positions) worst = std::max(worst, Model::row(x).dot(Q * Model::row(x)));
+  for (const Vec3& x : Program::octahedral(1, 0, 1).positions)
+    worst = std::max(worst, Model::row(x).dot(Q * Model::row(x)));
   return worst;
 }
 
@@ -161,7 +163,7 @@ TEST(ModelLimits, TheMultistartAtLargeNApproachesTheLimitsFromAbove) {
   o.positions = 40;
   const double d = (synthesize<DCriterion, Cubic12Model>)(o).value;
   EXPECT_GE(d, stated(cubic, "D") * (1 - 1e-9));  // no N below 132 attains it (proofs/cubic12_limits.md)
-  EXPECT_LT(d, stated(cubic, "D") * 1.10);  // 4 starts at N = 40 measured 1.061 x the limit
+  EXPECT_LT(d, stated(cubic, "D") * 1.10);        // 4 starts at N = 40 measured 1.061 x the limit
 }
 
 }  // namespace

@@ -2,9 +2,9 @@
 // with the paper's angle convention.
 #include <gtest/gtest.h>
 
-#include "numeric/program/catalogue.hpp"
 #include "numeric/criteria/evaluation.hpp"
 #include "numeric/io/input_error.hpp"
+#include "numeric/program/catalogue.hpp"
 
 namespace scalcal {
 namespace {

@@ -10,9 +10,7 @@
 namespace scalcal {
 namespace {
 
-std::string nine_axes_rows() {
-  return "1,0,0\n-1,0,0\n0,1,0\n0,-1,0\n0,0,1\n0,0,-1\n1,1,0\n0,1,1\n1,0,1\n";
-}
+std::string nine_axes_rows() { return "1,0,0\n-1,0,0\n0,1,0\n0,-1,0\n0,0,1\n0,0,-1\n1,1,0\n0,1,1\n1,0,1\n"; }
 
 Program parse(const std::string& text) { return program_from_table(parse_csv(text, "prog.csv")); }
 

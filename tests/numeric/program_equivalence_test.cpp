@@ -12,8 +12,8 @@
 
 #include <Eigen/Geometry>
 
-#include "numeric/program/program_equivalence.hpp"
 #include "numeric/criteria/registry.hpp"
+#include "numeric/program/program_equivalence.hpp"
 
 namespace scalcal {
 namespace {
@@ -177,10 +177,9 @@ TEST(ProgramEquivalence, Classic18IsMappedOntoItselfByAQuarterTurn) {
 
 TEST(ProgramEquivalence, SymmetricProgramsRotatedAtRandomStayOrthogonalEquivalent) {
   // Many ordered anchor pairs share the anchor's dot product here, so most candidates are wrong.
-  const std::vector<Program> programs = {Program::classic18(),      Program::octahedral(1, 1, 1),
-                                         Program::octahedral(2, 0, 1), Program::rotation(6),
-                                         Program::dodecahedral(),   Program::icosahedral(),
-                                         Program::nine_two_axes(),  Program::nine_three_axes()};
+  const std::vector<Program> programs = {
+      Program::classic18(),    Program::octahedral(1, 1, 1), Program::octahedral(2, 0, 1), Program::rotation(6),
+      Program::dodecahedral(), Program::icosahedral(),       Program::nine_two_axes(),     Program::nine_three_axes()};
   for (std::size_t i = 0; i < programs.size(); ++i) {
     const Program q = shuffled(transformed(programs[i], random_rotation(i + 1)), i);
     EXPECT_TRUE(equivalent(programs[i], q, kOrthogonal)) << "program " << i;

@@ -61,7 +61,8 @@ namespace {
 TEST(Rank, NearlySingularProgramKeepsPositiveCriteria) {
   Program p;
   for (int j = 0; j < 12; ++j)
-    p.positions.push_back(Vec3(std::cos(0.5 * j), std::sin(0.5 * j), (j % 2 ? 1e-5 : -1e-5) * (1 + j % 3)).normalized());
+    p.positions.push_back(
+        Vec3(std::cos(0.5 * j), std::sin(0.5 * j), (j % 2 ? 1e-5 : -1e-5) * (1 + j % 3)).normalized());
   const Evaluation ev = evaluate(p);
   ASSERT_EQ(ev.rank, 9);
   EXPECT_GT(ev.value(CriterionKind::E), 1e15);

@@ -19,9 +19,9 @@ std::pair<int, std::string> run(const std::string& args) {
 TEST(OptimizeCli, JsonKeys) {
   const auto [code, out] = run("optimize --positions 9 --criterion D --starts 2 --digits 30 --json");
   ASSERT_EQ(code, 0);
-  for (const char* key : {"\"criterion\"", "\"positions\"", "\"value\"", "\"program\"", "\"starts\"", "\"stopping\"", "\"hits\"",
-                          "\"seconds\"", "\"value_digits\"", "\"residual\"", "\"distinct\"", "\"local_solver\"",
-                          "\"confirmed\""})
+  for (const char* key :
+       {"\"criterion\"", "\"positions\"", "\"value\"", "\"program\"", "\"starts\"", "\"stopping\"", "\"hits\"",
+        "\"seconds\"", "\"value_digits\"", "\"residual\"", "\"distinct\"", "\"local_solver\"", "\"confirmed\""})
     EXPECT_NE(out.find(key), std::string::npos) << key;
 }
 
@@ -29,8 +29,8 @@ TEST(OptimizeCli, JsonKeys) {
 // the polished program, rounded to double, is within rounding of it: that is the one written.
 TEST(OptimizeCli, DigitsWritesThePolishedProgram) {
   const auto file = (scalcal::testing::scratch_dir() / "s12.csv").string();
-  const auto r = scalcal::testing::run_cli("optimize --positions 12 --criterion S --starts 2 --digits 30 --out " + file +
-                                           " --json");
+  const auto r = scalcal::testing::run_cli("optimize --positions 12 --criterion S --starts 2 --digits 30 --out " +
+                                           file + " --json");
   ASSERT_EQ(r.status, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j.at("converged"), true);

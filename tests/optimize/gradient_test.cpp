@@ -15,7 +15,8 @@ TEST_P(Gradients, MatchCentralDifferences) {
   const int n = 11;
   const auto problem = make_problem(GetParam(), n);
   std::vector<double> x = problem->start(Program::random(n, 7));
-  for (std::size_t i = 0; i < 3 * static_cast<std::size_t>(n); ++i) x[i] *= 1.0 + 0.01 * std::sin(double(i));  // off the sphere too
+  for (std::size_t i = 0; i < 3 * static_cast<std::size_t>(n); ++i)
+    x[i] *= 1.0 + 0.01 * std::sin(double(i));  // off the sphere too
   const int nv = problem->variables(), m = problem->constraints();
   double f;
   std::vector<double> grad(static_cast<std::size_t>(nv), 0.0), jac(static_cast<std::size_t>(m * nv), 0.0),
@@ -71,7 +72,8 @@ TEST_P(Hessians, MatchCentralDifferencesOfTheGradient) {
     if (!problem->constraint_values(at.data(), g.data(), jac.data())) return false;
     for (int r = 0; r < m; ++r)
       for (int j = 0; j < nv; ++j)
-        out[static_cast<std::size_t>(j)] += lambda[static_cast<std::size_t>(r)] * jac[static_cast<std::size_t>(r * nv + j)];
+        out[static_cast<std::size_t>(j)] +=
+            lambda[static_cast<std::size_t>(r)] * jac[static_cast<std::size_t>(r * nv + j)];
     return true;
   };
   {
@@ -110,7 +112,8 @@ TEST_P(Hessians, DeclaredZerosAreZero) {
     for (int col = 0; col <= r; ++col)
       if (!problem->hessian_entry_used(r, col)) {
         ++unused;
-        EXPECT_EQ(lower[static_cast<std::size_t>(r * (r + 1) / 2 + col)], 0.0) << criterion_name(c) << " (" << r << ", " << col << ")";
+        EXPECT_EQ(lower[static_cast<std::size_t>(r * (r + 1) / 2 + col)], 0.0)
+            << criterion_name(c) << " (" << r << ", " << col << ")";
       }
   // E's position blocks are 3 x 3 and L(a, m) meets only L(b, m): most entries are unused.
   if (c == CriterionKind::E) {
@@ -129,8 +132,10 @@ TEST(Gradients, StartsAreFeasibleForTheReformulations) {
     std::vector<double> g(static_cast<std::size_t>(problem->constraints()));
     ASSERT_TRUE(problem->constraint_values(x.data(), g.data(), nullptr));
     for (double v : g) {
-      if (c == CriterionKind::E) EXPECT_NEAR(v, 0.0, 1e-12);
-      else EXPECT_LE(v, 0.0);
+      if (c == CriterionKind::E)
+        EXPECT_NEAR(v, 0.0, 1e-12);
+      else
+        EXPECT_LE(v, 0.0);
     }
   }
 }

@@ -40,7 +40,8 @@ TEST(LiftedMaxDiagonal, JacobianMatchesCentralDifferences) {
     ASSERT_TRUE(problem.constraint_values(xm.data(), gm.data(), nullptr));
     for (int r = 0; r < m; ++r) {
       const double fd = (gp[static_cast<std::size_t>(r)] - gm[static_cast<std::size_t>(r)]) / (2 * h);
-      EXPECT_NEAR(jac[static_cast<std::size_t>(r * nv + j)], fd, 1e-6 * (1 + std::abs(fd))) << "row " << r << ", variable " << j;
+      EXPECT_NEAR(jac[static_cast<std::size_t>(r * nv + j)], fd, 1e-6 * (1 + std::abs(fd)))
+          << "row " << r << ", variable " << j;
     }
   }
 }
@@ -61,7 +62,9 @@ TEST(LiftedMaxDiagonal, LagrangianHessianMatchesCentralDifferencesAndItsPattern)
     EXPECT_TRUE(problem.objective(at.data(), f, out.data()));
     EXPECT_TRUE(problem.constraint_values(at.data(), g.data(), jac.data()));
     for (int r = 0; r < m; ++r)
-      for (int j = 0; j < nv; ++j) out[static_cast<std::size_t>(j)] += lambda[static_cast<std::size_t>(r)] * jac[static_cast<std::size_t>(r * nv + j)];
+      for (int j = 0; j < nv; ++j)
+        out[static_cast<std::size_t>(j)] +=
+            lambda[static_cast<std::size_t>(r)] * jac[static_cast<std::size_t>(r * nv + j)];
     return out;
   };
   std::vector<double> lower(static_cast<std::size_t>(nv * (nv + 1) / 2));
@@ -84,8 +87,10 @@ TEST(LiftedMaxDiagonal, LagrangianHessianMatchesCentralDifferencesAndItsPattern)
   for (int r = 0; r < nv; ++r)
     for (int c = 0; c <= r; ++c) {
       const double v = lower[static_cast<std::size_t>(r * (r + 1) / 2 + c)];
-      if ((r == c && r < 3 * n) || problem.hessian_entry_used(r, c)) used.push_back(v);
-      else EXPECT_EQ(v, 0.0) << "(" << r << ", " << c << ")";
+      if ((r == c && r < 3 * n) || problem.hessian_entry_used(r, c))
+        used.push_back(v);
+      else
+        EXPECT_EQ(v, 0.0) << "(" << r << ", " << c << ")";
     }
   std::vector<double> entries(used.size(), -1.0);
   ASSERT_TRUE(problem.lagrangian_hessian_entries(x.data(), 1.0, lambda.data(), entries.data()));

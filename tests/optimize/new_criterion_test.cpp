@@ -32,8 +32,8 @@ TEST(NewCriterion, ValuesByHand) {
   for (int i = 0; i < 15; ++i) x[i] = eta[3 * i], y[i] = eta[3 * i + 1], z[i] = eta[3 * i + 2];
   double m45[45];
   accumulate_information(x.data(), y.data(), z.data(), np, 15, m45);
-  EXPECT_NEAR(score_information<IntegratedVarianceCriterion>(m45, 15) / criterion_value<IntegratedVarianceCriterion>(p), 1.0,
-              1e-10);
+  EXPECT_NEAR(score_information<IntegratedVarianceCriterion>(m45, 15) / criterion_value<IntegratedVarianceCriterion>(p),
+              1.0, 1e-10);
 }
 
 TEST(NewCriterion, SynthesisReachesTheBoundAndThePolishConfirmsIt) {

@@ -7,11 +7,11 @@
 #include <string>
 
 #include "numeric/criteria/evaluation.hpp"
+#include "numeric/model/bias3.hpp"
 #include "numeric/polish/polish_form.hpp"
 #include "numeric/synthesis/ipopt_local.hpp"
 #include "numeric/synthesis/newton_local.hpp"
 #include "numeric/synthesis/synthesize.hpp"
-#include "numeric/model/bias3.hpp"
 
 namespace scalcal {
 namespace {

@@ -58,7 +58,8 @@ TEST(PolishE, PerturbedEdgeProgramReturnsToTheLimit) {
   EXPECT_EQ(p.value_digits.substr(0, 43), "12." + std::string(40, '0'));
   // A local correction: the polished program is the perturbed one moved by about the perturbation.
   for (int i = 0; i < start.size(); ++i)
-    EXPECT_LT((p.program.positions[static_cast<std::size_t>(i)] - start.positions[static_cast<std::size_t>(i)]).norm(), 1e-4);
+    EXPECT_LT((p.program.positions[static_cast<std::size_t>(i)] - start.positions[static_cast<std::size_t>(i)]).norm(),
+              1e-4);
   EXPECT_NEAR(evaluate(p.program).value(CriterionKind::E), 12.0, 1e-12);
 }
 
@@ -74,7 +75,7 @@ TEST(PolishE, EighteenOptimumShowsTheLimit) {
 
 TEST(PolishE, NineIsAboveTheLimitAndTheSameFromTwoOptima) {
   const SynthesisResult a = e_optimum(9, 32, 5), b = e_optimum(9, 32, 9);
-  ASSERT_NEAR(a.value / b.value, 1.0, 1e-8);       // both multistarts reached the best value
+  ASSERT_NEAR(a.value / b.value, 1.0, 1e-8);                  // both multistarts reached the best value
   ASSERT_NE(a.program.positions[0], b.program.positions[0]);  // from different double programs
   const PolishResult pa = polish(a.program, CriterionKind::E, PolishOptions{50, 40});
   const PolishResult pb = polish(b.program, CriterionKind::E, PolishOptions{50, 40});

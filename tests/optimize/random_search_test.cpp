@@ -6,9 +6,9 @@
 #include <cmath>
 
 #include "numeric/criteria/evaluation.hpp"
-#include "numeric/synthesis/random_search_kernel.hpp"
 #include "numeric/synthesis/multistart.hpp"
 #include "numeric/synthesis/random_search.hpp"
+#include "numeric/synthesis/random_search_kernel.hpp"
 
 namespace scalcal {
 namespace {
@@ -70,8 +70,10 @@ TEST(RandomSearchKernel, BatchedDAndEarlyExit) {
       std::copy(&m[0][0], &m[0][0] + 45 * kLanes, &copy[0][0]);
       d_criterion_batch(copy, n, det_needed_for(best * factor, n), v);
       const double got = *std::min_element(v, v + kLanes);
-      if (factor > 1) EXPECT_NEAR(got / best, 1.0, 1e-12);  // the winner must survive
-      else EXPECT_GE(got, best * factor);                    // exited, or a true value above it
+      if (factor > 1)
+        EXPECT_NEAR(got / best, 1.0, 1e-12);  // the winner must survive
+      else
+        EXPECT_GE(got, best * factor);  // exited, or a true value above it
     }
   }
 }

@@ -6,12 +6,12 @@
 #include <cmath>
 #include <vector>
 
-#include <boost/multiprecision/cpp_bin_float.hpp>
 #include <Eigen/Eigenvalues>
+#include <boost/multiprecision/cpp_bin_float.hpp>
 
 #include "numeric/program/program.hpp"
-#include "numeric/synthesis/sphere_newton.hpp"
 #include "numeric/synthesis/ipopt_local.hpp"
+#include "numeric/synthesis/sphere_newton.hpp"
 
 namespace scalcal {
 namespace {
@@ -140,7 +140,8 @@ TEST(SphereNewton, RankDeficientStartIsLeftAlone) {
   const SphereNewtonResult r = SphereNewton<DCriterion>().run(planar.positions);
   EXPECT_FALSE(r.converged());
   EXPECT_EQ(r.iterations, 0);
-  for (std::size_t i = 0; i < before.positions.size(); ++i) EXPECT_LT((planar.positions[i] - before.positions[i]).norm(), 1e-15);
+  for (std::size_t i = 0; i < before.positions.size(); ++i)
+    EXPECT_LT((planar.positions[i] - before.positions[i]).norm(), 1e-15);
 }
 
 }  // namespace

@@ -37,7 +37,8 @@ void expect_same_as_dense(int n, std::uint64_t seed) {
   const Eigen::VectorXd t = Eigen::VectorXd::LinSpaced(2 * n, -1.0, 1.3);
   EXPECT_LT((H.apply(t) - dense * t).norm(), 1e-12 * (dense * t).norm());
   // The inertia of H + mu I, and its solves, for shifts on both sides of its smallest eigenvalues.
-  const Eigen::VectorXd eig = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(dense, Eigen::EigenvaluesOnly).eigenvalues();
+  const Eigen::VectorXd eig =
+      Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(dense, Eigen::EigenvaluesOnly).eigenvalues();
   for (double mu : {-eig(n) - 1e-3, -eig(0) * 0.5, 0.0, -eig(0) + 1e-3, 1.0}) {
     ASSERT_TRUE(H.factor(mu)) << mu;
     int negative = 0;
@@ -88,7 +89,8 @@ TEST(SmoothOptimumCheck, FailsAtASaddle) {
   Eigen::VectorXd g;
   Eigen::MatrixXd dense;
   dense_model<DCriterion>(p, H, g, dense);
-  const double smallest = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(dense, Eigen::EigenvaluesOnly).eigenvalues()(0);
+  const double smallest =
+      Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(dense, Eigen::EigenvaluesOnly).eigenvalues()(0);
   ASSERT_LT(smallest, -1e-3 * H.mean_diagonal());  // a saddle indeed
   const SmoothOptimumCheck c = check_smooth_optimum<Paper9Model>(criterion_ops<DCriterion>(), p);
   EXPECT_TRUE(c.first_order) << c.gradient_norm;

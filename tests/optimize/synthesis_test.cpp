@@ -5,9 +5,9 @@
 
 #include <boost/multiprecision/cpp_bin_float.hpp>
 
-#include "numeric/program/catalogue.hpp"
 #include "numeric/criteria/evaluation.hpp"
 #include "numeric/polish/polish.hpp"
+#include "numeric/program/catalogue.hpp"
 #include "numeric/synthesis/multistart.hpp"
 
 namespace scalcal {

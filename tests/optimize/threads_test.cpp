@@ -37,10 +37,11 @@ TEST(Threads, ResultsByIndexAndExceptionsPassedOn) {
   });
   ASSERT_EQ(r.size(), 7u);
   for (int k = 0; k < 7; ++k) EXPECT_EQ(r[static_cast<std::size_t>(k)].value, k * k);
-  EXPECT_THROW(run_in_threads(5, 2, [](int k) -> LocalResult {
-                 if (k == 3) throw std::runtime_error("start 3");
-                 return {};
-               }),
+  EXPECT_THROW(run_in_threads(5, 2,
+                              [](int k) -> LocalResult {
+                                if (k == 3) throw std::runtime_error("start 3");
+                                return {};
+                              }),
                std::runtime_error);
 }
 

@@ -4,10 +4,10 @@
 // with line breaks stay inside their strings.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
 #include <filesystem>
 #include <fstream>
 #include <string>
-#include <unistd.h>
 
 #include "plots/figure.hpp"
 

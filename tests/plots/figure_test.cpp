@@ -3,6 +3,7 @@
 // states the intended width; text that would print below 7 pt is refused.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
@@ -11,7 +12,6 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
-#include <unistd.h>
 
 #include "plots/figure.hpp"
 
@@ -47,7 +47,8 @@ class FigureRender : public ::testing::Test {
     s.comment = "a test line";
     s.width_cm = scalcal::plots::kColumnWidthCm;  // 8.5 cm
     s.height_cm = 6.5;
-    s.body = "set xlabel 'x" + scalcal::plots::sub("1") + "'\nplot 'line.csv' skip 1 using 1:2 with linespoints title 'y'\n";
+    s.body =
+        "set xlabel 'x" + scalcal::plots::sub("1") + "'\nplot 'line.csv' skip 1 using 1:2 with linespoints title 'y'\n";
     return s;
   }
   fs::path dir_;

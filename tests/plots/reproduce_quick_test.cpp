@@ -5,9 +5,9 @@
 // silences it.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
 #include <cmath>
 #include <cstdlib>
-#include <unistd.h>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -40,9 +40,12 @@ std::vector<std::map<std::string, std::string>> read_csv(const fs::path& p) {
     std::string cell;
     bool quoted = false;
     for (char c : l) {
-      if (c == '"') quoted = !quoted;
-      else if (c == ',' && !quoted) out.push_back(cell), cell.clear();
-      else cell += c;
+      if (c == '"')
+        quoted = !quoted;
+      else if (c == ',' && !quoted)
+        out.push_back(cell), cell.clear();
+      else
+        cell += c;
     }
     out.push_back(cell);
     return out;
@@ -207,7 +210,8 @@ TEST(ReproduceQuiet, PrintsNoProgress) {
   const fs::path dir = fs::temp_directory_path() / ("scalcal_reproduce_quiet_" + std::to_string(::getpid()));
   fs::remove_all(dir);
   const std::string err = dir.string() + ".err";
-  const std::string cmd = std::string(SCALCAL_CLI) + " reproduce --quick --quiet --out " + dir.string() + " > /dev/null 2> " + err;
+  const std::string cmd =
+      std::string(SCALCAL_CLI) + " reproduce --quick --quiet --out " + dir.string() + " > /dev/null 2> " + err;
   EXPECT_EQ(std::system(cmd.c_str()), 0) << slurp(err);
   EXPECT_EQ(slurp(err), "");
   EXPECT_TRUE(fs::exists(dir / "REPORT.md"));

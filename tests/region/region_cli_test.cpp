@@ -19,8 +19,8 @@ TEST(RegionCli, OptimizeOnACapReportsLimitAndEfficiency) {
   const auto r = run_cli("optimize --positions 24 --criterion D --region cap:90 --starts 2 --json --out " + out);
   ASSERT_EQ(r.status, 0) << r.err;
   const Json j = Json::parse(r.out);
-  for (const char* key : {"criterion", "positions", "value", "program", "starts", "hits", "distinct", "region", "limit",
-                          "efficiency"})
+  for (const char* key :
+       {"criterion", "positions", "value", "program", "starts", "hits", "distinct", "region", "limit", "efficiency"})
     EXPECT_TRUE(j.contains(key)) << key;
   EXPECT_EQ(j["region"], "cap:90");
   // The hemisphere's proven D limit (proofs/cap_d_limit.md).
@@ -69,8 +69,8 @@ TEST(RegionCli, LimitsJsonOnACap) {
   EXPECT_EQ(j["region"], "cap:60");
   for (const char* c : {"D", "A", "E", "S"}) {
     ASSERT_TRUE(j.contains(c)) << c;
-    for (const char* key : {"value", "lower_bound", "relative_to_sphere", "support", "candidates", "refinements",
-                            "equivalence_gap"})
+    for (const char* key :
+         {"value", "lower_bound", "relative_to_sphere", "support", "candidates", "refinements", "equivalence_gap"})
       EXPECT_TRUE(j[c].contains(key)) << c << " " << key;
     EXPECT_LE(j[c]["lower_bound"].get<double>(), j[c]["value"].get<double>()) << c;
     double total = 0;  // the support lists weights of at least 1e-6: the rest is spread thinly

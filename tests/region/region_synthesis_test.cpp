@@ -10,9 +10,9 @@
 
 #include "numeric/criteria/evaluation.hpp"
 #include "numeric/program/catalogue.hpp"
-#include "numeric/synthesis/exchange.hpp"
 #include "numeric/region/region_limit.hpp"
 #include "numeric/region/region_synthesis.hpp"
+#include "numeric/synthesis/exchange.hpp"
 
 namespace scalcal {
 namespace {
@@ -24,7 +24,8 @@ constexpr double kSphereLimit = 61509375.0 / 4.0;
 TEST(Exchange, ReachesTheSphereLimitOnA5DesignsDirections) {
   const std::vector<Vec3> jig = resolve_program("dodecahedral-12").positions;
   std::vector<Vec3> start(24, jig[0]);
-  for (int i = 0; i < 9; ++i) start[static_cast<std::size_t>(i)] = jig[static_cast<std::size_t>(i)];  // rank 9 to begin with
+  for (int i = 0; i < 9; ++i)
+    start[static_cast<std::size_t>(i)] = jig[static_cast<std::size_t>(i)];  // rank 9 to begin with
   const ExchangeResult r = exchange(CriterionKind::D, jig, start);
   EXPECT_NEAR(r.value / kSphereLimit, 1.0, 1e-12);
   EXPECT_NEAR(evaluate(Program{r.positions}).value(CriterionKind::D) / r.value, 1.0, 1e-10);
@@ -69,7 +70,7 @@ TEST(RegionSynthesis, HemisphereDComesToTheProvenLimit) {
 // their 9 x 9 matrices); the region's certified bound and the best 48-position programs must
 // bracket them.
 TEST(RegionSynthesis, HemisphereEAndSAgainstClosedFormMeasures) {
-  const auto measure_value = [](CriterionKind c, const double (&w)[3]) {
+  const auto measure_value = [](CriterionKind c, const double(&w)[3]) {
     Mat9 M = Mat9::Zero();
     const double tilts[3] = {0, 60, 90};
     for (int k = 0; k < 3; ++k)

@@ -9,8 +9,8 @@
 
 #include "numeric/criteria/evaluation.hpp"
 #include "numeric/io/input_error.hpp"
-#include "numeric/program/program_csv.hpp"
 #include "numeric/program/catalogue.hpp"
+#include "numeric/program/program_csv.hpp"
 #include "numeric/region/region.hpp"
 #include "numeric/region/region_limit.hpp"
 
@@ -29,7 +29,7 @@ TEST(RegionSpec, CapAboutZAndAboutAGivenAxis) {
   EXPECT_FALSE(cap.contains(at_tilt(30.1, 7)));
   const Region x = parse_region({"cap:10:2,0,0"});  // the axis is normalised
   EXPECT_TRUE(x.contains(Vec3(1, 0, 0)));
-  EXPECT_TRUE(x.contains(Vec3(std::cos(0.17), std::sin(0.17), 0)));  // 9.74 degrees
+  EXPECT_TRUE(x.contains(Vec3(std::cos(0.17), std::sin(0.17), 0)));   // 9.74 degrees
   EXPECT_FALSE(x.contains(Vec3(std::cos(0.18), std::sin(0.18), 0)));  // 10.31 degrees
 }
 
@@ -38,7 +38,8 @@ TEST(RegionSpec, CapAboutZAndAboutAGivenAxis) {
 // 30485.5 instead of 1825429.6). Both parse to (1,0,1)/sqrt(2) to rounding, as does 1e300,0,1e300.
 TEST(RegionSpec, AxisOfAnyScaleIsTheSameDirection) {
   const Vec3 expected = Vec3(1, 0, 1) / std::sqrt(2.0);
-  for (const char* spec : {"cap:30:1e-323,0,1e-323", "cap:30:1,0,1", "cap:30:1e300,0,1e300", "cap:30:5e-324,0,5e-324"}) {
+  for (const char* spec :
+       {"cap:30:1e-323,0,1e-323", "cap:30:1,0,1", "cap:30:1e300,0,1e300", "cap:30:5e-324,0,5e-324"}) {
     const Region r = parse_region({spec});
     ASSERT_EQ(r.zones.size(), 1u) << spec;
     EXPECT_LE((r.zones[0].axis - expected).norm(), 2e-16) << spec;
@@ -73,10 +74,29 @@ TEST(RegionSpec, GridStaysInsideAndCoversTheRim) {
 }
 
 TEST(RegionSpec, BadSpecsAreInputErrors) {
-  for (const char* spec : {"", "cap", "cap:", "cap:0", "cap:181", "cap:-5", "cap:30:1,0", "cap:30:0,0,0", "cap:x",
-                           "cap:30:1,0,0:9", "band:50", "band:60:60", "band:70:60", "band:10:200", "faces", "faces:0",
-                           "faces:10:20", "sphere:5", "torus:3", "candidates:", "candidates:/nonexistent/file.csv",
-                           "cap:nan", "cap:1e400"}) {
+  for (const char* spec : {"",
+                           "cap",
+                           "cap:",
+                           "cap:0",
+                           "cap:181",
+                           "cap:-5",
+                           "cap:30:1,0",
+                           "cap:30:0,0,0",
+                           "cap:x",
+                           "cap:30:1,0,0:9",
+                           "band:50",
+                           "band:60:60",
+                           "band:70:60",
+                           "band:10:200",
+                           "faces",
+                           "faces:0",
+                           "faces:10:20",
+                           "sphere:5",
+                           "torus:3",
+                           "candidates:",
+                           "candidates:/nonexistent/file.csv",
+                           "cap:nan",
+                           "cap:1e400"}) {
     EXPECT_THROW(parse_region({spec}), InputError) << spec;
   }
 }

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <numbers>
 
-#include <Eigen/LU>
 #include <gtest/gtest.h>
+#include <Eigen/LU>
 
 #include "numeric/criteria/evaluation.hpp"
 #include "numeric/region/region_limit.hpp"

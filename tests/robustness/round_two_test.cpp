@@ -42,17 +42,15 @@ std::string cluster() {
 
 // Twelve directions with components 0 and +-1 (not normalised: the reader normalises), times `scale`.
 std::string dyadic_program(double scale) {
-  const std::vector<Vec3> p = {{1, 0, 0},  {0, 1, 0},  {0, 0, 1},  {1, 1, 0},  {1, 0, 1},  {0, 1, 1},
-                               {1, -1, 0}, {1, 0, -1}, {0, 1, -1}, {1, 1, 1},  {1, -1, 1}, {-1, 1, 1}};
+  const std::vector<Vec3> p = {{1, 0, 0},  {0, 1, 0},  {0, 0, 1},  {1, 1, 0}, {1, 0, 1},  {0, 1, 1},
+                               {1, -1, 0}, {1, 0, -1}, {0, 1, -1}, {1, 1, 1}, {1, -1, 1}, {-1, 1, 1}};
   std::vector<Vec3> scaled;
   for (const auto& e : p) scaled.push_back(e * scale);
   return program_csv(scaled);
 }
 
 // A file whose name is not valid UTF-8 (Latin-1 bytes), holding classic18's 18 positions.
-std::string latin1_candidates() {
-  return write_file("cand\xE9\xFF.csv", program_csv(Program::classic18().positions));
-}
+std::string latin1_candidates() { return write_file("cand\xE9\xFF.csv", program_csv(Program::classic18().positions)); }
 
 std::vector<Case> cases() {
   using E = Expect;
@@ -60,43 +58,71 @@ std::vector<Case> cases() {
   // Item 2: the polish of a rank-deficient program is refused as evaluate refuses it.
   for (const char* c : {"D", "A", "E", "S"}) {
     const std::string crit = c;
-    out.push_back({"PolishCopies" + crit, [crit] { return "polish " + copies() + " --criterion " + crit; }, E::error,
+    out.push_back({"PolishCopies" + crit,
+                   [crit] { return "polish " + copies() + " --criterion " + crit; },
+                   E::error,
                    {"copies.csv", "rank-deficient program"}});
-    out.push_back({"PolishCircle" + crit, [crit] { return "polish " + circle() + " --criterion " + crit; }, E::error,
+    out.push_back({"PolishCircle" + crit,
+                   [crit] { return "polish " + circle() + " --criterion " + crit; },
+                   E::error,
                    {"circle.csv", "rank-deficient program", "not identifiable"}});
-    out.push_back({"PolishCluster" + crit, [crit] { return "polish " + cluster() + " --criterion " + crit; }, E::error,
+    out.push_back({"PolishCluster" + crit,
+                   [crit] { return "polish " + cluster() + " --criterion " + crit; },
+                   E::error,
                    {"cluster.csv", "rank-deficient program"}});
   }
-  out.push_back({"PolishRotation4", [] { return std::string("polish rotation-4 --criterion D"); }, E::error,
+  out.push_back({"PolishRotation4",
+                 [] { return std::string("polish rotation-4 --criterion D"); },
+                 E::error,
                  {"rotation-4", "rank-deficient program: rank 6 of 9"}});
   // Item 5: a rank-deficient start exited 0 with D = inf as its "optimum".
-  out.push_back({"OptimizeFromRankDeficient", [] { return std::string("optimize --from rotation-4 --criterion D"); },
-                 E::error, {"rotation-4", "rank-deficient program: rank 6 of 9", "--from"}});
+  out.push_back({"OptimizeFromRankDeficient",
+                 [] { return std::string("optimize --from rotation-4 --criterion D"); },
+                 E::error,
+                 {"rotation-4", "rank-deficient program: rank 6 of 9", "--from"}});
   // Item 5: imaginary family parameters gave complex N and D; a repeated key silently took the last.
   for (const char* value : {"I", "sqrt(-1)", "1+2*I"}) {
     const std::string v = value;
-    out.push_back({std::string("FamilyImaginary") + (v == "I" ? "I" : v == "sqrt(-1)" ? "Sqrt" : "Sum"),
-                   [v] { return "family octahedral --param " + quote("axes=" + v); }, E::error, {"--param", "not a real number"}});
+    out.push_back({std::string("FamilyImaginary") + (v == "I"          ? "I"
+                                                     : v == "sqrt(-1)" ? "Sqrt"
+                                                                       : "Sum"),
+                   [v] { return "family octahedral --param " + quote("axes=" + v); },
+                   E::error,
+                   {"--param", "not a real number"}});
   }
   // Item 8: GiNaC's parse error came with its source location on a second line.
-  out.push_back({"FamilyParamEmpty", [] { return std::string("family octahedral --param axes="); }, E::error,
+  out.push_back({"FamilyParamEmpty",
+                 [] { return std::string("family octahedral --param axes="); },
+                 E::error,
                  {"--param", "axes=", "not an expression"}});
-  out.push_back({"FamilyParamTwice", [] { return std::string("family octahedral --param axes=1 --param axes=2"); },
-                 E::error, {"--param", "axes is given twice"}});
+  out.push_back({"FamilyParamTwice",
+                 [] { return std::string("family octahedral --param axes=1 --param axes=2"); },
+                 E::error,
+                 {"--param", "axes is given twice"}});
   // Item 4: a program scaled to subnormal numbers is the same program (its directions, which are exact
   // here: components 0 and +-1 times 2^-1060).
-  out.push_back({"ProgramSubnormal", [] { return "evaluate --json " + file("sub.csv", dyadic_program(std::ldexp(1.0, -1060))); },
-                 E::same, {}, [] { return "evaluate --json " + file("one.csv", dyadic_program(1.0)); }});
+  out.push_back({"ProgramSubnormal",
+                 [] { return "evaluate --json " + file("sub.csv", dyadic_program(std::ldexp(1.0, -1060))); },
+                 E::same,
+                 {},
+                 [] { return "evaluate --json " + file("one.csv", dyadic_program(1.0)); }});
   // Item 5: 1e20 degrees is 280 degrees (10^20 = 0 mod 8 and 10 mod 45), not what cos of a 17-digit
   // float of 1e20 * pi / 180 gives (A 73.0476 instead of 73.1476).
-  out.push_back({"JigAngleHuge", [] { return std::string("evaluate --json 'jig:cuboctahedron@orientation=aa:1,2,3,1e20'"); },
-                 E::same, {}, [] { return std::string("evaluate --json 'jig:cuboctahedron@orientation=aa:1,2,3,280.0'"); }});
+  out.push_back({"JigAngleHuge",
+                 [] { return std::string("evaluate --json 'jig:cuboctahedron@orientation=aa:1,2,3,1e20'"); },
+                 E::same,
+                 {},
+                 [] { return std::string("evaluate --json 'jig:cuboctahedron@orientation=aa:1,2,3,280.0'"); }});
   // Item 6: a JSON number out of double's range is bad input, not an internal error.
-  out.push_back({"CorrectNumberOverflow", [] {
+  out.push_back({"CorrectNumberOverflow",
+                 [] {
                    return "correct --calibration " +
-                          file("over.json", R"({"offset": [1e400, 0, 0], "matrix": [[1, 0, 0], [0, 1, 0], [0, 0, 1]]})") +
+                          file("over.json",
+                               R"({"offset": [1e400, 0, 0], "matrix": [[1, 0, 0], [0, 1, 0], [0, 0, 1]]})") +
                           " --measurements " + file("m.txt", "0 1 2 3\n");
-                 }, E::error, {"over.json", "not a JSON object"}});
+                 },
+                 E::error,
+                 {"over.json", "not a JSON object"}});
   return out;
 }
 
@@ -111,12 +137,11 @@ INSTANTIATE_TEST_SUITE_P(Issue36, RoundTwo, ::testing::ValuesIn(cases()),
 TEST(NonUtf8Path, EveryJsonOutputIsWritten) {
   const std::string region = quote("candidates:" + latin1_candidates());
   const std::string out_file = (scratch_dir() / "utf8_out.json").string();
-  for (const std::string& args :
-       {"evaluate classic18 --json --region " + region, "limits --json --region " + region,
-        "optimize --positions 12 --starts 2 --json --region " + region,
-        "random --positions 12 --count 50 --json --region " + region,
-        "sweep --positions 12 --criteria D --starts 2 --json --region " + region,
-        "augment --program classic18 --add 1 --json --region " + region}) {
+  for (const std::string& args : {"evaluate classic18 --json --region " + region, "limits --json --region " + region,
+                                  "optimize --positions 12 --starts 2 --json --region " + region,
+                                  "random --positions 12 --count 50 --json --region " + region,
+                                  "sweep --positions 12 --criteria D --starts 2 --json --region " + region,
+                                  "augment --program classic18 --add 1 --json --region " + region}) {
     SCOPED_TRACE(args);
     const CliResult r = run_limited(args);
     EXPECT_EQ(r.err.find("internal error"), std::string::npos) << r.err;
@@ -136,7 +161,8 @@ TEST(RawLogBom, IsTheSameLog) {
   std::ostringstream text;
   text << in.rdbuf();
   ASSERT_GT(text.str().size(), 1000u);
-  const std::string plain = file("xsens_plain.txt", text.str()), bom = file("xsens_bom.txt", "\xEF\xBB\xBF" + text.str());
+  const std::string plain = file("xsens_plain.txt", text.str()),
+                    bom = file("xsens_bom.txt", "\xEF\xBB\xBF" + text.str());
   const CliResult a = run_limited("calibrate --json --magnitude 9.81744 --measurements " + plain);
   const CliResult b = run_limited("calibrate --json --magnitude 9.81744 --measurements " + bom);
   EXPECT_EQ(a.status, 0) << a.err;

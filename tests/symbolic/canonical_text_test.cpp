@@ -113,9 +113,14 @@ TEST(CanonicalText, RoundTripKeepsValue) {
 // Every closed form the families and the limits produce: criteria, K's diagonal, eigenvalues.
 TEST(CanonicalText, RoundTripFamilyClosedForms) {
   const std::vector<std::pair<std::string, std::vector<std::string>>> members = {
-      {"octahedral", {"axes=a", "edges=e", "diagonals=d"}}, {"octahedral", {"axes=2", "edges=1", "diagonals=3"}},
-      {"octahedral", {"axes=a", "edges=1", "diagonals=d"}}, {"rotation", {"k=3", "phase=10"}},
-      {"rotation", {"k=4", "phase=10"}}, {"rotation", {"k=7", "phase=p"}}, {"dodecahedral", {}}, {"icosahedral", {}}};
+      {"octahedral", {"axes=a", "edges=e", "diagonals=d"}},
+      {"octahedral", {"axes=2", "edges=1", "diagonals=3"}},
+      {"octahedral", {"axes=a", "edges=1", "diagonals=d"}},
+      {"rotation", {"k=3", "phase=10"}},
+      {"rotation", {"k=4", "phase=10"}},
+      {"rotation", {"k=7", "phase=p"}},
+      {"dodecahedral", {}},
+      {"icosahedral", {}}};
   int checked = 0;
   for (const auto& [name, settings] : members) {
     const auto& f = sym::find_family(name);
@@ -126,7 +131,8 @@ TEST(CanonicalText, RoundTripFamilyClosedForms) {
     const auto in = f.instance(p);
     const auto c = sym::exact_criteria(in.M, in.N);
     std::vector<ex> forms{in.N};
-    for (const auto* v : {&c.at("D"), &c.at("A"), &c.at("E"), &c.at("S"), &c.theta_bias, &c.theta_scale, &c.theta_nonorth})
+    for (const auto* v :
+         {&c.at("D"), &c.at("A"), &c.at("E"), &c.at("S"), &c.theta_bias, &c.theta_scale, &c.theta_nonorth})
       if (v->exact) forms.insert(forms.end(), v->candidates.begin(), v->candidates.end());
     forms.insert(forms.end(), c.K_diagonal.begin(), c.K_diagonal.end());
     if (c.at("E").exact) forms.insert(forms.end(), c.eigenvalues.begin(), c.eigenvalues.end());
@@ -154,7 +160,8 @@ TEST(CanonicalText, RoundTripDisplayedCriteria) {
   for (const auto& [key, v] : p) table[GiNaC::ex_to<GiNaC::symbol>(v).get_name()] = v;
   const auto in = f.instance(p);
   const auto c = sym::exact_criteria(in.M, in.N);
-  for (const auto* v : {&c.at("D"), &c.at("A"), &c.at("E"), &c.at("S"), &c.theta_bias, &c.theta_scale, &c.theta_nonorth}) {
+  for (const auto* v :
+       {&c.at("D"), &c.at("A"), &c.at("E"), &c.at("S"), &c.theta_bias, &c.theta_scale, &c.theta_nonorth}) {
     std::string text = v->str();
     std::vector<std::string> pieces;
     if (text.rfind("max(", 0) == 0) {
@@ -183,7 +190,8 @@ TEST(CanonicalText, FamilyOutputIndependentOfSymbolOrder) {
     const auto in = f.instance(p);
     const auto c = sym::exact_criteria(in.M, in.N);
     std::vector<std::string> out{sym::canonical_text(in.N)};
-    for (const auto* v : {&c.at("D"), &c.at("A"), &c.at("E"), &c.at("S"), &c.theta_bias, &c.theta_scale, &c.theta_nonorth})
+    for (const auto* v :
+         {&c.at("D"), &c.at("A"), &c.at("E"), &c.at("S"), &c.theta_bias, &c.theta_scale, &c.theta_nonorth})
       out.push_back(v->str());
     return out;
   };

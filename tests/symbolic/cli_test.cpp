@@ -15,9 +15,9 @@ Run run(const std::string& args) { return scalcal::testing::run_cli(args); }
 TEST(FamilyCli, JsonKeys) {
   const auto r = run("family icosahedral --json");
   ASSERT_EQ(r.status, 0);
-  for (const char* key : {"\"family\": \"icosahedral\"", "\"positions\": \"20\"", "\"positions_value\": 20,",
-                          "\"D\": 15377343.75", "\"A\": 72",
-                          "\"E\": 15", "\"S\": 15", "\"exact\"", "\"D\": \"61509375/4\""})
+  for (const char* key :
+       {"\"family\": \"icosahedral\"", "\"positions\": \"20\"", "\"positions_value\": 20,", "\"D\": 15377343.75",
+        "\"A\": 72", "\"E\": 15", "\"S\": 15", "\"exact\"", "\"D\": \"61509375/4\""})
     EXPECT_NE(r.out.find(key), std::string::npos) << key << "\n" << r.out;
 }
 

@@ -8,8 +8,8 @@
 
 #include "numeric/criteria/evaluation.hpp"
 #include "numeric/io/input_error.hpp"
-#include "symbolic/exact.hpp"
 #include "symbolic/criteria.hpp"
+#include "symbolic/exact.hpp"
 #include "symbolic/family.hpp"
 
 namespace sym = scalcal::symbolic;
@@ -49,25 +49,25 @@ TEST_P(FamilyVsNumeric, ClosedFormsMatchNumericEvaluation) {
   EXPECT_NEAR(c.theta_nonorth.number() / ev.theta_nonorth, 1.0, tol);
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Families, FamilyVsNumeric,
-    ::testing::Values(Case{"octahedral", {}}, Case{"octahedral", {"axes=1", "edges=2"}},
-                      Case{"octahedral", {"axes=0", "edges=1", "diagonals=1"}},
-                      Case{"octahedral", {"axes=2", "edges=1", "diagonals=3"}},
-                      Case{"octahedral", {"axes=1", "edges=0", "diagonals=1"}}, Case{"rotation", {"k=3"}},
-                      Case{"rotation", {"k=3", "phase=10"}}, Case{"rotation", {"k=4", "phase=10"}},
-                      Case{"rotation", {"k=4", "phase=45"}}, Case{"rotation", {"k=5", "phase=7"}},
-                      Case{"rotation", {"k=6"}}, Case{"rotation", {"k=11", "phase=30"}}, Case{"dodecahedral", {}},
-                      Case{"icosahedral", {}}),
-    // Names from the parameters: without them (and PrintTo) the names held the Case's bytes,
-    // heap pointers included, so CTest's test names changed on every discovery.
-    [](const ::testing::TestParamInfo<Case>& info) {
-      std::string name = info.param.family;
-      for (const auto& p : info.param.params) name += "_" + p;
-      for (char& c : name)
-        if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-      return name;
-    });
+INSTANTIATE_TEST_SUITE_P(Families, FamilyVsNumeric,
+                         ::testing::Values(Case{"octahedral", {}}, Case{"octahedral", {"axes=1", "edges=2"}},
+                                           Case{"octahedral", {"axes=0", "edges=1", "diagonals=1"}},
+                                           Case{"octahedral", {"axes=2", "edges=1", "diagonals=3"}},
+                                           Case{"octahedral", {"axes=1", "edges=0", "diagonals=1"}},
+                                           Case{"rotation", {"k=3"}}, Case{"rotation", {"k=3", "phase=10"}},
+                                           Case{"rotation", {"k=4", "phase=10"}}, Case{"rotation", {"k=4", "phase=45"}},
+                                           Case{"rotation", {"k=5", "phase=7"}}, Case{"rotation", {"k=6"}},
+                                           Case{"rotation", {"k=11", "phase=30"}}, Case{"dodecahedral", {}},
+                                           Case{"icosahedral", {}}),
+                         // Names from the parameters: without them (and PrintTo) the names held the Case's bytes,
+                         // heap pointers included, so CTest's test names changed on every discovery.
+                         [](const ::testing::TestParamInfo<Case>& info) {
+                           std::string name = info.param.family;
+                           for (const auto& p : info.param.params) name += "_" + p;
+                           for (char& c : name)
+                             if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+                           return name;
+                         });
 
 // The octahedral closed form in symbolic multiplicities, evaluated at numbers, equals the exact
 // criteria of the numeric-multiplicity member: the closed form is the function it claims to be.

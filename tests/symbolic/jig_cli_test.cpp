@@ -45,11 +45,12 @@ TEST(JigCli, EveryJigIsAProgramEverywhere) {
 }
 
 TEST(JigCli, BadInputExits2) {
-  for (const char* bad : {"jig tetrahedron", "jig cube", "jig octahedron --criterion A", "jig cuboctahedron --criterion Q",
-                          "jig cuboctahedron --starts 0", "evaluate jig:cube@orientation=aa:0,0,0,1",
-                          "evaluate jig:cube@orientation=rows:1,0,0,0,1,0,0,0,-1", "family jig:cube --param orientation=x",
-                          "optimize --from jig:cuboctahedron --positions 15 --criterion D",
-                          "optimize --from jig:cuboctahedron --region cap:60 --criterion D"}) {
+  for (const char* bad :
+       {"jig tetrahedron", "jig cube", "jig octahedron --criterion A", "jig cuboctahedron --criterion Q",
+        "jig cuboctahedron --starts 0", "evaluate jig:cube@orientation=aa:0,0,0,1",
+        "evaluate jig:cube@orientation=rows:1,0,0,0,1,0,0,0,-1", "family jig:cube --param orientation=x",
+        "optimize --from jig:cuboctahedron --positions 15 --criterion D",
+        "optimize --from jig:cuboctahedron --region cap:60 --criterion D"}) {
     const auto r = run_cli(bad);
     EXPECT_EQ(r.status, 2) << bad << "\n" << r.err;
     EXPECT_FALSE(r.err.empty()) << bad;

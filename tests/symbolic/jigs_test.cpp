@@ -31,11 +31,18 @@ Program numeric_normals(const std::vector<sym::WeightedPoint>& pts) { return sym
 
 TEST_F(Jigs, FaceCountsOfTheSolids) {
   // Faces of each solid (Platonic, Archimedean, Catalan), from their definitions.
-  const std::map<std::string, int> faces = {
-      {"cube", 6},           {"octahedron", 8},           {"dodecahedron", 12},          {"icosahedron", 20},
-      {"cuboctahedron", 14}, {"truncated-octahedron", 14}, {"truncated-cube", 14},        {"rhombicuboctahedron", 26},
-      {"rhombic-dodecahedron", 12}, {"icosidodecahedron", 32}, {"truncated-icosahedron", 32},
-      {"rhombic-triacontahedron", 30}};
+  const std::map<std::string, int> faces = {{"cube", 6},
+                                            {"octahedron", 8},
+                                            {"dodecahedron", 12},
+                                            {"icosahedron", 20},
+                                            {"cuboctahedron", 14},
+                                            {"truncated-octahedron", 14},
+                                            {"truncated-cube", 14},
+                                            {"rhombicuboctahedron", 26},
+                                            {"rhombic-dodecahedron", 12},
+                                            {"icosidodecahedron", 32},
+                                            {"truncated-icosahedron", 32},
+                                            {"rhombic-triacontahedron", 30}};
   ASSERT_EQ(sym::printable_jigs().size(), faces.size());
   for (const auto& j : sym::printable_jigs()) {
     ASSERT_TRUE(faces.count(j.name)) << j.name;
@@ -43,7 +50,8 @@ TEST_F(Jigs, FaceCountsOfTheSolids) {
     const Program p = numeric_normals(j.normals);
     for (const auto& n : p.positions) EXPECT_NEAR(n.norm(), 1.0, 1e-15) << j.name;
     for (std::size_t a = 0; a < p.positions.size(); ++a)  // distinct faces, each with its opposite face
-      for (std::size_t b = a + 1; b < p.positions.size(); ++b) EXPECT_GT((p.positions[a] - p.positions[b]).norm(), 1e-3);
+      for (std::size_t b = a + 1; b < p.positions.size(); ++b)
+        EXPECT_GT((p.positions[a] - p.positions[b]).norm(), 1e-3);
     for (const auto& n : p.positions) {
       double nearest = 9;
       for (const auto& m : p.positions) nearest = std::min(nearest, (n + m).norm());
@@ -137,11 +145,13 @@ TEST_F(Jigs, RhombicuboctahedronIsOctahedral111) {
   const Program orbit = scalcal::resolve_program("octahedral-1-1-1");
   ASSERT_EQ(jig.size(), orbit.size());
   for (int i = 0; i < jig.size(); ++i) EXPECT_NEAR((jig.positions[i] - orbit.positions[i]).norm(), 0, 1e-16);
-  EXPECT_EQ(scalcal::evaluate(jig).value(scalcal::CriterionKind::D), scalcal::evaluate(orbit).value(scalcal::CriterionKind::D));
+  EXPECT_EQ(scalcal::evaluate(jig).value(scalcal::CriterionKind::D),
+            scalcal::evaluate(orbit).value(scalcal::CriterionKind::D));
 }
 
 TEST_F(Jigs, DefaultMountingsOfTheOldJigsAreTheCatalogues) {
-  for (const auto& [jig, old] : {std::pair{"jig:dodecahedron", "dodecahedral-12"}, std::pair{"jig:icosahedron", "icosahedral-20"}}) {
+  for (const auto& [jig, old] :
+       {std::pair{"jig:dodecahedron", "dodecahedral-12"}, std::pair{"jig:icosahedron", "icosahedral-20"}}) {
     const Program a = scalcal::resolve_program(jig), b = scalcal::resolve_program(old);
     ASSERT_EQ(a.size(), b.size());
     for (int i = 0; i < a.size(); ++i) EXPECT_NEAR((a.positions[i] - b.positions[i]).norm(), 0, 1e-15) << jig;
@@ -168,7 +178,9 @@ TEST_F(Jigs, WhatTheMountingChanges) {
   }
   const Program cubo = scalcal::resolve_program("jig:cuboctahedron");
   const auto turned = scalcal::evaluate(scalcal::mounted(scalcal::uniform_rotation(0.3, 0.3, 0.3), cubo));
-  EXPECT_GT(std::abs(turned.value(scalcal::CriterionKind::A) - scalcal::evaluate(cubo).value(scalcal::CriterionKind::A)), 1e-3);
+  EXPECT_GT(
+      std::abs(turned.value(scalcal::CriterionKind::A) - scalcal::evaluate(cubo).value(scalcal::CriterionKind::A)),
+      1e-3);
 }
 
 TEST_F(Jigs, TheBestMountingImprovesAAndNeverWorsens) {
@@ -180,14 +192,16 @@ TEST_F(Jigs, TheBestMountingImprovesAAndNeverWorsens) {
   EXPECT_DOUBLE_EQ(r.value_default, 73.25);  // 293/4 by hand (symbolic/ADDING_A_FAMILY.md)
   EXPECT_LT(r.value, r.value_default - 1);
   EXPECT_GT(r.value, 45 + 18 * std::sqrt(2.0));  // never below the limit
-  EXPECT_NEAR(scalcal::evaluate(scalcal::mounted(r.orientation, cubo)).value(scalcal::CriterionKind::A), r.value, 1e-12);
+  EXPECT_NEAR(scalcal::evaluate(scalcal::mounted(r.orientation, cubo)).value(scalcal::CriterionKind::A), r.value,
+              1e-12);
   EXPECT_NEAR((r.orientation * r.orientation.transpose() - Eigen::Matrix3d::Identity()).norm(), 0, 1e-12);
   EXPECT_NEAR(r.orientation.determinant(), 1, 1e-12);
 }
 
 TEST_F(Jigs, AnalysisOfTheLimits) {
   // Every icosahedral jig is a 4-design; no octahedral one is (sum of x^4+y^4+z^4 differs from 3N/5).
-  for (const auto& j : sym::printable_jigs()) EXPECT_EQ(sym::is_design(j.normals, 4), j.symmetry == "icosahedral") << j.name;
+  for (const auto& j : sym::printable_jigs())
+    EXPECT_EQ(sym::is_design(j.normals, 4), j.symmetry == "icosahedral") << j.name;
   const auto rd = sym::analyse_jig(sym::printable_jigs()[8].normals);  // rhombic dodecahedron: E = 12 by hand
   EXPECT_EQ(rd.claim[2].status, "reached at the default mounting");
   const auto icosa = sym::analyse_jig(sym::printable_jigs()[3].normals);
@@ -201,12 +215,13 @@ TEST_F(Jigs, AnalysisOfTheLimits) {
 
 TEST_F(Jigs, BadNamesAndOrientations) {
   EXPECT_FALSE(scalcal::named_program("jig:tetrahedron").has_value());
-  for (const char* bad : {"jig:cube@orientation=aa:0,0,0,30", "jig:cube@orientation=aa:1,0,0", "jig:cube@orientation=q:0,0,0,0",
-                          "jig:cube@orientation=rows:1,0,0,0,1,0,0,0,-1", "jig:cube@orientation=rows:1,1,0,0,1,0,0,0,1",
-                          "jig:cube@orientation=aa:1,0,0,t", "jig:cube@colour=red", "jig:cube@orientation=spin",
-                          "jig:cube@orientation=aa:1,0,0,9^9^9", "jig:cube@orientation=aa:1,0,0,99!",
-                          "jig:cube@orientation=rows:sqrt(-1),0,0,0,1,0,0,0,1", "jig:cube@orientation=aa:1,0,0,1/0",
-                          "jig:cube@orientation=q:1,0,0", "jig:cube@orientation=aa:1,0,0,30,4", "jig:cube@"})
+  for (const char* bad :
+       {"jig:cube@orientation=aa:0,0,0,30", "jig:cube@orientation=aa:1,0,0", "jig:cube@orientation=q:0,0,0,0",
+        "jig:cube@orientation=rows:1,0,0,0,1,0,0,0,-1", "jig:cube@orientation=rows:1,1,0,0,1,0,0,0,1",
+        "jig:cube@orientation=aa:1,0,0,t", "jig:cube@colour=red", "jig:cube@orientation=spin",
+        "jig:cube@orientation=aa:1,0,0,9^9^9", "jig:cube@orientation=aa:1,0,0,99!",
+        "jig:cube@orientation=rows:sqrt(-1),0,0,0,1,0,0,0,1", "jig:cube@orientation=aa:1,0,0,1/0",
+        "jig:cube@orientation=q:1,0,0", "jig:cube@orientation=aa:1,0,0,30,4", "jig:cube@"})
     EXPECT_THROW(scalcal::resolve_program(bad), scalcal::InputError) << bad;
 }
 

@@ -107,7 +107,7 @@ TEST(TestOnlyFamily, BadNamesAndValues) {
   EXPECT_THROW(scalcal::resolve_program("testcubo-1@copies=k"), scalcal::InputError);
   EXPECT_THROW(scalcal::resolve_program("testcubo-1@size=2"), scalcal::InputError);
   EXPECT_THROW(scalcal::resolve_program("testcubo-x"), scalcal::InputError);  // neither a name nor a file
-  EXPECT_THROW(sym::register_family(test_family()), std::invalid_argument);    // the name is taken
+  EXPECT_THROW(sym::register_family(test_family()), std::invalid_argument);   // the name is taken
 }
 
 }  // namespace

@@ -16,7 +16,8 @@ int main() {
   std::cout << "D = " << d << "\n";
   if (std::abs(d / 15377343.75 - 1) > 1e-12) return 1;
 #ifndef NUMERIC_ONLY
-  const std::string exact = scalcal::symbolic::canonical_text(scalcal::symbolic::symbolic_limit(*scalcal::parse_criterion("D")).value);
+  const std::string exact =
+      scalcal::symbolic::canonical_text(scalcal::symbolic::symbolic_limit(*scalcal::parse_criterion("D")).value);
   std::cout << "D limit = " << exact << "\n";
   if (exact != "61509375/4") return 1;
 #endif
