@@ -8,6 +8,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "commands/tool_info.hpp"
 #include "experiments/cli/command.hpp"
 #include "experiments/cli/output_file.hpp"
 #include "numeric/io/input_error.hpp"
@@ -56,7 +57,9 @@ int main(int argc, char** argv) {
 
   CLI::App app("scalar calibration programs for vector meters", "scalcal");
   app.set_help_flag();
-  app.set_version_flag("--version", "scalcal " SCALCAL_VERSION);
+  // The version with what a bug report needs: the commit and the build type the binary was made from.
+  app.set_version_flag("--version", std::string("scalcal " SCALCAL_VERSION " (commit ") +
+                                        scalcal::commands::tool_commit() + ", " SCALCAL_BUILD_TYPE " build)");
   app.require_subcommand(1, 1);
   app.get_formatter()->column_width(30);
   std::map<std::string, scalcal::cli::Runner> runners;
