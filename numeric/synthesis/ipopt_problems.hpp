@@ -16,6 +16,7 @@
 #include "numeric/synthesis/criterion_ops.hpp"
 #include "numeric/synthesis/max_diagonal_lifted.hpp"
 #include "numeric/synthesis/smooth_problem.hpp"
+#include "numeric/synthesis/symmetric_pairs.hpp"
 #include "numeric/synthesis/synthesis_models.hpp"
 
 namespace scalcal {
@@ -115,7 +116,7 @@ class MaxEigenvalueProblem : public SmoothProblem {
   using MatP = InformationT<Model, double>;
   using RowP = RowT<Model, double>;
   using SmoothProblem::SmoothProblem;
-  static int pair(int a, int b) { return a >= b ? a * (a + 1) / 2 + b : b * (b + 1) / 2 + a; }
+  static int pair(int a, int b) { return symmetric_pair(a, b); }
   static int column_of_pair(int k) {
     int a = 0;
     while ((a + 1) * (a + 2) / 2 <= k) ++a;

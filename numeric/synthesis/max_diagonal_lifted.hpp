@@ -14,6 +14,7 @@
 #include <Eigen/Cholesky>
 
 #include "numeric/synthesis/smooth_problem.hpp"
+#include "numeric/synthesis/symmetric_pairs.hpp"
 
 namespace scalcal {
 
@@ -27,7 +28,7 @@ class MaxDiagonalLiftedProblem : public SmoothProblem {
   MaxDiagonalLiftedProblem(int positions, std::vector<int> rows) : SmoothProblem(positions), rows_(std::move(rows)) {}
   int extra() const override { return 1 + Q; }
   int constraints() const override { return Q + static_cast<int>(rows_.size()); }
-  static int pair(int a, int b) { return a >= b ? a * (a + 1) / 2 + b : b * (b + 1) / 2 + a; }
+  static int pair(int a, int b) { return symmetric_pair(a, b); }
 
   std::vector<double> start(const Program& program) const override {
     std::vector<double> x = SmoothProblem::start(program);
@@ -145,28 +146,7 @@ bool MaxDiagonalLiftedProblem<Model>::blocks(const double* x, const double* lamb
   RowT<Model, double> mu = RowT<Model, double>::Zero();
   for (std::size_t k = 0; k < rows_.size(); ++k) mu(rows_[k]) += lambda[Q + static_cast<int>(k)];
   const MatP B = Z * mu.asDiagonal() * Z;
-  // tr(e_p e_s^T X e_u e_v^T W) = X(s, u) W(v, p) over the terms (p, s) of S1 and (u, v) of S2.
-  struct Term {
-    int p, s;
-  };
-  auto terms = [](int a, int b, Term* out) {
-    out[0] = {a, b};
-    if (a == b) return 1;
-    out[1] = {b, a};
-    return 2;
-  };
-  for (int a = 0; a < P; ++a)
-    for (int b = 0; b <= a; ++b)
-      for (int c = 0; c < P; ++c)
-        for (int d = 0; d <= c; ++d) {
-          Term t1[2], t2[2];
-          const int k1 = terms(a, b, t1), k2 = terms(c, d, t2);
-          double sum = 0;
-          for (int u = 0; u < k1; ++u)
-            for (int v = 0; v < k2; ++v)
-              sum += Z(t1[u].s, t2[v].p) * B(t2[v].s, t1[u].p) + B(t1[u].s, t2[v].p) * Z(t2[v].s, t1[u].p);
-          y(pair(a, b), pair(c, d)) = sum;
-        }
+  y = pair_trace_form<P>(Z, B);  // tr(S1 Z S2 B) + tr(S1 B S2 Z) (symmetric_pairs.hpp)
   return true;
 }
 

@@ -18,6 +18,7 @@
 #include "numeric/criteria/criterion.hpp"
 #include "numeric/model/design.hpp"
 #include "numeric/synthesis/sphere_newton.hpp"
+#include "numeric/synthesis/symmetric_pairs.hpp"
 
 namespace scalcal {
 
@@ -51,7 +52,7 @@ class StructuredHessian {
   VecX solve(const VecX& b) const;  // (H + mu I)^-1 b
 
  private:
-  static int pair(int a, int b) { return a >= b ? a * (a + 1) / 2 + b : b * (b + 1) / 2 + a; }
+  static int pair(int a, int b) { return symmetric_pair(a, b); }
   void coupling(const MatP& A, const MatP& B, double c);  // W_, then V_ and sigma_
 
   int n_ = 0;
@@ -95,29 +96,8 @@ void StructuredHessian<Model>::assemble(const std::vector<Vec3>& eta, const Matr
 
 template <class Model>
 void StructuredHessian<Model>::coupling(const MatP& A, const MatP& B, double c) {
-  // W(q1, q2) = c [tr(S1 A S2 B) + tr(S1 B S2 A)], S_ab = e_a e_b^T + e_b e_a^T (e_a e_a^T when a = b),
-  // and tr(e_p e_s^T X e_u e_v^T Y) = X(s, u) Y(v, p).
-  struct Term {
-    int p, s;
-  };
-  auto terms = [](int a, int b, Term* out) {
-    out[0] = {a, b};
-    if (a == b) return 1;
-    out[1] = {b, a};
-    return 2;
-  };
-  for (int a = 0; a < P; ++a)
-    for (int b = 0; b <= a; ++b)
-      for (int e = 0; e < P; ++e)
-        for (int f = 0; f <= e; ++f) {
-          Term t1[2], t2[2];
-          const int k1 = terms(a, b, t1), k2 = terms(e, f, t2);
-          double sum = 0;
-          for (int x = 0; x < k1; ++x)
-            for (int y = 0; y < k2; ++y)
-              sum += A(t1[x].s, t2[y].p) * B(t2[y].s, t1[x].p) + B(t1[x].s, t2[y].p) * A(t2[y].s, t1[x].p);
-          W_(pair(a, b), pair(e, f)) = c * sum;
-        }
+  // W(q1, q2) = c [tr(S1 A S2 B) + tr(S1 B S2 A)] (symmetric_pairs.hpp).
+  W_ = c * pair_trace_form<P>(A, B);
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, Q, Q>> es(W_);
   const double largest = es.eigenvalues().cwiseAbs().maxCoeff();
   std::vector<int> kept;
