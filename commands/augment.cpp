@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "commands/region_request.hpp"
+#include "commands/work_bound.hpp"
 #include "numeric/program/catalogue.hpp"
 #include "numeric/region/region_limit.hpp"
 
@@ -52,6 +53,8 @@ AugmentResult augment(const AugmentRequest& q, const Progress& progress) {
   r.model = q.model;
   r.region = resolve_region(q.regions, r.warnings);
   r.given = q.given.size();
+  check_work(std::to_string(q.given.size()) + " + " + std::to_string(q.add) + " positions",
+             augment_work(q.given.size() + q.add), "augment a smaller program");
   r.augmented = augment_program(q.given, q.add, q.criterion, r.region, q.model, q.polish);
   r.columns = region_columns(r.region, r.augmented.program);
   if (q.model == ModelKind::paper9 && std::isfinite(r.augmented.value)) {

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "commands/usage_error.hpp"
+#include "commands/work_bound.hpp"
 
 namespace scalcal::commands {
 
@@ -27,6 +28,8 @@ CertifyRequest certify_request(const Values& v) {
 
 CertifyCommandResult certify(const CertifyRequest& q, const Progress&) {
   if (q.program.size() < 9) throw UsageError("certify: " + q.name + ": a program needs at least 9 positions");
+  check_work(std::to_string(q.program.size()) + " positions at --digits " + std::to_string(q.digits),
+             certify_work(q.program.size(), q.digits), "certify a smaller program or at fewer digits");
   CertifyCommandResult r;
   r.criterion = q.criterion;
   r.positions = q.program.size();

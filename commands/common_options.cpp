@@ -4,6 +4,7 @@
 #include <charconv>
 #include <stdexcept>
 
+#include "numeric/io/input_error.hpp"
 #include "numeric/program/catalogue.hpp"
 
 namespace scalcal::commands {
@@ -203,9 +204,17 @@ LocalSolver local_solver_of(const Values& v) {
                            : LocalSolver::Automatic;
 }
 
+// The minimum number of positions is the model's (one per parameter), so it is checked here, where
+// the model is known, not by the file reader (which only refuses fewer than any model needs).
 Program program_of(const Values& v, const std::string& option) {
-  if (v.program) return *v.program;
-  return resolve_program(v.text(option));
+  Program p = v.program ? *v.program : resolve_program(v.text(option));
+  const ModelKind model = v.table().find("--model") ? model_of(v) : ModelKind::paper9;
+  const int needed = model_parameters(model);
+  if (p.size() < needed)
+    throw InputError(v.program ? option : v.text(option), 0,
+                     "only " + std::to_string(p.size()) + " positions; model " + std::string(model_name(model)) +
+                         " needs at least " + std::to_string(needed) + " (one per parameter)");
+  return p;
 }
 
 }  // namespace scalcal::commands

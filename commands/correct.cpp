@@ -47,14 +47,9 @@ std::string distrust(const nlohmann::json& j, const FullCorrection& c) {
 }  // namespace
 
 FullCorrection read_calibration(const std::string& file, bool force, Warnings& warnings) {
-  const std::string text = read_text_file(file);
-  nlohmann::json j;
-  try {
-    j = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::exception& e) {  // a syntax error, or a number such as 1e400 out of range
-    throw InputError(file, 0, std::string("not a JSON object written by `calibrate --out`: ") + e.what());
-  }
-  return calibration_of(Json(j), file, force, warnings);
+  return calibration_of(
+      parse_json_file_text(read_text_file(file), file, "a JSON object written by `calibrate --out`"), file, force,
+      warnings);
 }
 
 FullCorrection calibration_of(const Json& document, const std::string& file, bool force, Warnings& warnings) {

@@ -21,8 +21,8 @@ constexpr const char* kKept[] = {"format_version", "created", "tool",   "sensor"
 void write_json(const ExportRequest& q, ExportResult& r) {
   Json doc = Json::object();
   try {
-    doc = Json::parse(read_text_file(q.calibration));
-  } catch (const Json::exception&) {  // read_calibration has checked it already
+    doc = parse_json_file_text(read_text_file(q.calibration), q.calibration);
+  } catch (const InputError&) {  // read_calibration has checked it already
   }
   Json out = Json::object();
   for (const char* key : kKept)

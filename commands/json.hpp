@@ -19,4 +19,12 @@ Json matrix_json(const Mat9& m);            // nine rows of nine numbers
 // an exception half-way through the output.
 std::string json_text(const Json& j, int indent = -1);
 
+// The JSON files scalcal reads (calibrations, meters) are a few levels deep: a text nested deeper
+// than this is refused as soon as the parser reaches that depth, so 60 MB of '[' costs no more
+// memory than the text itself.
+inline constexpr int kMaxJsonDepth = 64;
+// Parses `text`; a syntax error, a number out of range (1e400) or nesting deeper than kMaxJsonDepth
+// throws InputError naming `file` and "not <expected>: <reason>".
+Json parse_json_file_text(const std::string& text, const std::string& file, const std::string& expected = "JSON");
+
 }  // namespace scalcal::commands

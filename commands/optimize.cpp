@@ -5,6 +5,7 @@
 
 #include "commands/region_request.hpp"
 #include "commands/usage_error.hpp"
+#include "commands/work_bound.hpp"
 #include "numeric/criteria/identifiability.hpp"
 #include "numeric/criteria/model_evaluation.hpp"
 #include "numeric/io/input_error.hpp"
@@ -122,6 +123,9 @@ OptimizeResult optimize(const OptimizeRequest& q, const Progress& progress) {
                      "the polish solves the unconstrained optimality conditions; it cannot keep positions inside "
                      "--region " +
                          r.region->text());
+  if (q.digits > 0)
+    check_work("--positions " + std::to_string(opt.positions) + " --digits " + std::to_string(q.digits),
+               polish_work(opt.positions, q.digits), "polish fewer positions or to fewer digits");
   r.synthesis = restricted ? synthesize_on_region(opt, r.designed_on ? *r.designed_on : *r.region) : synthesize(opt);
   if (!r.synthesis.summary.converged())
     r.warnings.push_back({"", r.synthesis.summary.message + " (" + r.synthesis.local_solver + " multistart)"});

@@ -33,12 +33,7 @@ struct Interval {
 
 // The calibration's intervals (start, end in seconds, raw mean, residual) and |I|.
 std::vector<Interval> intervals_of(const std::string& file, double& magnitude) {
-  Json j;
-  try {
-    j = Json::parse(read_text_file(file));
-  } catch (const Json::exception& e) {
-    throw InputError(file, 0, std::string("not JSON: ") + e.what());
-  }
+  Json j = parse_json_file_text(read_text_file(file), file);
   if (!j.is_object() || !j.contains("intervals") || !j["intervals"].is_array())
     throw InputError(file, 0, "not a calibration of a log (calibrate --out): it has no 'intervals'");
   magnitude = j.contains("magnitude") && j["magnitude"].is_number() ? j["magnitude"].get<double>() : 1.0;

@@ -3,6 +3,7 @@
 
 #include <stdexcept>
 
+#include "commands/work_bound.hpp"
 #include "numeric/criteria/evaluation.hpp"
 #include "numeric/criteria/identifiability.hpp"
 #include "numeric/io/input_error.hpp"
@@ -30,6 +31,8 @@ PolishRequest polish_request(const Values& v) {
 PolishCommandResult polish(const PolishRequest& q, const Progress&) {
   const Evaluation ev = evaluate(q.program);
   if (!ev.full_rank()) throw InputError(q.name, 0, rank_deficiency(ev));
+  check_work(std::to_string(q.program.size()) + " positions at --digits " + std::to_string(q.digits),
+             polish_work(q.program.size(), q.digits), "polish fewer positions or to fewer digits");
   PolishCommandResult r;
   r.criterion = q.criterion;
   r.positions = q.program.size();

@@ -3,6 +3,7 @@
 
 #include "commands/region_request.hpp"
 #include "commands/usage_error.hpp"
+#include "commands/work_bound.hpp"
 #include "numeric/region/region_sampler.hpp"
 
 namespace scalcal::commands {
@@ -39,6 +40,9 @@ RandomResult random_programs(const RandomRequest& q, const Progress&) {
     throw UsageError("random: --positions " + std::to_string(q.positions) + " is below the " +
                      std::to_string(model_parameters(q.model)) + " parameters of --model " +
                      std::string(model_name(q.model)));
+  check_work("--count " + std::to_string(q.count) + " at --positions " + std::to_string(q.positions),
+             random_search_work(q.count, q.positions, model_parameters(q.model)),
+             "lower --count or --positions, or run several seeds one after another");
   RandomResult r;
   r.request = q;
   PositionSampler sampler;

@@ -42,12 +42,7 @@ Vec3 read_triple(const Json& j, const std::string& key, const std::string& file)
 
 // bias (file units), scale_deviation, nonorthogonality (rad), as calibrate --json writes them.
 Meter meter_from_file(const RehearsalRequest& q) {
-  Json j;
-  try {
-    j = Json::parse(read_text_file(q.meter_file));
-  } catch (const Json::exception& e) {
-    throw InputError(q.meter_file, 0, std::string("not JSON: ") + e.what());
-  }
+  const Json j = parse_json_file_text(read_text_file(q.meter_file), q.meter_file);
   if (!j.is_object())
     throw InputError(q.meter_file, 0, "expected a JSON object with bias, scale_deviation, nonorthogonality");
   Vec9 X;

@@ -83,7 +83,7 @@ void set(commands::Values& values, const Option& o, py::handle v) {
       });
       const std::string text =
           py::str(py::module_::import("json").attr("dumps")(v, py::arg("default") = plain)).cast<std::string>();
-      values.documents[o.name] = commands::Json::parse(text);
+      values.documents[o.name] = commands::parse_json_file_text(text, o.python_name());
       values.set(o.name, o.python_name());
     } else if (o.takes_positions && !py::isinstance<py::str>(v) && !py::hasattr(v, "__fspath__")) {
       values.program = program_of(v, o.python_name());  // an (N, 3) array of directions

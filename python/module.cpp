@@ -15,6 +15,7 @@
 #include "commands/usage_error.hpp"
 #include "numeric/calibration/measurements_csv.hpp"
 #include "numeric/io/input_error.hpp"
+#include "numeric/io/resource_error.hpp"
 #include "numeric/program/catalogue.hpp"
 #include "python/arguments.hpp"
 #include "python/bindings.hpp"
@@ -114,6 +115,8 @@ PYBIND11_MODULE(_scalcal, m) {
       input_error(e.what());
     } catch (const scalcal::UsageError& e) {
       usage_error(e.what());
+    } catch (const scalcal::ResourceError& e) {
+      PyErr_SetString(PyExc_OSError, e.what());  // the machine's limits, as Python reports them
     }
   });
   m.def("tables", &sp::tables);

@@ -17,12 +17,14 @@ else
   cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=None -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_CXX_FLAGS="$flags" \
     -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" -DSCALCAL_FUZZ=ON -DSCALCAL_MPI=OFF -DSCALCAL_PYTHON=OFF >/dev/null
 fi
-targets=(fuzz_program_csv fuzz_measurements_csv fuzz_catalogue_name fuzz_region_spec)
+targets=(fuzz_program_csv fuzz_measurements_csv fuzz_catalogue_name fuzz_region_spec fuzz_calibration_json
+  fuzz_family_params fuzz_program_name)
 cmake --build "$build" -j"$(nproc)" $(printf -- '--target %s ' "${targets[@]}")
 
 # Seeds: the programs and bench files in the repository, and a few catalogue names.
 corpus="$build"/corpus
-rm -rf "$corpus" && mkdir -p "$corpus"/{fuzz_program_csv,fuzz_measurements_csv,fuzz_catalogue_name,fuzz_region_spec} "$build"/findings
+rm -rf "$corpus" && mkdir -p "$build"/findings
+for t in "${targets[@]}"; do mkdir -p "$corpus/$t"; done
 find data experiments/docs -name '*.csv' | while read -r f; do
   if head -c 4096 "$f" | grep -q 'ix'; then
     for m in 0 1; do { printf "\\x3$m"; cat "$f"; } >"$corpus/fuzz_measurements_csv/$m-$(basename "$f")"; done
@@ -41,6 +43,23 @@ done
 i=0
 for specs in sphere cap:30 'cap:30:1,1,1' band:60:120 'band:10:170:0,1,0' faces:20 $'cap:20\ncap:20:0,0,-1'; do
   printf '%s' "$specs" >"$corpus/fuzz_region_spec/$((i++))"
+done
+# A calibration as calibrate --out writes it (the keys correct reads), and one refused as unconverged.
+printf '%s' '{"format_version": 1, "model": "paper9", "converged": true, "magnitude": 9.81,
+ "offset": [0.05, -0.02, 0.03], "matrix": [[1.01, 0.002, 0], [0, 0.99, -0.001], [0.003, 0, 1.0]]}' \
+  >"$corpus/fuzz_calibration_json/0"
+printf '%s' '{"converged": false, "offset": [0, 0, 0], "matrix": [[1, 0, 0], [0, 1, 0], [0, 0, 1]]}' \
+  >"$corpus/fuzz_calibration_json/1"
+# Family parameters: the first byte picks the family (by its index), then KEY=VALUE lines.
+i=0
+for p in $'\x00axes=2\nedges=1' $'\x01k=7\nphase=15' $'\x02orientation=aa:1,2,3,40' $'\x03orientation=q:1,0,0,1' \
+  $'\x04axes=sqrt(2)' $'\x05orientation=rows:1,0,0,0,1,0,0,0,1'; do
+  printf '%s' "$p" >"$corpus/fuzz_family_params/$((i++))"
+done
+i=0
+for name in 'jig:cube@orientation=aa:1,2,3,40' 'jig:cuboctahedron' 'jig:dodecahedron@orientation=q:1,0,0,1' \
+  'dodecahedral-12' 'icosahedral-20'; do
+  printf '%s' "$name" >"$corpus/fuzz_program_name/$((i++))"
 done
 export SCALCAL_DATA="$PWD/data"
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1"

@@ -18,12 +18,18 @@
 
 namespace scalcal::symbolic {
 
+// Symbols across all parameters of a family: the exact criteria's cost grows steeply with them
+// (octahedral: 5 symbols 0.5 s, 6 symbols 3.7 s, 8 symbols 23 s, 12 over 60 s and 1.7 GB).
+inline constexpr int kMaxFamilySymbols = 6;
+
 struct FamilyParam {
   std::string key;
   std::string fallback;  // default value, as text
   std::string doc;
   // How the text of a value becomes an expression; empty: GiNaC's parser (numbers and symbols).
   std::function<GiNaC::ex(const std::string& text, GiNaC::parser& reader)> read = {};
+  // The most distinct symbols this parameter may hold: exact forms grow fast with symbols (docs/family.md).
+  int max_symbols = kMaxFamilySymbols;
 };
 
 using ParamMap = std::map<std::string, GiNaC::ex>;

@@ -2,8 +2,10 @@
 // family_files.inc, one X(FILE) each) and those registered at run time, and their program names
 // in numeric's registry.
 #include <algorithm>
+#include <cmath>
 #include <mutex>
 #include <regex>
+#include <set>
 #include <stdexcept>
 
 #include "numeric/io/input_error.hpp"
@@ -210,16 +212,70 @@ std::string param_text(const GiNaC::ex& e) {
   return canonical_text(e);
 }
 
+namespace {
+
+// GiNaC evaluates a number raised to a number at once, exactly: 2^(2^40) would take gigabytes before
+// any range check. So an exponent must be a plain number of at most kMaxExponent in size, or an
+// expression without numbers raised to numbers inside it (a symbol, sqrt's 1/2).
+constexpr double kMaxExponent = 1000;
+
+void check_exponents(const std::string& key, const std::string& text) {
+  for (std::size_t at = text.find('^'); at != std::string::npos; at = text.find('^', at + 1)) {
+    std::size_t b = text.find_first_not_of(" \t", at + 1);
+    if (b == std::string::npos) return;  // the parser reports the syntax error
+    std::size_t e = text.find_first_of("+-*/^(), \t", b + 1);  // the end of a plain atom (2^1001)
+    e = e == std::string::npos ? text.size() - 1 : e - 1;
+    if (text[b] == '(') {
+      int depth = 0;
+      for (e = b; e < text.size(); ++e) {
+        depth += text[e] == '(' ? 1 : text[e] == ')' ? -1 : 0;
+        if (depth == 0) break;
+      }
+      const std::string inner = text.substr(b + 1, e > b ? e - b - 1 : 0);
+      if (inner.find('^') != std::string::npos)
+        throw InputError("--param", 0, key + "=" + display_name(text) + ": an exponent may not itself contain '^'");
+    }
+    const std::string exponent = text.substr(b, e - b + 1);
+    const std::size_t digits = exponent.find_first_of("0123456789");
+    if (digits == std::string::npos) continue;
+    double value = 0;
+    try {
+      value = std::stod(exponent.substr(digits));
+    } catch (const std::exception&) {
+      continue;
+    }
+    if (!(std::fabs(value) <= kMaxExponent))
+      throw InputError("--param", 0,
+                       key + "=" + display_name(text) + ": an exponent above " + std::to_string(int(kMaxExponent)) +
+                           " (the number would be computed exactly)");
+  }
+}
+
+void collect_symbols(const GiNaC::ex& e, std::set<std::string>& names) {
+  if (GiNaC::is_a<GiNaC::symbol>(e)) names.insert(GiNaC::ex_to<GiNaC::symbol>(e).get_name());
+  for (std::size_t i = 0; i < e.nops(); ++i) collect_symbols(e.op(i), names);
+}
+
+}  // namespace
+
 ParamMap parse_params(const Family& family, const std::vector<std::string>& settings) {
   GiNaC::parser reader;
   ParamMap out;
   auto read = [&](const FamilyParam& p, const std::string& text) {
+    check_exponents(p.key, text);
     try {
       const GiNaC::ex value = p.read ? p.read(text, reader) : reader(text);
       // Every family is a set of real directions: an imaginary parameter would give complex positions.
       const bool imaginary =
           GiNaC::is_a<GiNaC::numeric>(value) ? !GiNaC::ex_to<GiNaC::numeric>(value).is_real() : value.has(GiNaC::I);
       if (imaginary) throw InputError("--param", 0, p.key + "=" + display_name(text) + ": not a real number");
+      std::set<std::string> own;
+      collect_symbols(value, own);
+      if (static_cast<int>(own.size()) > p.max_symbols)
+        throw InputError("--param", 0,
+                         p.key + "=" + display_name(text) + ": " + std::to_string(own.size()) +
+                             " symbols; the exact forms take minutes to hours beyond " +
+                             std::to_string(p.max_symbols) + " here (give numbers for the others)");
       out[p.key] = value;
     } catch (const InputError&) {
       throw;
@@ -248,6 +304,12 @@ ParamMap parse_params(const Family& family, const std::vector<std::string>& sett
     given.push_back(key);
     read(*param, s.substr(eq + 1));
   }
+  std::set<std::string> all;
+  for (const auto& [key, value] : out) collect_symbols(value, all);
+  if (static_cast<int>(all.size()) > kMaxFamilySymbols)
+    throw InputError("--param", 0,
+                     std::to_string(all.size()) + " distinct symbols; the exact forms take minutes to hours beyond " +
+                         std::to_string(kMaxFamilySymbols) + " (6 take about 4 s; give numbers for the others)");
   return out;
 }
 

@@ -3,15 +3,18 @@
 // exit 1; `--help`, `help` and `--version` print to stdout and exit 0.
 #include <iostream>
 #include <map>
+#include <new>
 #include <string>
 #include <vector>
 
 #include <CLI/CLI.hpp>
+#include <sys/resource.h>
 
 #include "commands/tool_info.hpp"
 #include "experiments/cli/command.hpp"
 #include "experiments/cli/output_file.hpp"
 #include "numeric/io/input_error.hpp"
+#include "numeric/io/resource_error.hpp"
 #include "symbolic/family.hpp"
 
 namespace {
@@ -39,6 +42,21 @@ void reject_leftovers(const CLI::App& sub) {
 int fail(const std::string& command, const std::string& message, int status) {
   std::cerr << "scalcal" << (command.empty() ? "" : " " + command) << ": " << message << "\n";
   return status;
+}
+
+// OpenBLAS (used by Ipopt and LAPACK) reserves 128 MB of address space per thread at its first call
+// and, when refused, retries for ever: under a lower `ulimit -v` the tool would hang. Measured: 120 MB
+// hangs `calibrate`, 300 MB runs it.
+constexpr double kMinimumAddressSpace = 256e6;
+
+std::string address_space_too_small() {
+  rlimit r{};
+  if (::getrlimit(RLIMIT_AS, &r) != 0 || r.rlim_cur == RLIM_INFINITY) return "";
+  const double limit = static_cast<double>(r.rlim_cur);
+  if (limit >= kMinimumAddressSpace) return "";
+  return "the address-space limit (ulimit -v) is " + std::to_string(static_cast<long long>(limit / 1e6)) +
+         " MB; scalcal needs at least " + std::to_string(static_cast<long long>(kMinimumAddressSpace / 1e6)) +
+         " MB (its BLAS reserves 128 MB at first use)";
 }
 
 }  // namespace
@@ -91,6 +109,7 @@ int main(int argc, char** argv) {
     return fail(subs.count(name) ? name : "",
                 option_message(e.what()) + " (see `scalcal " + (subs.count(name) ? name + " --help`)" : "help`)"), 2);
   }
+  if (const std::string why = address_space_too_small(); !why.empty()) return fail(name, why, 1);
   try {
     reject_leftovers(*subs.at(name));
     const int status = runners.at(name)();
@@ -102,6 +121,13 @@ int main(int argc, char** argv) {
     return fail(name, e.what(), 2);
   } catch (const scalcal::cli::OutputError& e) {
     return fail(name, e.what(), 1);
+  } catch (const scalcal::ResourceError& e) {
+    return fail(name, e.what(), 1);
+  } catch (const std::bad_alloc&) {
+    return fail(name,
+                "out of memory: the system refused memory this request needs (a memory limit, or too little "
+                "free memory); try a smaller request or more memory",
+                1);
   } catch (const std::exception& e) {
     return fail(name, std::string("internal error: ") + e.what(), 1);
   }

@@ -4,13 +4,38 @@
 #include <array>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <string_view>
+
+#include <Eigen/Geometry>
 
 #include "numeric/io/input_error.hpp"
 #include "numeric/model/direction.hpp"
 
 namespace scalcal {
+namespace {
+
+// A file with both x,y,z and alpha1_deg,alpha2_deg is read from x,y,z; angles that name another
+// direction mean the file was edited in one pair only, and which one is meant cannot be known.
+// 0.1 degree allows angles rounded to one decimal (at most 0.07 degree apart).
+constexpr double kAngleAgreementDeg = 0.1;
+
+void check_angles_agree(const CsvTable& t, const CsvTable::Row& row, const Vec3& eta, double alpha1, double alpha2) {
+  if (!std::isfinite(alpha1) || !std::isfinite(alpha2)) throw InputError(t.file, row.line, "an angle is not finite");
+  const Vec3 from_angles = Program::from_angles_deg(alpha1, alpha2);
+  const double apart = std::atan2(eta.cross(from_angles).norm(), eta.dot(from_angles)) * 180.0 / M_PI;
+  if (apart > kAngleAgreementDeg) {
+    char text[200];
+    std::snprintf(text, sizeof text,
+                  "x,y,z and alpha1_deg,alpha2_deg name directions %.3g degrees apart (more than %.1g); "
+                  "remove one pair of columns or make them agree",
+                  apart, kAngleAgreementDeg);
+    throw InputError(t.file, row.line, text);
+  }
+}
+
+}  // namespace
 
 Program program_from_table(const CsvTable& t) {
   Program p;
@@ -30,6 +55,7 @@ Program program_from_table(const CsvTable& t) {
       if (!given.allFinite()) throw InputError(t.file, row.line, "a component of x,y,z is not finite");
       if (!u) throw InputError(t.file, row.line, "zero vector: a position needs a direction");
       eta = *u;
+      if (a1 >= 0 && a2 >= 0) check_angles_agree(t, row, eta, row.values[a1], row.values[a2]);
     } else {
       eta = Program::from_angles_deg(row.values[a1], row.values[a2]);
     }

@@ -11,12 +11,14 @@
 
 namespace scalcal {
 
-inline constexpr int kMinimumPositions = 9;
+// The fewest positions any registered model can use (bias3's 3 parameters); a command checks its
+// own model's minimum where the model is known (commands::program_of).
+inline constexpr int kMinimumPositions = 3;
 // The most positions a program may have (files, catalogue names, random-N): the criteria cost
 // O(N) and any optimum needs far fewer; the limit keeps a typo from allocating gigabytes.
 inline constexpr int kMaximumPositions = 100000;
 
-// Throws InputError for a bad file, a zero vector, fewer than 9 or more than 100000 positions.
+// Throws InputError for a bad file, a zero vector, fewer than 3 or more than 100000 positions.
 Program read_program_csv(const std::string& path);
 Program program_from_table(const CsvTable& table);
 

@@ -10,6 +10,8 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "numeric/criteria/evaluation.hpp"
+#include "numeric/criteria/identifiability.hpp"
 #include "numeric/io/input_error.hpp"
 #include "numeric/model/direction.hpp"
 #include "numeric/program/program_csv.hpp"
@@ -308,17 +310,11 @@ Region parse_region(const std::vector<std::string>& specs) {
   return r;
 }
 
-}  // namespace scalcal
-
-#include "numeric/criteria/evaluation.hpp"
-#include "numeric/criteria/identifiability.hpp"
-
-namespace scalcal {
-
 double check_region_identifiable(const Region& region) {
   Program grid;  // fine enough that even a cap of a fraction of a degree gets many positions
   grid.positions = region.grid(region.grid_step_for(500, 0.001, 4.0));
-  if (grid.size() < kMinimumPositions)
+  constexpr int kParameters = 9;  // the paper's model, which evaluate() fits
+  if (grid.size() < kParameters)
     throw InputError("--region", 0,
                      "'" + display_name(region.text()) + "' has only " + std::to_string(grid.size()) +
                          " distinct positions; the model needs at least 9");

@@ -15,11 +15,14 @@
 #include <mutex>
 #include <stdexcept>
 #include <string>
+#include <system_error>
 #include <thread>
 
 #include <poll.h>
 #include <sys/wait.h>
 #include <unistd.h>
+
+#include "numeric/io/resource_error.hpp"
 
 namespace scalcal {
 
@@ -82,6 +85,17 @@ int decode(const std::vector<char>& buf, int positions, LocalResult& r) {
   return h.index;
 }
 
+// A worker could not be started (the process limit, memory): the ones already running are ended
+// and reaped, so none outlives the call, and the reason is reported as the machine's, not a bug.
+[[noreturn]] void stop_started_workers(const std::vector<pid_t>& pids, const std::vector<pollfd>& fds,
+                                       const char* call) {
+  const std::string reason = std::strerror(errno);
+  for (const pid_t pid : pids) ::kill(pid, SIGKILL);
+  for (const pid_t pid : pids) ::waitpid(pid, nullptr, 0);
+  for (const pollfd& p : fds) ::close(p.fd);
+  throw ResourceError(std::string("could not start worker processes: ") + call + ": " + reason);
+}
+
 }  // namespace
 
 std::vector<LocalResult> run_in_workers(int tasks, int workers, int positions,
@@ -97,9 +111,15 @@ std::vector<LocalResult> run_in_workers(int tasks, int workers, int positions,
   std::vector<pid_t> pids;
   for (int w = 0; w < workers; ++w) {
     int fd[2];
-    if (::pipe(fd) != 0) throw std::runtime_error("synthesize: pipe failed");
+    if (::pipe(fd) != 0) stop_started_workers(pids, fds, "pipe");
     const pid_t pid = ::fork();
-    if (pid < 0) throw std::runtime_error("synthesize: fork failed");
+    if (pid < 0) {
+      const int error = errno;
+      ::close(fd[0]);
+      ::close(fd[1]);
+      errno = error;
+      stop_started_workers(pids, fds, "fork");
+    }
     if (pid == 0) {
       ::close(fd[0]);
       for (int k = w; k < tasks; k += workers) {
@@ -191,7 +211,15 @@ std::vector<LocalResult> run_in_threads(int tasks, int threads, const std::funct
     }
   };
   std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t) pool.emplace_back(work);
+  // A thread the system refuses (its thread limit) leaves the work to fewer threads: the results are
+  // the same, since each task is computed alone and stored by its index.
+  for (int t = 1; t < threads; ++t) {
+    try {
+      pool.emplace_back(work);
+    } catch (const std::system_error&) {
+      break;
+    }
+  }
   work();
   for (auto& th : pool) th.join();
   if (failure) std::rethrow_exception(failure);

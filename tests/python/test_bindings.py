@@ -142,6 +142,10 @@ def test_calibrate_grouped_samples(tmp_path):
                   "--suggest", "1"))
     same(scalcal.calibrate(measurements=columns, magnitude=9.81, model="axis6"),
          cli_json("calibrate", "--measurements", str(path), "--magnitude", "9.81", "--model", "axis6"))
+    # Nominal directions longer than the samples (issue 36): refused, naming the column, not truncated.
+    longer = dict(columns, x=np.append(nominal[:, 0], 1.0), y=nominal[:, 1], z=nominal[:, 2])
+    with pytest.raises(ValueError, match=r"measurements\[x\] must have shape \(%d,\)" % len(labels)):
+        scalcal.calibrate(measurements=longer, magnitude=9.81, modulus="projection")
 
 
 def test_calibrate_raw_log():

@@ -186,7 +186,7 @@ std::vector<Case> cases() {
       {"OctahedralEmpty",
        [] { return std::string("evaluate octahedral-0-0-0"); },
        E::error,
-       {"octahedral-0-0-0", "0 positions; a program needs 9..100000"}},
+       {"octahedral-0-0-0", "0 positions; a program needs 3..100000"}},
       {"OctahedralHuge",
        [] { return std::string("evaluate octahedral-0-0-99999"); },
        E::error,

@@ -122,7 +122,7 @@ std::vector<Case> cases() {
                           " --measurements " + file("m.txt", "0 1 2 3\n");
                  },
                  E::error,
-                 {"over.json", "not a JSON object"}});
+                 {"over.json", "not a JSON object", "number overflow"}});
   return out;
 }
 
