@@ -1,5 +1,5 @@
 // `scalcal simulate --program P --trials T --noise SIGMA [--bench-error DEG] [--modulus ...] [--model NAME]
-// [--seed S] [--samples K] [--size A] [--json]`: Monte-Carlo calibration of simulated meters
+// [--seed S] [--samples K] [--size A] [--out FILE] [--json]`: Monte-Carlo calibration of simulated meters
 // (commands/simulate.hpp), printed as a table per modulus; with --log FILE or --bench-file FILE a
 // rehearsal instead (commands/rehearsal.hpp): the files, and the true parameters in --truth FILE.
 #include <cmath>
@@ -39,6 +39,21 @@ void print_result(std::ostream& out, const MonteCarloResult& r, Modulus m) {
       << "\n";
 }
 
+// --out: the table print_result shows, as CSV, one row per modulus and parameter (standard_error:
+// of the mean estimate, the bias's scale).
+void write_table(std::ostream& out, const commands::SimulateResult& r) {
+  out << "modulus,parameter,truth,bias,standard_error,linear_error,empirical_std,theoretical_std\n";
+  for (const auto& [m, c] : r.results)
+    for (int k = 0; k < static_cast<int>(c.truth.size()); ++k) {
+      const double emp = std::sqrt(c.empirical_cov(k, k));
+      out << commands::modulus_name(m) << ',' << c.names[static_cast<std::size_t>(k)] << ','
+          << shortest_text(c.truth(k)) << ',' << shortest_text(c.mean(k) - c.truth(k)) << ','
+          << shortest_text(emp / std::sqrt(std::max(1, c.converged))) << ','
+          << shortest_text(c.noise_free(k) - c.truth(k)) << ',' << shortest_text(emp) << ','
+          << shortest_text(std::sqrt(c.theoretical_cov(k, k))) << '\n';
+    }
+}
+
 // --log / --bench-file: the files, and one line (or the truth as JSON) on stdout.
 int rehearse(const commands::Values& v, const commands::RehearsalRequest& q) {
   const commands::RehearsalResult r = commands::rehearse(q);
@@ -67,6 +82,7 @@ int run(const commands::Values& v) {
   const bool json = v.flag("--json");
   const auto r = commands::simulate(q, terminal_progress("simulate"));
   print_warnings("simulate", r.warnings);
+  if (v.given("--out")) write_output_file(v.text("--out"), [&](std::ostream& out) { write_table(out, r); });
   if (!json)
     std::cout << "Monte-Carlo calibration: program " << q.name << " (N = " << q.program.size() << "), " << q.trials
               << " trials, noise " << q.noise << " |I|, bench error " << q.bench_error_deg << " deg, " << q.samples
