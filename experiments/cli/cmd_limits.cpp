@@ -6,6 +6,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "commands/common_options.hpp"
 #include "commands/limits.hpp"
 #include "experiments/cli/command.hpp"
 #include "experiments/cli/json_output.hpp"
@@ -13,6 +14,8 @@
 
 namespace scalcal::cli {
 namespace {
+
+using commands::shortest_text;
 
 std::string decimal(const char* format, double v) {
   char buffer[64];

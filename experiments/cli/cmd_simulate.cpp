@@ -6,6 +6,7 @@
 #include <iomanip>
 #include <iostream>
 
+#include "commands/common_options.hpp"
 #include "commands/simulate.hpp"
 #include "experiments/cli/command.hpp"
 #include "experiments/cli/json_output.hpp"
@@ -13,6 +14,8 @@
 
 namespace scalcal::cli {
 namespace {
+
+using commands::shortest_text;
 
 void print_result(std::ostream& out, const MonteCarloResult& r, Modulus m) {
   out << "\nmodulus " << commands::modulus_name(m) << ": " << r.converged << " converged trials, "

@@ -60,8 +60,6 @@ std::string shortest(double v) {
 
 }  // namespace
 
-std::string shortest_text(double v) { return shortest(v); }
-
 void write_program_csv(std::ostream& out, const Program& program, const std::vector<ExtraColumn>& extra,
                        const ProgramNotes& notes) {
   if (!notes.region.empty()) {

@@ -49,10 +49,6 @@ ProgramRegion program_region(const std::string& text);
 // The same read from a file (InputError when it cannot be read).
 ProgramRegion read_program_region(const std::string& path);
 
-// The shortest decimal text that reads back to the same double (std::to_chars' guarantee): how
-// every number of a CSV file scalcal writes is printed.
-std::string shortest_text(double v);
-
 // Azimuth alpha1 and elevation alpha2 in degrees of a unit vector (inverse of from_angles_deg).
 Eigen::Vector2d angles_deg(const Vec3& eta);
 

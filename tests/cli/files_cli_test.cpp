@@ -36,6 +36,13 @@ std::string evaluated(const std::string& file, const std::string& out) {
   return slurp((scratch_dir() / out).string());
 }
 
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
 const char* kPlain = "x,y,z\n1,0,0\n-1,0,0\n0,1,0\n0,-1,0\n0,0,1\n0,0,-1\n1,1,0\n0,1,1\n1,0,1\n0.5,-1,2\n";
 
 TEST(FilesCli, QuotedSemicolonAndUpperCaseProgramsReadAsPlain) {
@@ -102,6 +109,15 @@ TEST(FilesCli, TextPositionLabelsCalibrateAsNumbers) {
   ASSERT_EQ(a.status, 0) << a.err;
   ASSERT_EQ(b.status, 0) << b.err;
   EXPECT_EQ(b.out, a.out);
+  // `correct` keeps each row's label where it kept the number: the same rows, P prefixed.
+  const std::string cal = (scratch_dir() / "labels_cal.json").string();
+  ASSERT_EQ(run_cli("calibrate --measurements " + numbered + " --magnitude 1 --out " + cal).status, 0);
+  const auto by_number = lines_of(run_cli("correct --calibration " + cal + " --measurements " + numbered).out);
+  const auto by_label = lines_of(run_cli("correct --calibration " + cal + " --measurements " + labels).out);
+  ASSERT_EQ(by_label.size(), 181u);
+  ASSERT_EQ(by_number.size(), 181u);
+  EXPECT_EQ(by_label[0], by_number[0]);
+  for (std::size_t k = 1; k < by_label.size(); ++k) EXPECT_EQ(by_label[k], "P" + by_number[k]) << k;
 }
 
 // The number after "key": in a JSON text (the first one).
@@ -109,13 +125,6 @@ double json_number(const std::string& json, const std::string& key) {
   std::smatch m;
   if (!std::regex_search(json, m, std::regex("\"" + key + "\": ([-+0-9.eE]+)"))) return std::nan("");
   return std::stod(m[1]);
-}
-
-std::vector<std::string> lines_of(const std::string& text) {
-  std::vector<std::string> lines;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) lines.push_back(line);
-  return lines;
 }
 
 // D of a program file by `evaluate`: the other half of the toolkit checks what was written.
