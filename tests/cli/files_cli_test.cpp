@@ -67,6 +67,14 @@ TEST(FilesCli, StandardInputIsDash) {
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(slurp((scratch_dir() / "from_stdin.csv").string()), plain);
   EXPECT_NE(r.out.find("program -: N = 10"), std::string::npos) << r.out;
+  // Standard input is read once and kept: a program's region line and its rows both come from it.
+  // classic18 (the six axes and the twelve edge midpoints) has only +z within 10 degrees of +z.
+  const auto classic = run_cli("evaluate classic18 --out -");
+  ASSERT_EQ(classic.status, 0) << classic.err;
+  const std::string capped = write_file("cap10.csv", "# region: cap:10\n" + classic.out);
+  const auto region = run_with_stdin(capped, "evaluate -");
+  EXPECT_EQ(region.status, 2);
+  EXPECT_NE(region.err.find("-: 17 of 18 positions are outside the region cap:10"), std::string::npos) << region.err;
   // A defect on standard input names it as the user did, "-", with the line.
   const auto bad = run_with_stdin(write_file("stdin_bad.csv", "x,y,z\n1,0,zero\n"), "evaluate -");
   EXPECT_EQ(bad.status, 2);
