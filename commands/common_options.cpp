@@ -179,8 +179,9 @@ Option json_option(const std::string& what) {
 }
 
 Option out_option(const std::string& what, const std::string& value_name) {
-  Option o = text_option("--out", value_name, what, "file path");
+  Option o = text_option("--out", value_name, what, "file path; - for standard output");
   o.cli_only = true;
+  o.writes_file = true;
   return o;
 }
 

@@ -159,11 +159,12 @@ CorrectResult correct(const CorrectRequest& q) {
   const int ix = table.column("ix"), iy = table.column("iy"), iz = table.column("iz");
   out.has_t = ct >= 0;
   out.has_position = cp >= 0;
-  for (const auto& row : table.rows) {
-    const auto& v = row.values;
+  for (std::size_t k = 0; k < table.rows.size(); ++k) {
+    const auto& v = table.rows[k].values;
     CorrectedRow r;
     if (ct >= 0) r.t = v[static_cast<std::size_t>(ct)];
     if (cp >= 0) r.position = v[static_cast<std::size_t>(cp)];
+    if (cp >= 0 && std::isnan(r.position) && !table.labels.empty()) r.position_label = table.labels[k];
     r.corrected = out.correction.apply(
         Vec3(v[static_cast<std::size_t>(ix)], v[static_cast<std::size_t>(iy)], v[static_cast<std::size_t>(iz)]));
     r.modulus = r.corrected.stableNorm();  // finite for outputs near 1e300

@@ -32,6 +32,7 @@ struct CorrectRequest {
 
 struct CorrectedRow {
   double t = NAN, position = NAN;  // the kept columns (NaN when the file has none)
+  std::string position_label;      // the position's text label (P1), when it has one
   Vec3 corrected = Vec3::Zero();
   double modulus = 0;
 };

@@ -123,7 +123,9 @@ const CommandTable& jig_table() {
        named(integer_option("--starts", 1, 100000,
                             "starts of the search over rotations (the first is the default mounting)", "starts", "64"),
              "K"),
-       seed_option(), json_option("print one JSON object")}};
+       seed_option(),
+       out_option("write the face normals at the best mounting, in the meter's coordinates, as a program CSV"),
+       json_option("print one JSON object")}};
   return table;
 }
 

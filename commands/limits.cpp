@@ -52,7 +52,9 @@ const CommandTable& limits_table() {
       "N -> infinity limits of the normalised " + criterion_names_text() +
           " criteria: exact on the sphere, certified bounds on a region",
       61,
-      {model_option(), region_option(), json_option("print one JSON object keyed by criterion")}};
+      {model_option(), region_option(),
+       out_option("write the limits as CSV, one row per criterion: criterion,limit,exact,lower_bound"),
+       json_option("print one JSON object keyed by criterion")}};
   return table;
 }
 

@@ -39,6 +39,7 @@ struct Option {
   bool takes_positions = false;  // a program: Python may also give an (N, 3) array of directions
   bool takes_columns = false;    // a data file: Python may also give its columns (a mapping name -> array)
   bool takes_document = false;   // a JSON file: Python may also give the object itself (a dict)
+  bool writes_file = false;      // a file the CLI writes; "-" is standard output
 
   bool required() const { return kind == OptionKind::positional || fallback == kRequired; }
   // The Python keyword: "--threshold-factor" -> "threshold_factor", "PROGRAM" -> "program", "--from" -> "from_".

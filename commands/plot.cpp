@@ -217,6 +217,12 @@ Option optional_program() {
 }
 
 const CommandTable& plot_table() {
+  // Several files are made: standard output cannot take them.
+  Option figure = out_option(
+      "the figure: FILE.pdf, .png or .svg (all three are made, with the gnuplot script FILE.gp and its CSV data "
+      "beside them)");
+  figure.writes_file = false;
+  figure.unit = "file path";
   static const CommandTable table{
       "plot",
       "a picture of a program: its positions on the sphere (numbered in run order for a plan file), the region shaded",
@@ -225,9 +231,7 @@ const CommandTable& plot_table() {
        text_option("--log", "FILE", "instead of a program: a raw log (t,ix,iy,iz CSV or text t ix iy iz)", "file path"),
        text_option("--calibration", "CAL.json", "with --log: the calibration of that log (calibrate --out)",
                    "file path"),
-       out_option("the figure: FILE.pdf, .png or .svg (all three are made, with the gnuplot script FILE.gp and its "
-                  "CSV data beside them)",
-                  "FILE")}};
+       figure}};
   return table;
 }
 

@@ -19,6 +19,7 @@ const CommandTable& random_table() {
            "N"),
        named(integer_option("--count", 1, 1000000000LL, "random programs drawn", "programs", kRequired), "R"),
        seed_option(), criterion_option(), model_option(), region_option(), threads_option(),
+       out_option("write the best program as CSV x,y,z,alpha1_deg,alpha2_deg (and its region line)"),
        json_option("print one JSON object")}};
   return table;
 }

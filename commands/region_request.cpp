@@ -44,7 +44,9 @@ std::vector<ExtraColumn> region_columns(const Region& region, const Program& pro
   ExtraColumn tilt{"tilt_deg", {}}, azimuth{"azimuth_deg", {}};
   for (const Vec3& x : program.positions) {
     tilt.values.push_back(zone.tilt_deg(x));
-    azimuth.values.push_back(azimuth_deg(zone, x));
+    // -180..180, the range of alpha1_deg beside it in the same file (and of a plan's azimuths).
+    const double a = azimuth_deg(zone, x);
+    azimuth.values.push_back(a > 180 ? a - 360 : a);
   }
   return {tilt, azimuth};
 }
@@ -75,7 +77,7 @@ std::vector<std::string> regions_for(const std::vector<std::string>& given, cons
                                      Warnings& warnings) {
   if (program_argument.empty() || named_program(program_argument)) return given;
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(program_argument, ec)) return given;
+  if (program_argument != "-" && !std::filesystem::is_regular_file(program_argument, ec)) return given;
   const ProgramRegion file = read_program_region(program_argument);
   if (file.specs.empty()) return given;
   try {

@@ -106,11 +106,16 @@ const CommandTable& simulate_table() {
                        "|I| (the modulus of the measured vector)", kRequired),
        number_option("--bench-error", 0, 30, "every true position is the nominal one tipped by this angle", "degrees",
                      "0"),
-       modulus, model_option(), seed_option(),
+       modulus,
+       model_option(),
+       seed_option(),
        named(integer_option("--samples", 1, 100000, "samples per position", "samples", "1"), "K"),
        number_option("--size", 0, 0.2, "scale of the simulated meter's errors",
                      "relative (bias in |I|, angles in radians)", "0.001"),
-       log, bench_file, truth,
+       out_option("write the Monte-Carlo table as CSV, one row per modulus and parameter"),
+       log,
+       bench_file,
+       truth,
        rehearsal(text_option("--meter", "FILE",
                              "rehearsal: the meter's parameters (bias, scale_deviation, "
                              "nonorthogonality as calibrate --json writes them) instead of "
@@ -134,7 +139,7 @@ namespace {
 // the rehearsal's without it.
 void read_rehearsal(const Values& v, SimulateRequest& q) {
   const bool rehearsal = v.given("--log") || v.given("--bench-file");
-  const char* monte_carlo[] = {"--trials", "--bench-error", "--modulus", "--samples", "--model"};
+  const char* monte_carlo[] = {"--trials", "--bench-error", "--modulus", "--samples", "--model", "--out"};
   const char* own[] = {"--truth", "--meter", "--rate", "--dwell", "--still", "--magnitude", "--format"};
   if (!rehearsal) {
     for (const char* o : own)

@@ -37,6 +37,10 @@ for name in classic18 rotation-6 rotation-6-p15 octahedral-1-0-1 random-18-s7 do
   nine-2axes table1-A table3-S; do
   printf '%s' "$name" >"$corpus/fuzz_catalogue_name/$((i++))"
 done
+# The dialects the reader takes (issue 33): quoted fields, ';' with decimal commas, text position labels.
+printf '"X","Y","Z"\n"1","0","0"\n"0,5",-1,"2"\n' >"$corpus/fuzz_program_csv/quoted.csv"
+printf 'x;y;z\n1;0;0\n0,5;-1;2\n' >"$corpus/fuzz_program_csv/semicolon.csv"
+printf '\x30Position,IX,IY,IZ\n"P1",1,0,0\nP1,1.1,0,0\nP2,0,1,0\n' >"$corpus/fuzz_measurements_csv/labels.csv"
 for m in 2 6; do  # a raw log (text), magnitude auto and 1
   { printf "\\x3$m"; head -c 30000 data/xsens_acc.txt; } >"$corpus/fuzz_measurements_csv/raw$m-xsens"
 done

@@ -15,6 +15,13 @@ namespace {
 
 using commands::shortest_text;
 
+std::string csv_field(const std::string& text) {
+  if (text.find_first_of(",\"#;") == std::string::npos) return text;
+  std::string quoted = "\"";
+  for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return quoted + "\"";
+}
+
 int run(const commands::Values& v) {
   const commands::CorrectResult r = commands::correct(commands::correct_request(v));
   print_warnings("correct", r.warnings);
@@ -22,7 +29,8 @@ int run(const commands::Values& v) {
     f << (r.has_t ? "t," : "") << (r.has_position ? "position," : "") << "x,y,z,modulus\n";
     for (const auto& row : r.rows) {
       if (r.has_t) f << shortest_text(row.t) << ',';
-      if (r.has_position) f << shortest_text(row.position) << ',';
+      if (r.has_position)  // a label as the file had it, quoted (RFC 4180) when it holds a comma or quote
+        f << (row.position_label.empty() ? shortest_text(row.position) : csv_field(row.position_label)) << ',';
       f << shortest_text(row.corrected(0)) << ',' << shortest_text(row.corrected(1)) << ','
         << shortest_text(row.corrected(2)) << ',' << shortest_text(row.modulus) << '\n';
     }

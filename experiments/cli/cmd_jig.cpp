@@ -1,4 +1,4 @@
-// `scalcal jig NAME [--criterion C] [--starts K] [--seed S] [--json]`: the best way to mount the meter
+// `scalcal jig NAME [--criterion C] [--starts K] [--seed S] [--out FILE] [--json]`: the best way to mount the meter
 // in a printable jig (commands/jig.hpp), as a sheet: the value, what is proven, the meter's axes in
 // jig coordinates, the criteria before and after.
 #include <cstdio>
@@ -8,6 +8,7 @@
 #include "commands/jig.hpp"
 #include "experiments/cli/command.hpp"
 #include "experiments/cli/json_output.hpp"
+#include "experiments/cli/output_file.hpp"
 
 namespace scalcal::cli {
 namespace {
@@ -52,6 +53,7 @@ void print_text(const commands::JigResult& r) {
 int run(const commands::Values& v) {
   const auto r = commands::jig(commands::jig_request(v), terminal_progress("jig"));
   print_warnings("jig", r.warnings);
+  if (v.given("--out")) write_program_file(v.text("--out"), r.program);
   if (v.flag("--json"))
     print_json(commands::to_json(r));
   else

@@ -1,4 +1,4 @@
-// `scalcal limits [--model NAME] [--region SPEC]... [--json]`: the infimum of each normalised
+// `scalcal limits [--model NAME] [--region SPEC]... [--out FILE] [--json]`: the infimum of each normalised
 // criterion over all measures on the sphere, derived symbolically, with the moments of an optimal
 // measure; on a restricted region, an optimal measure found numerically and a lower bound certified
 // by weak duality over the whole region (commands/limits.hpp).
@@ -6,12 +6,16 @@
 #include <iostream>
 #include <sstream>
 
+#include "commands/common_options.hpp"
 #include "commands/limits.hpp"
 #include "experiments/cli/command.hpp"
 #include "experiments/cli/json_output.hpp"
+#include "experiments/cli/output_file.hpp"
 
 namespace scalcal::cli {
 namespace {
+
+using commands::shortest_text;
 
 std::string decimal(const char* format, double v) {
   char buffer[64];
@@ -64,9 +68,27 @@ void print_sphere(const commands::LimitsResult& r) {
               << " parameters; proofs: " << visit_model(r.model, [](auto M) { return decltype(M)::proof; }) << ")\n";
 }
 
+// --out: one row per criterion; a cell is empty where the limit, its exact form or a proven lower
+// bound is not known (the exact form is the sphere's; the lower bound a region's).
+void write_table(std::ostream& out, const commands::LimitsResult& r) {
+  out << "criterion,limit,exact,lower_bound\n";
+  for (const auto& l : r.criteria) {
+    out << criterion_name(l.criterion) << ',';
+    if (r.region && l.region)
+      out << shortest_text(l.region->value) << ",,"
+          << (l.region->lower_bound ? shortest_text(*l.region->lower_bound) : "");
+    else if (!r.region && l.sphere)
+      out << shortest_text(l.sphere->value) << ",\"" << l.sphere->exact << "\",";
+    else
+      out << ",,";
+    out << '\n';
+  }
+}
+
 int run(const commands::Values& v) {
   const auto r = commands::limits(commands::limits_request(v), terminal_progress("limits"));
   print_warnings("limits", r.warnings);
+  if (v.given("--out")) write_output_file(v.text("--out"), [&](std::ostream& out) { write_table(out, r); });
   if (v.flag("--json"))
     print_json(commands::to_json(r));
   else if (r.region)

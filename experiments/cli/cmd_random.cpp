@@ -1,11 +1,12 @@
 // `scalcal random --positions N --count R [--seed S] [--criterion C] [--model NAME] [--region SPEC]...
-// [--threads T] [--json]`: the best of R uniform random programs (commands/random.hpp).
+// [--threads T] [--out FILE] [--json]`: the best of R uniform random programs (commands/random.hpp).
 #include <iomanip>
 #include <iostream>
 
 #include "commands/random.hpp"
 #include "experiments/cli/command.hpp"
 #include "experiments/cli/json_output.hpp"
+#include "experiments/cli/output_file.hpp"
 
 namespace scalcal::cli {
 namespace {
@@ -13,6 +14,9 @@ namespace {
 int run(const commands::Values& v) {
   const auto r = commands::random_programs(commands::random_request(v), terminal_progress("random"));
   print_warnings("random", r.warnings);
+  if (v.given("--out"))  // the region line only for a restricted region, as optimize writes it
+    write_program_file(v.text("--out"), r.search.program, {},
+                       {r.region.empty() ? std::vector<std::string>{} : r.request.regions, {}});
   if (v.flag("--json")) {
     print_json(commands::to_json(r));
     return 0;

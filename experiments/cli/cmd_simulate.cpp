@@ -1,11 +1,12 @@
 // `scalcal simulate --program P --trials T --noise SIGMA [--bench-error DEG] [--modulus ...] [--model NAME]
-// [--seed S] [--samples K] [--size A] [--json]`: Monte-Carlo calibration of simulated meters
+// [--seed S] [--samples K] [--size A] [--out FILE] [--json]`: Monte-Carlo calibration of simulated meters
 // (commands/simulate.hpp), printed as a table per modulus; with --log FILE or --bench-file FILE a
 // rehearsal instead (commands/rehearsal.hpp): the files, and the true parameters in --truth FILE.
 #include <cmath>
 #include <iomanip>
 #include <iostream>
 
+#include "commands/common_options.hpp"
 #include "commands/simulate.hpp"
 #include "experiments/cli/command.hpp"
 #include "experiments/cli/json_output.hpp"
@@ -13,6 +14,8 @@
 
 namespace scalcal::cli {
 namespace {
+
+using commands::shortest_text;
 
 void print_result(std::ostream& out, const MonteCarloResult& r, Modulus m) {
   out << "\nmodulus " << commands::modulus_name(m) << ": " << r.converged << " converged trials, "
@@ -37,6 +40,21 @@ void print_result(std::ostream& out, const MonteCarloResult& r, Modulus m) {
       << "% (1 sigma); max normalised covariance difference " << std::setprecision(3)
       << r.max_normalised_cov_difference() << "; estimated noise / sigma " << std::setprecision(4) << r.mean_noise_ratio
       << "\n";
+}
+
+// --out: the table print_result shows, as CSV, one row per modulus and parameter (standard_error:
+// of the mean estimate, the bias's scale).
+void write_table(std::ostream& out, const commands::SimulateResult& r) {
+  out << "modulus,parameter,truth,bias,standard_error,linear_error,empirical_std,theoretical_std\n";
+  for (const auto& [m, c] : r.results)
+    for (int k = 0; k < static_cast<int>(c.truth.size()); ++k) {
+      const double emp = std::sqrt(c.empirical_cov(k, k));
+      out << commands::modulus_name(m) << ',' << c.names[static_cast<std::size_t>(k)] << ','
+          << shortest_text(c.truth(k)) << ',' << shortest_text(c.mean(k) - c.truth(k)) << ','
+          << shortest_text(emp / std::sqrt(std::max(1, c.converged))) << ','
+          << shortest_text(c.noise_free(k) - c.truth(k)) << ',' << shortest_text(emp) << ','
+          << shortest_text(std::sqrt(c.theoretical_cov(k, k))) << '\n';
+    }
 }
 
 // --log / --bench-file: the files, and one line (or the truth as JSON) on stdout.
@@ -67,6 +85,7 @@ int run(const commands::Values& v) {
   const bool json = v.flag("--json");
   const auto r = commands::simulate(q, terminal_progress("simulate"));
   print_warnings("simulate", r.warnings);
+  if (v.given("--out")) write_output_file(v.text("--out"), [&](std::ostream& out) { write_table(out, r); });
   if (!json)
     std::cout << "Monte-Carlo calibration: program " << q.name << " (N = " << q.program.size() << "), " << q.trials
               << " trials, noise " << q.noise << " |I|, bench error " << q.bench_error_deg << " deg, " << q.samples

@@ -1,6 +1,7 @@
 // The subcommand registry, progress on a terminal and warnings on stderr (command.hpp).
 #include "experiments/cli/command.hpp"
 
+#include "experiments/cli/output_file.hpp"
 #include "experiments/cli/table_options.hpp"
 #include "numeric/io/input_error.hpp"
 
@@ -18,10 +19,29 @@ std::vector<Command>& registry() {
 }
 }  // namespace
 
+namespace {
+
+// The files given as "-" (standard output): at most one, and then the report goes to stderr.
+void route_standard_output(const commands::CommandTable& table, const commands::Values& v) {
+  std::vector<std::string> dashes;
+  for (const auto& o : table.options)
+    if (o.writes_file && v.given(o.name) && v.text(o.name) == "-") dashes.push_back(o.name);
+  if (dashes.size() > 1)
+    throw UsageError("options " + dashes[0] + " and " + dashes[1] +
+                     " both write to standard output ('-'): give one of them a file");
+  if (dashes.size() == 1) divert_report();
+}
+
+}  // namespace
+
 Registration::Registration(const commands::CommandTable& table, std::function<int(const commands::Values&)> run)
     : Registration(Command{table.name, table.usage(), table.summary, table.order, [&table, run](CLI::App& app) {
                              const auto values = add_table_options(app, table);
-                             return Runner([values, run] { return run(values()); });
+                             return Runner([values, run, &table] {
+                               const commands::Values v = values();
+                               route_standard_output(table, v);
+                               return run(v);
+                             });
                            }}) {}
 
 Registration::Registration(Command c) {

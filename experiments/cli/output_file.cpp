@@ -7,6 +7,8 @@
 #include <iostream>
 #include <sstream>
 
+#include <unistd.h>
+
 #include "numeric/program/program_csv.hpp"
 
 namespace scalcal::cli {
@@ -14,23 +16,52 @@ namespace scalcal::cli {
 namespace {
 [[noreturn]] void fail(const std::string& path, const char* what) {
   const std::string reason = errno ? std::string(": ") + std::strerror(errno) : std::string();
-  throw OutputError(path + ": " + what + reason);
+  throw OutputError((path == "-" ? std::string("standard output") : path) + ": " + what + reason);
+}
+
+// Where the files named "-" go: standard output, or its duplicate once the report is diverted.
+int standard_output = STDOUT_FILENO;
+
+void write_standard_output(const std::string& text) {
+  errno = 0;
+  std::cout.flush();  // what was printed before comes first when nothing is diverted
+  std::fflush(stdout);
+  for (std::size_t done = 0; done < text.size();) {
+    const ssize_t n = ::write(standard_output, text.data() + done, text.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) fail("-", "cannot write");
+    done += static_cast<std::size_t>(n);
+  }
 }
 }  // namespace
 
+void divert_report() {
+  std::cout.flush();
+  std::fflush(stdout);
+  standard_output = ::dup(STDOUT_FILENO);
+  if (standard_output < 0 || ::dup2(STDERR_FILENO, STDOUT_FILENO) < 0) fail("-", "cannot divert");
+}
+
 OutputFile::OutputFile(const std::string& path) : path_(path) {
+  if (path_ == "-") return;
   errno = 0;
   out_.open(path);
   if (!out_) fail(path_, "cannot create the file");
 }
 
 void OutputFile::flush() {
+  if (path_ == "-") {
+    write_standard_output(pending_.str());
+    pending_.str("");
+    return;
+  }
   errno = 0;
   out_.flush();
   if (!out_) fail(path_, "cannot write the file");
 }
 
 void OutputFile::close() {
+  if (path_ == "-") return flush();
   errno = 0;
   out_.close();
   if (!out_) fail(path_, "cannot write the file");

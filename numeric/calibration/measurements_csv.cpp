@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <map>
+#include <string>
 
 #include "numeric/io/input_error.hpp"
 #include "numeric/model/direction.hpp"
@@ -27,19 +28,33 @@ std::vector<PositionSamples> measurements_from_table(const CsvTable& table, bool
   if (table.rows.empty()) throw InputError(table.file, 0, "no measurements after the header");
 
   std::vector<PositionSamples> out;
-  std::map<long long, std::size_t> index;
-  for (const auto& row : table.rows) {
+  std::vector<std::string> names;  // each position as the file names it, for messages
+  std::map<std::string, std::size_t> index;
+  const bool labelled = cp >= 0 && table.labels.size() == table.rows.size();
+  for (std::size_t r = 0; r < table.rows.size(); ++r) {
+    const auto& row = table.rows[r];
     const auto& v = row.values;
     std::size_t k = out.size();
     if (cp >= 0) {
       const double p = v[cp];
-      if (p != std::floor(p) || std::abs(p) > 9e15)
-        throw InputError(table.file, row.line, "position must be an integer, found " + std::to_string(p));
-      const auto [it, fresh] = index.emplace(static_cast<long long>(p), out.size());
+      std::string key;
+      if (labelled && std::isnan(p)) {  // a label such as P1: positions in order of first appearance
+        key = "label " + table.labels[r];
+      } else {
+        if (p != std::floor(p) || std::abs(p) > 9e15)
+          throw InputError(table.file, row.line,
+                           "position must be an integer or a label such as P1, found " + std::to_string(p));
+        key = std::to_string(static_cast<long long>(p));
+      }
+      const auto [it, fresh] = index.emplace(key, out.size());
       k = it->second;
-      if (fresh) out.emplace_back();
+      if (fresh) {
+        out.emplace_back();
+        names.push_back(key);
+      }
     } else {
       out.emplace_back();
+      names.push_back("");
     }
     if (out.size() > static_cast<std::size_t>(kMaximumPositions))
       throw InputError(table.file, row.line,
@@ -57,9 +72,9 @@ std::vector<PositionSamples> measurements_from_table(const CsvTable& table, bool
       if (!pos.nominal) {
         pos.nominal = u;
       } else if ((*pos.nominal - u).norm() > 1e-9) {
-        throw InputError(
-            table.file, row.line,
-            "nominal direction differs from that of line " + std::to_string(pos.line) + " of the same position");
+        throw InputError(table.file, row.line,
+                         "nominal direction differs from that of line " + std::to_string(pos.line) +
+                             " of the same position (" + names[k] + ")");
       }
     }
   }

@@ -161,7 +161,8 @@ std::optional<Program> named_program(const std::string& name) {
 Program resolve_program(const std::string& argument) {
   if (auto p = named_program(argument)) return *p;
   std::error_code ec;  // exists() throws on a name too long for the system; with ec it says false
-  if (std::filesystem::exists(argument, ec) || argument.find('/') != std::string::npos || argument.ends_with(".csv"))
+  if (argument == "-" || std::filesystem::exists(argument, ec) || argument.find('/') != std::string::npos ||
+      argument.ends_with(".csv"))
     return read_program_csv(argument);
   throw InputError(argument, 0, "neither a catalogue name nor a file (see `scalcal catalogue`)");
 }

@@ -45,8 +45,11 @@ TEST(RegionCli, OptimizeOnACapReportsLimitAndEfficiency) {
     for (int k = 1; k < 7; ++k) fields >> comma >> v[k];
     EXPECT_LE(v[5], 90.0 + 1e-6) << line;
     EXPECT_NEAR(std::acos(std::clamp(v[2], -1.0, 1.0)) * 180 / M_PI, v[5], 1e-6) << line;  // tilt from +z
-    EXPECT_GE(v[6], 0.0);
-    EXPECT_LT(v[6], 360.0);
+    // One azimuth range per file: -180..180 as alpha1. About +z the azimuth frame is (+x, +y), so
+    // away from the pole the azimuth is alpha1 itself (up to the wrap at 180).
+    EXPECT_GE(v[6], -180.0);
+    EXPECT_LE(v[6], 180.0);
+    if (v[5] > 1e-6) EXPECT_NEAR(std::remainder(v[6] - v[3], 360.0), 0.0, 1e-9) << line;
     ++rows;
   }
   EXPECT_EQ(rows, 24);
