@@ -22,7 +22,8 @@ Registration::Registration(const commands::CommandTable& table, std::function<in
     : Registration(Command{table.name, table.usage(), table.summary, table.order, [&table, run](CLI::App& app) {
                              const auto values = add_table_options(app, table);
                              return Runner([values, run] { return run(values()); });
-                           }}) {}
+                           },
+                           &table}) {}
 
 Registration::Registration(Command c) {
   auto& r = registry();
