@@ -1,7 +1,8 @@
 # The build step of `pip install .` (pyproject.toml): configures the project's CMake build, builds only
 # the extension target scalcal_python, and puts in the wheel the extension, the package python/scalcal
 # with its generated stubs, and the paper's tables (data/, which scalcal/__init__.py points SCALCAL_DATA at).
-# SCALCAL_BUILD_DIR reuses a configured build folder (e.g. build); SCALCAL_CMAKE_ARGS adds configure options.
+# The CMake build goes to build-pip/ (kept: a second install rebuilds only what changed); SCALCAL_BUILD_DIR
+# reuses a configured build folder instead (e.g. build); SCALCAL_CMAKE_ARGS adds configure options.
 import glob
 import os
 import shlex
@@ -20,7 +21,8 @@ class CMakeBuild(build_ext):
 
     def build_extension(self, ext):
         given = os.environ.get("SCALCAL_BUILD_DIR")
-        build = os.path.abspath(given or os.path.join(self.build_temp, "cmake"))
+        # build-pip beside build/: the same depth, so ccache (base_dir) serves objects build/ compiled.
+        build = os.path.abspath(given or os.path.join(ROOT, "build-pip"))
         # A build folder of the user's keeps its configuration; setup.py's own is configured each time, as
         # the interpreter (a virtualenv's) may have changed since the last install.
         if not given or not os.path.exists(os.path.join(build, "CMakeCache.txt")):
@@ -57,6 +59,6 @@ setup(
     package_dir={"scalcal": "python/scalcal"},
     ext_modules=[Extension("scalcal._scalcal", sources=[])],
     cmdclass={"build_ext": CMakeBuild},
-    options={"build": {"build_base": "build-pip"}},
+    options={"build": {"build_base": os.path.join("build-pip", "setuptools")}},
     zip_safe=False,
 )

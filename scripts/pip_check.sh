@@ -2,16 +2,20 @@
 # `pip install --no-build-isolation .` as a user runs it: a fresh virtualenv over Debian's python3 (NumPy
 # through --system-site-packages), offline (no package index), then `import scalcal; scalcal.correct` and
 # one call that reads the paper's tables from the installed package. Prints the install's time.
-# Usage: scripts/pip_check.sh [PYTHON]   (default /usr/bin/python3). The CMake build goes to a temporary
-# folder (ccache, when present, still serves objects compiled before: CCACHE_DISABLE=1 for a cold build).
+# Usage: scripts/pip_check.sh [--fresh] [PYTHON]   (default /usr/bin/python3). The CMake build is setup.py's
+# build-pip/, kept between installs; --fresh removes it first (and CCACHE_DISABLE=1 makes the build cold).
 set -euo pipefail
 cd "$(dirname "$0")/.."
+if [ "${1:-}" = "--fresh" ]; then
+  rm -rf build-pip
+  shift
+fi
 python="${1:-/usr/bin/python3}"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 "$python" -m venv --system-site-packages "$work/venv"
 start=$(date +%s)
-SCALCAL_BUILD_DIR="$work/cmake" PIP_NO_INDEX=1 "$work/venv/bin/pip" install --no-build-isolation . >"$work/pip.log" 2>&1 ||
+PIP_NO_INDEX=1 "$work/venv/bin/pip" install --no-build-isolation . >"$work/pip.log" 2>&1 ||
   { tail -n 30 "$work/pip.log"; echo "pip_check: pip install failed" >&2; exit 1; }
 seconds=$(($(date +%s) - start))
 cd "$work"  # away from the source tree, whose python/scalcal has no extension

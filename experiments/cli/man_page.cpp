@@ -84,6 +84,7 @@ std::string option_entry(const Option& o) {
   else
     tag = ".BI \"" + roff(o.name) + " \" \"" + roff(value_name(o)) + "\"";
   std::string body = roff(o.help());
+  if (!body.empty() && body.back() != '.') body += '.';  // a sentence, as what follows is one
   const std::string more = accepted(o);
   if (!more.empty()) body += "\n" + roff(more);
   if (o.required()) body += "\nRequired.";

@@ -32,7 +32,7 @@ check_page() {
   done
 }
 
-commands=$("$scalcal" help | sed -n 's/^  \([a-z]*\) .*/\1/p')
+commands=$("$scalcal" help | awk '/^  [a-z]/ { print $1 }')
 [ -n "$commands" ] || { echo "no commands in 'scalcal help'"; exit 1; }
 failed=0
 for sub in $commands; do
