@@ -13,7 +13,8 @@ using commands::Option;
 using commands::OptionKind;
 
 // Text as roff reads it literally: a backslash is \e, every '-' is \- (Debian's man renders it as the
-// ASCII '-' a user copies into a shell), and a line may not start with a control character.
+// ASCII '-' a user copies into a shell), and a line may not start with a control character. After a
+// comma a line may break (\:), as a list such as jig:{cube,octahedron,...} is wider than a terminal.
 std::string roff(const std::string& text) {
   std::string out;
   for (char c : text) {
@@ -21,6 +22,8 @@ std::string roff(const std::string& text) {
       out += "\\e";
     else if (c == '-')
       out += "\\-";
+    else if (c == ',')
+      out += ",\\:";
     else
       out += c;
   }
@@ -34,8 +37,9 @@ std::string upper(std::string s) {
   return s;
 }
 
+// Left-adjusted (.ad l): a justified line with one long option value in it cannot be adjusted.
 std::string header(const std::string& title, const std::string& version) {
-  return ".TH " + upper(title) + " 1 \"\" \"scalcal " + version + "\" \"scalcal manual\"\n";
+  return ".TH " + upper(title) + " 1 \"\" \"scalcal " + version + "\" \"scalcal manual\"\n.ad l\n";
 }
 
 std::string value_name(const Option& o) {

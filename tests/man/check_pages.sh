@@ -51,7 +51,7 @@ groff -man -Tascii -ww -z "$dir/scalcal.1" 2>"$work/warnings" || true
 [ ! -s "$work/warnings" ] || { echo "scalcal.1: groff warns: $(head -n 1 "$work/warnings")"; failed=1; }
 render "$dir/scalcal.1" >"$work/overview"
 for sub in $commands; do
-  grep -Eq "^ {7}$sub\$" "$work/overview" || { echo "scalcal.1: no entry for $sub"; failed=1; }
+  grep -Eq "^ {7}$sub( |\$)" "$work/overview" || { echo "scalcal.1: no entry for $sub"; failed=1; }
 done
 
 # The check must fail for a page without an option: cut the --seed entry (its .TP and what follows up
