@@ -45,7 +45,7 @@ done
 for page in "$dir"/scalcal-*.1; do
   sub=$(basename "$page" .1)
   sub=${sub#scalcal-}
-  echo "$commands" | grep -qx "$sub" || { echo "$page: no command $sub"; failed=1; }
+  grep -qx "$sub" <<<"$commands" || { echo "$page: no command $sub"; failed=1; }
 done
 groff -man -Tascii -ww -z "$dir/scalcal.1" 2>"$work/warnings" || true
 [ ! -s "$work/warnings" ] || { echo "scalcal.1: groff warns: $(head -n 1 "$work/warnings")"; failed=1; }
