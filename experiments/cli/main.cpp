@@ -54,7 +54,8 @@ int print_man_page(const std::vector<std::string>& args) {
       std::cout << scalcal::cli::man_page(*c.table, SCALCAL_VERSION);
       return 0;
     }
-  return fail("", "--man takes at most one command name, got '" + args[1] + "' (try `scalcal help`)", 2);
+  if (args.size() > 2) return fail("", "--man takes at most one command name", 2);
+  return fail("", "--man: unknown command '" + args[1] + "' (try `scalcal help`)", 2);
 }
 
 }  // namespace
