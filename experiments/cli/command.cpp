@@ -19,7 +19,8 @@ std::vector<Command>& registry() {
 }  // namespace
 
 Registration::Registration(const commands::CommandTable& table, std::function<int(const commands::Values&)> run)
-    : Registration(Command{table.name, table.usage(), table.summary, table.order, [&table, run](CLI::App& app) {
+    : Registration(Command{table.name, table.usage(), table.summary, table.order,
+                           [&table, run](CLI::App& app) {
                              const auto values = add_table_options(app, table);
                              return Runner([values, run] { return run(values()); });
                            },

@@ -119,15 +119,18 @@ std::string man_page(const commands::CommandTable& table, const std::string& ver
 std::string man_overview(const std::vector<Command>& commands, const std::string& version) {
   std::string page = header("scalcal", version);
   page += ".SH NAME\nscalcal \\- scalar calibration programs for vector meters\n";
-  page += ".SH SYNOPSIS\n.B scalcal\n.I COMMAND\n[options]\n.br\n.B scalcal help\n[\\fICOMMAND\\fR]\n.br\n"
-          ".B scalcal \\-\\-version\n";
-  page += ".SH DESCRIPTION\nscalcal evaluates, synthesises and certifies calibration programs (sets of N "
-          "measurement positions on the sphere) for the scalar calibration of vector meters, and calibrates "
-          "a meter from its log.\nEach command has its own page,\n.BR scalcal\\-COMMAND (1).\n";
+  page +=
+      ".SH SYNOPSIS\n.B scalcal\n.I COMMAND\n[options]\n.br\n.B scalcal help\n[\\fICOMMAND\\fR]\n.br\n"
+      ".B scalcal \\-\\-version\n";
+  page +=
+      ".SH DESCRIPTION\nscalcal evaluates, synthesises and certifies calibration programs (sets of N "
+      "measurement positions on the sphere) for the scalar calibration of vector meters, and calibrates "
+      "a meter from its log.\nEach command has its own page,\n.BR scalcal\\-COMMAND (1).\n";
   page += ".SH COMMANDS\n";
   for (const auto& c : commands) page += ".TP\n.B " + roff(c.name) + "\n" + roff(c.summary) + "\n";
-  page += ".SH OPTIONS\n.TP\n.BR \\-h \", \" \\-\\-help\nlist the commands, and exit\n"
-          ".TP\n.B \\-\\-version\nprint the version, the commit and the build type, and exit\n";
+  page +=
+      ".SH OPTIONS\n.TP\n.BR \\-h \", \" \\-\\-help\nlist the commands, and exit\n"
+      ".TP\n.B \\-\\-version\nprint the version, the commit and the build type, and exit\n";
   page += kExitStatus;
   page += ".SH SEE ALSO\n";
   for (std::size_t i = 0; i < commands.size(); ++i)
