@@ -35,14 +35,16 @@ void route_standard_output(const commands::CommandTable& table, const commands::
 }  // namespace
 
 Registration::Registration(const commands::CommandTable& table, std::function<int(const commands::Values&)> run)
-    : Registration(Command{table.name, table.usage(), table.summary, table.order, [&table, run](CLI::App& app) {
+    : Registration(Command{table.name, table.usage(), table.summary, table.order,
+                           [&table, run](CLI::App& app) {
                              const auto values = add_table_options(app, table);
                              return Runner([values, run, &table] {
                                const commands::Values v = values();
                                route_standard_output(table, v);
                                return run(v);
                              });
-                           }}) {}
+                           },
+                           &table}) {}
 
 Registration::Registration(Command c) {
   auto& r = registry();

@@ -30,6 +30,7 @@ struct Command {
   int order = 100;      // position in `scalcal help`
   // Declares the options on `app`, bound to state that the returned runner owns.
   std::function<Runner(CLI::App& app)> setup;
+  const commands::CommandTable* table = nullptr;  // its options (the man page is made from it)
 };
 
 struct Registration {

@@ -12,6 +12,7 @@
 
 #include "commands/tool_info.hpp"
 #include "experiments/cli/command.hpp"
+#include "experiments/cli/man_page.hpp"
 #include "experiments/cli/output_file.hpp"
 #include "numeric/io/input_error.hpp"
 #include "numeric/io/resource_error.hpp"
@@ -59,6 +60,22 @@ std::string address_space_too_small() {
          " MB (its BLAS reserves 128 MB at first use)";
 }
 
+// `scalcal --man [COMMAND]` (not in the help: the build uses it to write the man pages) prints
+// scalcal(1), or scalcal-COMMAND(1).
+int print_man_page(const std::vector<std::string>& args) {
+  if (args.size() == 1) {
+    std::cout << scalcal::cli::man_overview(commands(), SCALCAL_VERSION);
+    return 0;
+  }
+  for (const auto& c : commands())
+    if (args.size() == 2 && c.name == args[1] && c.table) {
+      std::cout << scalcal::cli::man_page(*c.table, SCALCAL_VERSION);
+      return 0;
+    }
+  if (args.size() > 2) return fail("", "--man takes at most one command name", 2);
+  return fail("", "--man: unknown command '" + args[1] + "' (try `scalcal help`)", 2);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -72,6 +89,7 @@ int main(int argc, char** argv) {
     print_overview(std::cout);
     return 0;
   }
+  if (args[0] == "--man") return print_man_page(args);
 
   CLI::App app("scalar calibration programs for vector meters", "scalcal");
   app.set_help_flag();

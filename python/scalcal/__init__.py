@@ -10,9 +10,15 @@ input raises ``InputError``, bad options ``UsageError``, a result that did not c
 unit of work (a start of a multistart).
 """
 import inspect
+import os as _os
 import warnings as _warnings
 
 from . import _scalcal
+
+# A package installed by pip carries the paper's tables beside it (setup.py); the C++ reads SCALCAL_DATA.
+_DATA = _os.path.join(_os.path.dirname(__file__), "data")
+if _os.path.isfile(_os.path.join(_DATA, "table1_A.csv")):
+    _os.environ.setdefault("SCALCAL_DATA", _DATA)
 
 __version__ = _scalcal.__version__
 __all__ = ["Error", "InputError", "UsageError", "ConvergenceError", "ScalcalWarning", "program"]
