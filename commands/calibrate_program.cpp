@@ -39,19 +39,23 @@ Region region_of(const std::vector<std::string>& specs, Warnings& warnings) {
 }
 
 // Measured directions outside the region (beyond the tolerance): the data are what they are, so a
-// warning naming up to ten of them (their order in the data), not a refusal.
-void warn_outside(const Program& measured, const Region& region, double tolerance_deg, Warnings& warnings) {
+// warning naming up to ten of them (their order in the data), not a refusal. Returns whether any is
+// outside: the region's limits then bound nothing about this program, and no efficiency is given.
+bool warn_outside(const Program& measured, const Region& region, double tolerance_deg, Warnings& warnings) {
   std::vector<int> outside;
   for (int i = 0; i < measured.size(); ++i)
     if (!region.contains(measured.positions[static_cast<std::size_t>(i)], tolerance_deg)) outside.push_back(i + 1);
-  if (outside.empty()) return;
+  if (outside.empty()) return false;
   std::string list;
   for (std::size_t k = 0; k < outside.size() && k < 10; ++k) list += (k ? ", " : "") + std::to_string(outside[k]);
   std::ostringstream t;
   t << tolerance_deg;
   warnings.push_back({"--region", std::to_string(outside.size()) + " of " + std::to_string(measured.size()) +
                                       " measured positions lie outside " + region.text() + " by more than " + t.str() +
-                                      " degrees: " + list + (outside.size() > 10 ? ", ..." : "")});
+                                      " degrees: " + list + (outside.size() > 10 ? ", ..." : "") +
+                                      "; no efficiency on the region is given (its limits bound only programs "
+                                      "inside it)"});
+  return true;
 }
 
 // sqrt(max K(r,r)) over each group the model has, not normalised by N.
@@ -113,14 +117,14 @@ ProgramQuality program_quality(const CalibrateRequest& q, CalibrateResult& r, co
   const Region region = region_of(paper9 ? q.regions : std::vector<std::string>{}, r.warnings);
   out.region = region.text();
   const Program measured{r.fit.directions};
-  if (paper9 && !q.regions.empty()) warn_outside(measured, region, q.tolerance_deg, r.warnings);
+  const bool outside = paper9 && !q.regions.empty() && warn_outside(measured, region, q.tolerance_deg, r.warnings);
   const int P = model_parameters(r.model);
   out.evaluation = evaluate(r.model, measured);
   for (CriterionKind c : kCriteria) {
     const double v = out.evaluation.value(c);
     double limit = NAN;
     if (paper9) {
-      if (has_limit(c)) limit = limit_value(c, region);  // a registered criterion may have no known limit: NaN
+      if (has_limit(c) && !outside) limit = limit_value(c, region);  // a registered criterion may have no known limit: NaN
     } else if (const auto stated = stated_limit(r.model, criterion_name(c))) {
       limit = stated->value;
     }

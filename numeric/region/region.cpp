@@ -306,7 +306,24 @@ Region inset_region(const Region& region, double margin_deg) {
 Region parse_region(const std::vector<std::string>& specs) {
   if (specs.empty()) return sphere_region();
   Region r;
-  for (const auto& s : specs) add_region_spec(r, s);
+  for (const auto& s : specs) {
+    const std::size_t before = r.zones.size();
+    add_region_spec(r, s);
+    // A zone given again adds nothing to the union, but would be counted twice by the candidate
+    // grids and solid angles: 32 copies of one cap gave 12x the candidates and a proven A bound
+    // 0.45 below the optimum instead of 2e-5. The repeated spec is dropped whole.
+    const auto same = [&](const Zone& a, const Zone& b) {
+      return a.axis == b.axis && a.min_tilt_deg == b.min_tilt_deg && a.max_tilt_deg == b.max_tilt_deg;
+    };
+    bool repeated = r.zones.size() > before;
+    for (std::size_t k = before; k < r.zones.size() && repeated; ++k)
+      repeated = std::any_of(r.zones.begin(), r.zones.begin() + static_cast<std::ptrdiff_t>(before),
+                             [&](const Zone& z) { return same(z, r.zones[k]); });
+    if (repeated) {
+      r.zones.resize(before);
+      r.specs.pop_back();
+    }
+  }
   return r;
 }
 

@@ -123,6 +123,14 @@ std::vector<Case> cases() {
                  },
                  E::error,
                  {"over.json", "not a JSON object", "number overflow"}});
+  // Item 4: 32 copies of one --region widened the proven A gap from 2e-5 to 0.45 (each copy counted
+  // again); the union of a zone with itself is the zone (faces:20, three times, gave 72 candidates
+  // instead of 24 before the fix).
+  out.push_back({"RegionRepeated",
+                 [] { return std::string("limits --json --region faces:20 --region faces:20 --region faces:20"); },
+                 E::same,
+                 {},
+                 [] { return std::string("limits --json --region faces:20"); }});
   return out;
 }
 
@@ -152,6 +160,17 @@ TEST(NonUtf8Path, EveryJsonOutputIsWritten) {
   const CliResult r = run_limited("evaluate classic18 --json --out " + quote(out_file) + " --region " + region);
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_GT(std::filesystem::file_size(out_file), 0u);
+}
+
+// Item 5: calibrate --region on positions outside the region printed efficiencies of 56 to 93573 (the
+// region's limits bound only programs inside it): now the warning says no efficiency is given, and none is.
+TEST(CalibrateOutsideRegion, GivesNoEfficiency) {
+  const std::string log = quote(std::string(SCALCAL_SOURCE_DIR) + "/data/xsens_acc.txt");
+  const CliResult r = run_limited("calibrate --magnitude 9.81744 --region cap:30 --measurements " + log);
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("31 of 38 measured positions lie outside cap:30"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("no efficiency on the region is given"), std::string::npos) << r.err;
+  EXPECT_NE(r.out.find("efficiency on cap:30: D n/a A n/a E n/a S n/a"), std::string::npos) << r.out;
 }
 
 // Item 8: a byte-order mark on a whitespace raw log made --format auto read it as CSV. The log with
