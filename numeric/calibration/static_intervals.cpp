@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 
 #include "numeric/io/input_error.hpp"
@@ -82,6 +83,24 @@ double quiet_floor(std::vector<double> v) {
   return quantile(quiet, 0.5);
 }
 
+// The variances sum squares of the samples, and the calibration's fit fourth powers: a log of values
+// so large that these overflow (data scaled by 1e160) would have no finite variance or no fit and be
+// reported as flat or unusable, so the overflow is named instead.
+void check_powers_fit(const RawLog& log, const std::vector<char>& usable) {
+  double largest = 0;
+  for (int i = 0; i < log.size(); ++i)
+    if (usable[static_cast<std::size_t>(i)])
+      largest = std::max(largest, log.samples[static_cast<std::size_t>(i)].cwiseAbs().maxCoeff());
+  const double squared = largest * largest;
+  if (squared * squared * log.size() < 1e300) return;
+  char text[200];
+  std::snprintf(text, sizeof text,
+                "samples reach %.3g: the fit's fourth powers overflow double precision (beyond 1e308); "
+                "rescale the log (e.g. to its physical units)",
+                largest);
+  throw InputError(log.file, 0, text);
+}
+
 // The variance norm of the window of w samples centred on each sample, by prefix sums (shifted
 // by `shift`: raw sums of counts near 32768 would cancel badly); NaN where the window is incomplete
 // or holds an unusable sample.
@@ -103,7 +122,11 @@ std::vector<double> window_variances(const RawLog& log, const std::vector<char>&
     if (bad[b] - bad[a] > 0) continue;
     const Vec3 m = (ps[b] - ps[a]) / w;
     const Vec3 var = (ps2[b] - ps2[a]) / w - m.cwiseProduct(m);
-    out[static_cast<std::size_t>(i)] = var.cwiseMax(0.0).norm();
+    // The norm squares the variances again: beyond 1e150 it is taken scaled (it would overflow),
+    // below unchanged (the same bits as always).
+    const Vec3 v = var.cwiseMax(0.0);
+    const double largest = v.maxCoeff();
+    out[static_cast<std::size_t>(i)] = largest > 1e150 ? largest * (v / largest).norm() : v.norm();
   }
   return out;
 }
@@ -179,6 +202,7 @@ IntervalDetection detect_static_intervals(const RawLog& log, const StaticInterva
                          " s) holds no usable sample (every row is non-finite or saturated)");
   if (first == n) throw InputError(log.file, 0, "no usable sample (every row is non-finite or saturated)");
   const Vec3 shift = log.samples[static_cast<std::size_t>(first)];
+  check_powers_fit(log, usable);
   const std::vector<double> variance = window_variances(log, usable, d.window, shift);
   std::vector<double> finite;
   for (double v : variance)

@@ -108,6 +108,17 @@ std::vector<Case> cases() {
                                                     "x,y,z\n0.6,0.8,0\n1,0,0\n0,1,0\n0,0,1\n0.6,0,0.8\n0,0.6,0.8\n"
                                                     "1,1,1\n1,-1,1\n-1,1,1\n1,1,-1\n");
                  }});
+  // Item 8: a raw log scaled by 1e160 was "too flat" or had "no usable window": its squares and
+  // fourth powers overflow, and the message says so.
+  out.push_back({"RawLogOverflow",
+                 [] {
+                   std::string text;
+                   for (int i = 0; i < 400; ++i)
+                     text += std::to_string(0.01 * i) + " 1e160 " + std::to_string(2 + i % 7) + "e160 -3e160\n";
+                   return "calibrate --magnitude 1 --measurements " + file("huge.txt", text);
+                 },
+                 E::error,
+                 {"huge.txt", "samples reach 8e+160", "overflow double precision", "rescale the log"}});
   return out;
 }
 
