@@ -94,6 +94,27 @@ void report_figures_4_5_6(Context& ctx, double limit) {
           missed == expected ? "same on these N" : "differs: paper's set on these N is {" + expected + "}");
 }
 
+// Fig. 6's numbers of the N whose optimum misses the limit (circled): above the circle; to its left
+// when the next N also misses at nearly the same height, where the two numbers would collide.
+std::string miss_labels(Context& ctx, double limit, double top6) {
+  using namespace plots::style;
+  std::string out;
+  std::vector<int> misses;
+  for (int n : ctx.optimised_sizes(CriterionKind::D))
+    if (ctx.optimum(CriterionKind::D, n)->ev.value(CriterionKind::D) > limit * (1 + kLimitTolerance))
+      misses.push_back(n);
+  for (std::size_t i = 0; i < misses.size(); ++i) {
+    const double d = ctx.optimum(CriterionKind::D, misses[i])->ev.value(CriterionKind::D);
+    const bool crowded =
+        i + 1 < misses.size() && misses[i + 1] == misses[i] + 1 &&
+        std::abs(ctx.optimum(CriterionKind::D, misses[i + 1])->ev.value(CriterionKind::D) - d) < 0.08 * (top6 - 1.45e7);
+    out += "set label " + std::to_string(10 + i) + " '" + std::to_string(misses[i]) + "' at " +
+           std::to_string(misses[i]) + ", " + csv_num(d) +
+           (crowded ? " offset -1.7,-0.2 center" : " offset 0,1.1 center") + " front tc rgb '" + medium + "'\n";
+  }
+  return out;
+}
+
 }  // namespace
 
 void figures_4_5_6(Context& ctx) {
@@ -174,21 +195,7 @@ void figures_4_5_6(Context& ctx) {
                       "'\nset format y '%.1t'\nset yrange [1.45e7:" + csv_num(top6) + "]\nset ytics 2e6\nunset key\n" +
                       limit_label + "set label 2 \"" + random_label + "\" at 15.5, " + csv_num(0.947 * top6) +
                       " left front tc rgb '" + random + "'\n";
-  std::vector<int> misses;
-  for (int n : ctx.optimised_sizes(CriterionKind::D))
-    if (ctx.optimum(CriterionKind::D, n)->ev.value(CriterionKind::D) > limit * (1 + kLimitTolerance))
-      misses.push_back(n);
-  for (std::size_t i = 0; i < misses.size(); ++i) {
-    // Above the circle; to its left when the next N also misses at nearly the same height, where the
-    // two numbers would collide.
-    const double d = ctx.optimum(CriterionKind::D, misses[i])->ev.value(CriterionKind::D);
-    const bool crowded =
-        i + 1 < misses.size() && misses[i + 1] == misses[i] + 1 &&
-        std::abs(ctx.optimum(CriterionKind::D, misses[i + 1])->ev.value(CriterionKind::D) - d) < 0.08 * (top6 - 1.45e7);
-    body6 += "set label " + std::to_string(10 + i) + " '" + std::to_string(misses[i]) + "' at " +
-             std::to_string(misses[i]) + ", " + csv_num(d) +
-             (crowded ? " offset -1.7,-0.2 center" : " offset 0,1.1 center") + " front tc rgb '" + medium + "'\n";
-  }
+  body6 += miss_labels(ctx, limit, top6);
   std::string plot = class_plot({6, false, true, true}, ctx);
   plot.pop_back();
   plot +=

@@ -57,6 +57,52 @@ void report_parameters_and_program(Report& rep, const AnyUnitsCalibration& a, co
       "[experiments/docs/real_data.md](../experiments/docs/real_data.md).");
 }
 
+// fig13's gnuplot script: the log (a) over its static intervals and |a| - g per interval (b); two panels
+// on the page width with their keys in a common right margin; the axes are x, y, z in dark, medium,
+// light over light grey static intervals.
+std::string fig13_script(const RawLog& log, const IntervalDetection& d) {
+  double lo = INFINITY, hi = -INFINITY;
+  for (int i = 0; i < log.size(); ++i)
+    if (log.finite(i)) {
+      lo = std::min(lo, log.samples[static_cast<std::size_t>(i)].minCoeff());
+      hi = std::max(hi, log.samples[static_cast<std::size_t>(i)].maxCoeff());
+    }
+  const double pad = 0.04 * (hi - lo), mid = 0.5 * (lo + hi), half = 0.5 * (hi - lo) + pad;
+  using namespace plots::style;
+  return "set multiplot\nset grid\nset lmargin at screen 0.1\nset rmargin at screen 0.78\n"
+         "set key outside right top Left reverse samplen 2 width -1\nset label 1 '(a)' at graph 0, graph 1.04 left "
+         "front\n"
+         "set tmargin at screen 0.94\nset bmargin at screen 0.6\nset xlabel 't (s)'\n"
+         "set xrange [0:" +
+         csv_num(std::ceil(log.t.back() / 10) * 10) +
+         "]\n"
+         "set ylabel 'ADC counts'\nset style fill solid 1.0 noborder\nset yrange [" +
+         csv_num(mid - half) + ":" + csv_num(mid + half) +
+         "]\n"
+         "plot 'real_intervals.csv' skip 1 using (($2+$3)/2):(" +
+         csv_num(mid) + "):(($3-$2)/2):(" + csv_num(half) +
+         ") with boxxyerror lc rgb '#e3e3e3' title 'static', \\\n"
+         "     'real_log.csv' skip 1 using 1:2 with lines lw 1 lc rgb '" +
+         dark +
+         "' title 'x', \\\n"
+         "     'real_log.csv' skip 1 using 1:3 with lines lw 1 lc rgb '" +
+         medium +
+         "' title 'y', \\\n"
+         "     'real_log.csv' skip 1 using 1:4 with lines lw 1 lc rgb '" +
+         light +
+         "' title 'z'\n"
+         "set label 1 '(b)'\nset tmargin at screen 0.44\nset bmargin at screen 0.12\nset xlabel 'static interval'\n"
+         "set ylabel '| |a| − g | (m/s" +
+         plots::sup("2") + ")'\nset xrange [0:" + std::to_string(d.intervals.size() + 1) +
+         "]\nset yrange [*:*]\nset logscale y\nset format y '10" + plots::sup("%T") +
+         "'\n"
+         "plot 'real_intervals.csv' skip 1 using 1:(abs($5)) with points pt 6 ps 0.9 lw 1.5 lc rgb '" +
+         grey +
+         "' title 'before (one gain)', \\\n"
+         "     'real_intervals.csv' skip 1 using 1:(abs($6)) with points pt 7 ps 0.9 lc rgb '" +
+         dark + "' title 'after calibration'\nunset multiplot\n";
+}
+
 }  // namespace
 
 void real_data(Context& ctx) {
@@ -104,48 +150,7 @@ void real_data(Context& ctx) {
                csv_num(log.samples[static_cast<std::size_t>(i)](2))});
   raw.close();
 
-  double lo = INFINITY, hi = -INFINITY;
-  for (int i = 0; i < log.size(); ++i)
-    if (log.finite(i)) {
-      lo = std::min(lo, log.samples[static_cast<std::size_t>(i)].minCoeff());
-      hi = std::max(hi, log.samples[static_cast<std::size_t>(i)].maxCoeff());
-    }
-  const double pad = 0.04 * (hi - lo), mid = 0.5 * (lo + hi), half = 0.5 * (hi - lo) + pad;
-  // Two panels on the page width with their keys in a common right margin; the axes are x, y, z in
-  // dark, medium, light over light grey static intervals.
-  using namespace plots::style;
-  std::string body =
-      "set multiplot\nset grid\nset lmargin at screen 0.1\nset rmargin at screen 0.78\n"
-      "set key outside right top Left reverse samplen 2 width -1\nset label 1 '(a)' at graph 0, graph 1.04 left front\n"
-      "set tmargin at screen 0.94\nset bmargin at screen 0.6\nset xlabel 't (s)'\n"
-      "set xrange [0:" +
-      csv_num(std::ceil(log.t.back() / 10) * 10) +
-      "]\n"
-      "set ylabel 'ADC counts'\nset style fill solid 1.0 noborder\nset yrange [" +
-      csv_num(mid - half) + ":" + csv_num(mid + half) +
-      "]\n"
-      "plot 'real_intervals.csv' skip 1 using (($2+$3)/2):(" +
-      csv_num(mid) + "):(($3-$2)/2):(" + csv_num(half) +
-      ") with boxxyerror lc rgb '#e3e3e3' title 'static', \\\n"
-      "     'real_log.csv' skip 1 using 1:2 with lines lw 1 lc rgb '" +
-      dark +
-      "' title 'x', \\\n"
-      "     'real_log.csv' skip 1 using 1:3 with lines lw 1 lc rgb '" +
-      medium +
-      "' title 'y', \\\n"
-      "     'real_log.csv' skip 1 using 1:4 with lines lw 1 lc rgb '" +
-      light +
-      "' title 'z'\n"
-      "set label 1 '(b)'\nset tmargin at screen 0.44\nset bmargin at screen 0.12\nset xlabel 'static interval'\n"
-      "set ylabel '| |a| − g | (m/s" +
-      plots::sup("2") + ")'\nset xrange [0:" + std::to_string(d.intervals.size() + 1) +
-      "]\nset yrange [*:*]\nset logscale y\nset format y '10" + plots::sup("%T") +
-      "'\n"
-      "plot 'real_intervals.csv' skip 1 using 1:(abs($5)) with points pt 6 ps 0.9 lw 1.5 lc rgb '" +
-      grey +
-      "' title 'before (one gain)', \\\n"
-      "     'real_intervals.csv' skip 1 using 1:(abs($6)) with points pt 7 ps 0.9 lc rgb '" +
-      dark + "' title 'after calibration'\nunset multiplot\n";
+  const std::string body = fig13_script(log, d);
   render_figure(ctx, "fig13", "the Xsens log with its static intervals, and |a| - g per interval before and after",
                 body, plots::kPageWidthCm, 9.5);
   rep.figure("fig13",
