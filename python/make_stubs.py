@@ -16,14 +16,24 @@ TYPES = {"integer": "int", "number": "float", "flag": "bool", "text": "str | os.
 def default(o):
     """The option's default as a Python value (None where the table states it in words)."""
     d = o["default"]
+    if o["kind"] == "flag":
+        return d not in ("", "0", "false")
     try:
         return {"integer": int, "number": float}.get(o["kind"], str)(d) if d and not o["default_text"] else None
     except ValueError:
         return None
 
 
+def text_type(o):
+    """A text option is a path only when its unit says so; a quantity (--magnitude 9.81 or auto) also
+    takes a number; a name (--sensor, --units) is text."""
+    if "(unit: file path" in o["help"] or "(unit: folder path" in o["help"]:
+        return "str | os.PathLike[str]"
+    return "str" if "(unit: none" in o["help"] else "str | float"
+
+
 def annotation(o):
-    t = TYPES[o["kind"]]
+    t = text_type(o) if o["kind"] == "text" else TYPES[o["kind"]]
     if o["positions"]:
         t += " | ArrayLike"
     if o.get("columns"):

@@ -200,3 +200,15 @@ def test_export_is_the_cli_export(tmp_path):
         r = scalcal.export(str(cal), format=fmt)
         same(r, cli_json("export", str(cal), "--format", fmt))
         assert r["text"], fmt
+
+
+def test_stubs_state_what_the_functions_take():
+    # The stubs come from the option tables: a flag's default is a bool, a quantity takes a number, a
+    # path a PathLike (issue 33), and every stub is valid Python.
+    stubs = open(os.path.join(os.path.dirname(scalcal.__file__), "__init__.pyi")).read()
+    compile(stubs, "__init__.pyi", "exec")
+    assert "keep_outliers: bool | None = False" in stubs
+    assert "quick: bool | None = False" in stubs
+    assert "magnitude: str | float" in stubs
+    assert "measurements: str | os.PathLike[str]" in stubs
+    assert "= '0'" not in stubs
