@@ -6,13 +6,11 @@
 #include <algorithm>
 #include <cmath>
 
+#include "commands/calibrate.hpp"
 #include "experiments/reproduce/figures.hpp"
 #include "experiments/reproduce/format.hpp"
-#include "numeric/calibration/any_units.hpp"
 #include "numeric/calibration/raw_log.hpp"
-#include "numeric/calibration/static_intervals.hpp"
 #include "numeric/program/catalogue.hpp"
-#include "numeric/region/program_advice.hpp"
 #include "plots/csv_writer.hpp"
 #include "plots/figure.hpp"
 
@@ -23,9 +21,9 @@ using plots::CsvWriter;
 namespace {
 
 // The report's table of the estimated parameters with their standard errors, and the program the
-// log's positions turned out to be, with the positions worth adding.
-void report_parameters_and_program(Report& rep, const AnyUnitsCalibration& a, const ProgramAdvice& advice) {
-  const Evaluation& ev = advice.evaluation;
+// log's positions turned out to be, with the positions worth adding: all as `calibrate` gives them.
+void report_parameters_and_program(Report& rep, const commands::CalibrateResult& c) {
+  const AnyUnitsCalibration& a = c.fit;
   std::vector<std::vector<std::string>> rows;
   const char* names[3] = {"x", "y", "z"};
   const char* pairs[3] = {"xy", "yz", "zx"};
@@ -34,27 +32,31 @@ void report_parameters_and_program(Report& rep, const AnyUnitsCalibration& a, co
                     decimal(a.bias_std(k), 3)});
   }
   for (int k = 0; k < 3; ++k)
-    rows.push_back({std::string("scale ") + names[k] + " (counts per m/s²)", decimal(a.correction.scale(k), 7),
-                    decimal(a.scale_deviation_std(k) * a.nominal_gain, 3)});
+    rows.push_back({std::string("gain ") + names[k] + " (counts per m/s²)", decimal(a.gain(k), 7),
+                    decimal(a.gain_std(k), 3)});
   for (int k = 0; k < 3; ++k)
     rows.push_back({std::string("γ_") + pairs[k] + " (rad)", decimal(a.correction.nonorthogonality(k), 5),
                     decimal(a.nonorthogonality_std(k), 3)});
   rep.table({"parameter", "estimate", "standard error (the larger of noise- and residual-based)"}, rows);
+  const ModelEvaluation& ev = c.program.evaluation;
   std::string suggestions;
-  for (const auto& s : advice.suggested)
-    suggestions += (suggestions.empty() ? "" : "; ") + std::string("(") + decimal(s.position(0), 3) + ", " +
-                   decimal(s.position(1), 3) + ", " + decimal(s.position(2), 3) + ") → D " + decimal(s.value, 4);
-  rep.paragraph(
-      "The program the positions turned out to be: N = " + std::to_string(ev.positions) +
-      ", D = " + decimal(ev.value(CriterionKind::D), 4) + ", A = " + decimal(ev.value(CriterionKind::A), 4) +
-      ", E = " + decimal(ev.value(CriterionKind::E), 4) + ", S = " + decimal(ev.value(CriterionKind::S), 4) +
-      ", θ = " + decimal(ev.theta_bias, 3) + ", " + decimal(ev.theta_scale, 3) + ", " + decimal(ev.theta_nonorth, 3) +
-      "; efficiency against the sphere's limits D " + decimal(advice.efficiency[0], 3) + ", A " +
-      decimal(advice.efficiency[1], 3) + ", E " + decimal(advice.efficiency[2], 3) + ", S " +
-      decimal(advice.efficiency[3], 3) +
-      ". The three positions that would improve D most (gravity's direction in the meter's frame): " + suggestions +
-      ". The comparison with an independent SciPy fit is in "
-      "[experiments/docs/real_data.md](../experiments/docs/real_data.md).");
+  for (const auto& s : c.program.suggested)
+    suggestions += (suggestions.empty() ? "" : "; ") + std::string("(") + decimal(s.position(0), 4) + ", " +
+                   decimal(s.position(1), 4) + ", " + decimal(s.position(2), 4) + ") → D " + decimal(s.value, 5);
+  std::string values, efficiencies;
+  for (CriterionKind k : kCriteria) {
+    const std::string name(criterion_name(k));
+    values += ", " + name + " = " + decimal(ev.value(k), 6);
+    efficiencies += (efficiencies.empty() ? "" : ", ") + name + " " + decimal(c.program.efficiency[k.index()], 6);
+  }
+  rep.paragraph("The program the positions turned out to be (model " + std::string(model_name(c.model)) +
+                "): N = " + std::to_string(ev.positions) + values + "; efficiency against the sphere's limits " +
+                efficiencies +
+                ". The positions that would improve D most, each with the earlier ones added (gravity's direction "
+                "in the meter's frame): " +
+                suggestions +
+                ". The comparison with an independent SciPy fit is in `experiments/docs/real_data.md` of "
+                "scalcal's source tree (a path, not a link: this report may be written anywhere).");
 }
 
 // fig13's gnuplot script: the log (a) over its static intervals and |a| - g per interval (b); two panels
@@ -110,20 +112,18 @@ void real_data(Context& ctx) {
   auto& rep = ctx.report;
   rep.heading(2, "fig13 (new): a real accelerometer log calibrated end to end");
   ctx.progress.detail("static intervals and calibration");
-  const RawLog log = read_raw_log(data_dir() + "/xsens_acc.txt");
-  const IntervalDetection d = detect_static_intervals(log);
-  std::vector<PositionSamples> data;
-  for (const auto& iv : d.intervals) {
-    PositionSamples p;
-    for (int i = iv.begin; i <= iv.end; ++i) p.samples.push_back(log.samples[static_cast<std::size_t>(i)]);
-    data.push_back(std::move(p));
-  }
-  AnyUnitsOptions o;
-  o.magnitude = kG;
-  const AnyUnitsCalibration a = calibrate_any_units("data/xsens_acc.txt", data, o);
+  // The command the report quotes, with the CLI's own defaults (its option table), so the numbers
+  // below are exactly what it prints.
+  const std::string file = data_dir() + "/xsens_acc.txt";
+  commands::Values values(commands::calibrate_table());
+  values.set("--measurements", file);
+  values.set("--magnitude", "9.81744");
+  const commands::CalibrateResult c = commands::calibrate(commands::calibrate_request(values));
+  const RawLog log = read_raw_log(file);
+  const IntervalDetection& d = *c.detection;
   // Before: the datasheet way, zero at 32768 and one gain for all three axes (the best such gain).
   std::vector<double> raw_norms;
-  for (const auto& p : data) raw_norms.push_back((p.mean() - Vec3::Constant(32768)).norm());
+  for (const auto& p : c.positions) raw_norms.push_back((p.mean - Vec3::Constant(32768)).norm());
   std::vector<double> sorted = raw_norms;
   std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2), sorted.end());
   const double one_gain = sorted[sorted.size() / 2] / kG;
@@ -131,15 +131,16 @@ void real_data(Context& ctx) {
   CsvWriter intervals(ctx.file("real_intervals.csv"),
                       {"interval", "start", "end", "samples", "before_minus_g", "after_minus_g"});
   double ss_before = 0, ss_after = 0;
-  for (std::size_t k = 0; k < data.size(); ++k) {
-    const double before = raw_norms[k] / one_gain - kG, after = a.correction.apply(data[k].mean()).norm() - kG;
+  for (std::size_t k = 0; k < c.positions.size(); ++k) {
+    const auto& p = c.positions[k];
+    const double before = raw_norms[k] / one_gain - kG, after = p.residual;
     ss_before += before * before;
     ss_after += after * after;
-    intervals.row({std::to_string(k + 1), csv_num(d.intervals[k].start), csv_num(d.intervals[k].stop),
-                   std::to_string(d.intervals[k].samples()), csv_num(before), csv_num(after)});
+    intervals.row({std::to_string(k + 1), csv_num(p.start), csv_num(p.end), std::to_string(p.samples),
+                   csv_num(before), csv_num(after)});
   }
   intervals.close();
-  const double n = static_cast<double>(data.size());
+  const double n = static_cast<double>(c.positions.size());
   const double rms_before = std::sqrt(ss_before / n) / kG, rms_after = std::sqrt(ss_after / n) / kG;
   // The log itself, every 5th row (its shape, not its noise, is what the figure shows).
   CsvWriter raw(ctx.file("real_log.csv"), {"t", "ix", "iy", "iz"});
@@ -157,19 +158,18 @@ void real_data(Context& ctx) {
              "fig13: (a) the raw log (ADC counts) with the static intervals scalcal found (shaded); (b) "
              "| |a| − g | of each interval's mean before calibration (zero at 32768, one gain for all three "
              "axes) and after");
-  const ProgramAdvice advice = advise_program(Program{a.directions}, sphere_region(), CriterionKind::D, 3);
   rep.paragraph("`scalcal calibrate --measurements data/xsens_acc.txt --magnitude 9.81744` on the log of IMU-TK (" +
-                std::to_string(log.size()) + " rows, 100 Hz; BSD licence, data/README.md): " +
+                std::to_string(log.size()) + " rows, 100 Hz; BSD licence, data/README.md), whose numbers these are: " +
                 std::to_string(d.intervals.size()) + " static intervals (window " + std::to_string(d.window) +
                 " samples, threshold " + decimal(d.threshold, 4) +
-                " counts² = 6 × the noise floor of the log's quiet windows), " + std::to_string(a.estimate.iterations) +
-                " iterations from the ellipsoid start. RMS of |a| − g over the "
-                "intervals: " +
-                decimal(rms_before, 3) + " of g before (one gain " + decimal(one_gain, 5) + " counts per m/s²), " +
-                decimal(rms_after, 3) +
-                " after. Data: [real_intervals.csv](real_intervals.csv), "
-                "[real_log.csv](real_log.csv) (every 5th row).");
-  report_parameters_and_program(rep, a, advice);
+                " counts² = 6 × the noise floor of the log's quiet windows), " + std::to_string(c.excluded.size()) +
+                " outlier sample(s) excluded, model " + std::string(model_name(c.model)) + ", " +
+                std::to_string(c.fit.estimate.iterations) +
+                " iterations from the ellipsoid start. RMS of |a| − g over the intervals: " + decimal(rms_before, 3) +
+                " of g before (one gain " + decimal(one_gain, 5) + " counts per m/s²), " + decimal(rms_after, 3) +
+                " after. Data: [real_intervals.csv](real_intervals.csv), [real_log.csv](real_log.csv) (every 5th "
+                "row).");
+  report_parameters_and_program(rep, c);
 }
 
 }  // namespace scalcal::reproduce
