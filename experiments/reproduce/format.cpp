@@ -23,9 +23,13 @@ std::string decimal(double x, int significant) {
   return ::fmt::format("{:.{}g}", x, std::max(significant, std::min(before_point, 15)));
 }
 
+// Values computed in double agree to about 1e-13 when they are equal: a smaller difference is
+// rounding, not data, and is printed as agreement.
 std::string pct(double ours, double theirs) {
   if (!std::isfinite(ours) || !std::isfinite(theirs) || theirs == 0) return "n/a";
-  return ::fmt::format("{:+.3g} %", 100.0 * (ours - theirs) / theirs);
+  const double relative = (ours - theirs) / theirs;
+  if (std::abs(relative) < 1e-10) return "0 (equal to 10 digits)";
+  return ::fmt::format("{:+.3g} %", 100.0 * relative);
 }
 
 std::string csv_num(double x) { return std::isfinite(x) ? ::fmt::format("{}", x) : std::string(); }

@@ -32,8 +32,8 @@ void report_parameters_and_program(Report& rep, const commands::CalibrateResult&
                     decimal(a.bias_std(k), 3)});
   }
   for (int k = 0; k < 3; ++k)
-    rows.push_back({std::string("gain ") + names[k] + " (counts per m/s²)", decimal(a.gain(k), 7),
-                    decimal(a.gain_std(k), 3)});
+    rows.push_back(
+        {std::string("gain ") + names[k] + " (counts per m/s²)", decimal(a.gain(k), 7), decimal(a.gain_std(k), 3)});
   for (int k = 0; k < 3; ++k)
     rows.push_back({std::string("γ_") + pairs[k] + " (rad)", decimal(a.correction.nonorthogonality(k), 5),
                     decimal(a.nonorthogonality_std(k), 3)});
@@ -49,9 +49,8 @@ void report_parameters_and_program(Report& rep, const commands::CalibrateResult&
     values += ", " + name + " = " + decimal(ev.value(k), 6);
     efficiencies += (efficiencies.empty() ? "" : ", ") + name + " " + decimal(c.program.efficiency[k.index()], 6);
   }
-  rep.paragraph("The program the positions turned out to be (model " + std::string(model_name(c.model)) +
-                "): N = " + std::to_string(ev.positions) + values + "; efficiency against the sphere's limits " +
-                efficiencies +
+  rep.paragraph("The program the positions turned out to be (model " + std::string(model_name(c.model)) + "): N = " +
+                std::to_string(ev.positions) + values + "; efficiency against the sphere's limits " + efficiencies +
                 ". The positions that would improve D most, each with the earlier ones added (gravity's direction "
                 "in the meter's frame): " +
                 suggestions +
@@ -136,8 +135,8 @@ void real_data(Context& ctx) {
     const double before = raw_norms[k] / one_gain - kG, after = p.residual;
     ss_before += before * before;
     ss_after += after * after;
-    intervals.row({std::to_string(k + 1), csv_num(p.start), csv_num(p.end), std::to_string(p.samples),
-                   csv_num(before), csv_num(after)});
+    intervals.row({std::to_string(k + 1), csv_num(p.start), csv_num(p.end), std::to_string(p.samples), csv_num(before),
+                   csv_num(after)});
   }
   intervals.close();
   const double n = static_cast<double>(c.positions.size());

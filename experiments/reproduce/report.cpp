@@ -49,7 +49,9 @@ void Report::write(const std::filesystem::path& file, const std::string& preambl
   out << preamble;
   if (!claims_.empty()) {
     out << "\n## The paper's stated numbers beside scalcal's\n\n"
-        << markdown_table({"claim (paper)", "paper", "scalcal", "difference"}, claims_) << "\n";
+        << markdown_table({"claim (paper)", "paper", "scalcal", "difference (scalcal − paper, or − the closed form)"},
+                          claims_)
+        << "\n";
   }
   out << body_.str() << epilogue;
   out.close();  // a full disk shows only when the buffer reaches it
