@@ -33,8 +33,9 @@ void figure_9(Context& ctx) {
   for (std::size_t i = 0; i < kCriteria.size(); ++i)
     if (const Entry* e = ctx.optimum(kCriteria[i], 18)) {
       const std::string cn(criterion_name(kCriteria[i]));
-      items.push_back({"scalcal " + cn + "-optimal", "scalcal " + cn, e,
-                       std::string("with lines lw 2 lc rgb '") + criterion[i] + "'"});
+      items.push_back(
+          {"scalcal " + cn + "-optimal", "scalcal " + cn, e,
+           std::string("with lines lw 2 dt ") + std::to_string(criterion_dash[i]) + " lc rgb '" + criterion[i] + "'"});
     }
   const char* paper_labels[] = {"paper Table 1 (A)", "paper Table 2 (E)", "paper Table 3 (S)"};
   const char* paper_keys[] = {"paper A (Tab. 1)", "paper E (Tab. 2)", "paper S (Tab. 3)"};
