@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "commands/common_options.hpp"
+#include "experiments/cli/table_options.hpp"
 
 namespace scalcal::cli {
 namespace {
@@ -42,18 +43,6 @@ std::string header(const std::string& title, const std::string& version) {
   return ".TH " + upper(title) + " 1 \"\" \"scalcal " + version + "\" \"scalcal manual\"\n.ad l\n";
 }
 
-std::string value_name(const Option& o) {
-  if (!o.value_name.empty()) return o.value_name;
-  if (o.kind == OptionKind::integer) return "INT";
-  if (o.kind == OptionKind::number) return "NUM";
-  if (o.kind == OptionKind::choice) {
-    std::string names;
-    for (const auto& c : o.choices) names += (names.empty() ? "" : "|") + c;
-    return names;
-  }
-  return "TEXT";
-}
-
 // What values the option accepts, as its check reads them (option_table.cpp): "" when only "any text".
 std::string accepted(const Option& o) {
   switch (o.kind) {
@@ -86,7 +75,7 @@ std::string option_entry(const Option& o) {
   else if (!o.name.starts_with("-"))
     tag = ".I " + roff(o.name);  // a positional argument
   else
-    tag = ".BI \"" + roff(o.name) + " \" \"" + roff(value_name(o)) + "\"";
+    tag = ".BI \"" + roff(o.name) + " \" \"" + roff(type_name(o)) + "\"";
   std::string body = roff(o.help());
   if (!body.empty() && body.back() != '.') body += '.';  // a sentence, as what follows is one
   const std::string more = accepted(o);

@@ -26,6 +26,8 @@ CLI::Validator table_check(const Option& o) {
   return CLI::Validator([o](std::string& s) { return o.check(s); }, "");
 }
 
+}  // namespace
+
 std::string type_name(const Option& o) {
   if (!o.value_name.empty()) return o.value_name;
   if (o.kind == OptionKind::integer) return "INT";
@@ -37,8 +39,6 @@ std::string type_name(const Option& o) {
   }
   return "TEXT";
 }
-
-}  // namespace
 
 std::function<commands::Values()> add_table_options(CLI::App& app, const commands::CommandTable& table) {
   auto store = std::make_shared<Storage>();

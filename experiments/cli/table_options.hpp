@@ -14,6 +14,10 @@ namespace scalcal::cli {
 
 // Declares the table's options (not the CLI-only ones' behaviour: they are options like any other)
 // on `app`; the function returned gives the parsed values once CLI11 has run.
+// The value an option takes, as --help and the man pages show it: its value name, INT, NUM, the
+// choices joined by |, or TEXT.
+std::string type_name(const commands::Option& option);
+
 std::function<commands::Values()> add_table_options(CLI::App& app, const commands::CommandTable& table);
 
 }  // namespace scalcal::cli
