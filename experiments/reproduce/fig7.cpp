@@ -37,16 +37,19 @@ void figure_7(Context& ctx) {
   // Three panels on one column, one key above them; the random line is a D result and stays out.
   std::string body =
       "set multiplot\nset grid\nset xrange [8:49]\nset xtics 4\nset mxtics 4\n"
-      "set lmargin at screen 0.15\nset rmargin at screen 0.97\n"
+      "set lmargin at screen 0.17\nset rmargin at screen 0.97\n"
       "set key at screen 0.56, screen 0.995 center top horizontal maxcols 3 Left reverse samplen 1 width -3\n";
   const char* thetas[] = {theta_bias, theta_scale, theta_nonorth};
   const char* frames[] = {"0.88\nset bmargin at screen 0.66", "0.64\nset bmargin at screen 0.42",
                           "0.40\nset bmargin at screen 0.12"};
   for (int i = 0; i < 3; ++i) {
-    body += "set tmargin at screen " + std::string(frames[i]) + "\nset ylabel '" + thetas[i] + "'\n";
+    // θ is in units of the noise RMS σ: the label says so on a second line.
+    body += "set tmargin at screen " + std::string(frames[i]) + "\nset ylabel \"" + thetas[i] + "\\nper unit σ\"\n";
     body += std::string("set label 1 '(") + "abc"[i] + ")' at graph 0.98, graph 0.86 right front\n";
     body += i == 0 ? "set format x ''\nset ytics 0.01\nset format y '%.2f'\n" + range_a
-                   : "set autoscale y\nset ytics 1\nset format y '%g'\nunset key\nunset arrow 1\nunset label 2\n";
+                   : "set autoscale y\nset ytics 1\nset format y '%g'\nunset key\nunset arrow 1\nunset label 2\n"
+                     // a margin inside the frame, so that points on the lowest tick (θ_nonorth 3.11) are whole
+                     "set offsets 0, 0, graph 0.04, graph 0.04\n";
     if (i == 2) body += "set format x '%g'\nset xlabel 'number of measurement positions N'\n";
     body += class_plot({10 + i, i == 0, false, false, true}, ctx);
   }
@@ -68,9 +71,10 @@ void figure_7(Context& ctx) {
   for (const auto& [k, e] : ctx.optimised) take(e);
   auto& r = ctx.report;
   r.heading(2, "Fig. 7: normalised RMS errors of each program");
-  r.figure("fig7",
-           "Fig. 7: θ_bias (a), θ_scale (b), θ_nonorth (c) of the programs of Fig. 4 against N, symbols as "
-           "in Fig. 4; the arrow in (a) marks the one program above its range, with its value");
+  r.figure(
+      "fig7",
+      "Fig. 7: θ_bias (a), θ_scale (b), θ_nonorth (c), per unit σ, of the programs of Fig. 4 against N, symbols as "
+      "in Fig. 4; the arrow in (a) marks the one program above its range, with its value");
   r.paragraph("Data: [fig4_programs.csv](fig4_programs.csv). θ_bias over the " + std::to_string(count) +
               " programs with N > 15 drawn here (and the paper's Tables 1-3): from " + decimal(lo, 5) + " to " +
               decimal(hi, 5) + " (sqrt 3 = " + decimal(std::sqrt(3.0), 5) + ").");
