@@ -1,5 +1,8 @@
 // fig10 (new): the optimum of each criterion (D, A, E, S) against N, with its N -> infinity limit
 // (numeric/limits.hpp) and the paper's Tables 1-3 programs at N = 18. Data: fig10.csv.
+#include <algorithm>
+#include <cmath>
+
 #include "experiments/reproduce/figures.hpp"
 #include "experiments/reproduce/format.hpp"
 #include "numeric/criteria/registry.hpp"
@@ -10,15 +13,27 @@ namespace scalcal::reproduce {
 
 namespace {
 
-// The paper's normalisation of each criterion as its axis label (N^P is N^9 under the paper's model).
+// The paper's normalisation of each criterion as its axis label (N^P is N^9 under the paper's model);
+// the panel's own label names the criterion. D is drawn in units of 10^7, written "/ 10^7" as in Fig. 6.
 std::string axis_label(CriterionKind c) {
   std::string s(criterion_summary(c));
   if (const auto p = s.find("^P"); p != std::string::npos) s.replace(p, 2, plots::sup("9"));
   if (const auto p = s.find("lambda_max"); p != std::string::npos) s.replace(p, 10, "λ" + plots::sub("max"));
   if (const auto p = s.find("max_r"); p != std::string::npos) s.replace(p, 5, "max" + plots::sub("r"));
-  s = std::string(criterion_name(c)) + " = " + s;
-  if (c == CriterionKind::D) s += "  (10" + plots::sup("7") + ")";  // the panel's values are in units of 10^7
+  if (c == CriterionKind::D) s += " / 10" + plots::sup("7");
   return s;
+}
+
+// The y ticks of a panel whose values span [lo, hi]: a step of 1, 2 or 5 times a power of ten giving
+// about five ticks, and every tick printed with the digits that step needs (12.00, 12.05, 12.10; not
+// 12, 12.05, 12.1), one convention for all four panels.
+std::string y_ticks(double lo, double hi) {
+  const double raw = std::max(hi - lo, 1e-12 * std::abs(hi)) / 5;
+  const double power = std::pow(10.0, std::floor(std::log10(raw)));
+  const double f = raw / power;
+  const double step = (f < 1.5 ? 1 : f < 3.5 ? 2 : f < 7.5 ? 5 : 10) * power;
+  const int digits = std::max(0, -static_cast<int>(std::floor(std::log10(step) + 1e-9)));
+  return "set ytics " + csv_num(step) + "\nset format y '%." + std::to_string(digits) + "f'\n";
 }
 
 }  // namespace
@@ -58,9 +73,17 @@ void figure_limits(Context& ctx) {
     const std::string cn(criterion_name(c));
     // D in units of 10^7, so its ticks read 1.55 rather than 1.5500·10^7.
     const std::string scale = c == CriterionKind::D ? "/1e7" : "";
+    const double unit = c == CriterionKind::D ? 1e7 : 1;
+    double lo = lim.value, hi = lim.value;
+    for (int n : ctx.optimised_sizes(c)) {
+      lo = std::min(lo, ctx.optimum(c, n)->ev.value(c));
+      hi = std::max(hi, ctx.optimum(c, n)->ev.value(c));
+    }
+    for (std::size_t k = 0; k < 3; ++k)
+      if (c == kCriteria[k + 1]) hi = std::max(hi, ctx.paper[k].ev.value(c));
     body += "set lmargin at screen " + std::string(frames[i]) + "\n" +
-            (i >= 2 ? "set xlabel 'N'\n" : "unset xlabel\n") + "set ylabel " + plots::gp_quote(axis_label(c)) +
-            "\nset format y '%g'\nset label 1 '(" + "abcd"[i] + ") " + cn +
+            (i >= 2 ? "set xlabel 'N'\n" : "unset xlabel\n") + "set ylabel " + plots::gp_quote(axis_label(c)) + "\n" +
+            y_ticks(lo / unit, hi / unit) + "set label 1 '(" + "abcd"[i] + ") " + cn +
             "' at graph 0.97, graph 0.88 right front\nset label 2 " + plots::gp_quote("limit " + math_text(lim.exact)) +
             " at graph 0.97, first " + csv_num(lim.value) + scale + " offset 0,0.9 right front boxed\nplot " +
             csv_num(lim.value) + scale + " with lines lw 1.5 lc rgb '" + limit +
