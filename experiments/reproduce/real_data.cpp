@@ -59,8 +59,9 @@ void report_parameters_and_program(Report& rep, const commands::CalibrateResult&
 }
 
 // fig13's gnuplot script: the log (a) over its static intervals and |a| - g per interval (b); two panels
-// on the page width with their keys in a common right margin; the axes are x, y, z in dark, medium,
-// light over light grey static intervals.
+// on the full page width, each key in one row above its panel's right end (a key outside on the right
+// took a fifth of the width); the axes are x, y, z in dark, medium, light over light grey static
+// intervals, with the tics drawn in front of the shading.
 std::string fig13_script(const RawLog& log, const IntervalDetection& d) {
   double lo = INFINITY, hi = -INFINITY;
   for (int i = 0; i < log.size(); ++i)
@@ -70,9 +71,9 @@ std::string fig13_script(const RawLog& log, const IntervalDetection& d) {
     }
   const double pad = 0.04 * (hi - lo), mid = 0.5 * (lo + hi), half = 0.5 * (hi - lo) + pad;
   using namespace plots::style;
-  return "set multiplot\nset grid\nset lmargin at screen 0.1\nset rmargin at screen 0.78\n"
-         "set key outside right top Left reverse samplen 2 width -1\nset label 1 '(a)' at graph 0, graph 1.04 left "
-         "front\n"
+  return "set multiplot\nset grid\nset tics front\nset lmargin at screen 0.1\nset rmargin at screen 0.98\n"
+         "set key at graph 1, graph 1 right bottom horizontal Left reverse samplen 2 width -1\n"
+         "set label 1 '(a)' at graph 0, graph 1.04 left front\n"
          "set tmargin at screen 0.94\nset bmargin at screen 0.6\nset xlabel 't (s)'\n"
          "set xrange [0:" +
          csv_num(std::ceil(log.t.back() / 10) * 10) +
