@@ -58,8 +58,8 @@ void report_figures_4_5_6(Context& ctx, double limit) {
                "and the best of " +
                std::to_string(ctx.random_count) + " random programs per N (dashed" + random_n + ")");
   r.figure("fig5",
-           "Fig. 5: det K normalised by N^9, symbols as in Fig. 4; the arrow marks the one program above the "
-           "range, with its value");
+           "Fig. 5: det K normalised by N^9, symbols as in Fig. 4 (key above the plot); the arrow marks the one "
+           "program above the range, with its value");
   r.figure("fig6",
            "Fig. 6: lower part of N^9 det K, symbols as in Fig. 4, with the analytic limit 61509375/4; circled "
            "and numbered: the N whose optimum misses the limit");
@@ -143,7 +143,8 @@ void figures_4_5_6(Context& ctx) {
                 plots::kColumnWidthCm, 7);
 
   // Figs. 5 and 6 share Fig. 4's symbols; their lines are labelled in the plot, where a key of seven
-  // entries would cover the points at one column's width.
+  // entries would cover the points at one column's width. Fig. 5 has its own key of the six symbols,
+  // in three rows above the frame (as Fig. 7's), so that it reads without Fig. 4.
   // The limit's label below its line, without a box: the ranges leave it room above the frame, which
   // an opaque box used to erase from N = 31 to 47.
   const std::string limit_label =
@@ -161,7 +162,10 @@ void figures_4_5_6(Context& ctx) {
                       plots::sup("%T") +
                       "'\nset ytics (1.5e7, 2e7, 3e7, 5e7, 7e7, 1e8, 1.5e8, 2e8, 3e8, 5e8)\n"
                       "set yrange [1.2e7:" +
-                      csv_num(top5) + "]\nunset key\n" + limit_label;
+                      csv_num(top5) +
+                      "]\nset tmargin at screen 0.84\nset key at screen 0.55, screen 0.995 center top horizontal "
+                      "maxcols 3 Left reverse samplen 1 width -3\n" +
+                      limit_label;
   // "best of 10^5 random\n(N ≤ 36)": the random line's label, in two lines.
   auto two_lines = [](std::string label) {
     if (const auto space = label.find(" ("); space != std::string::npos) label.replace(space, 1, "\\n");
@@ -184,7 +188,7 @@ void figures_4_5_6(Context& ctx) {
                  plots::gp_quote(gp_power(e->ev.value(CriterionKind::D))) + " at " + std::to_string(e->ev.positions) +
                  ", graph 0.93 offset 0.7,0 left front tc rgb '" + (e->family == "rotation" ? rotation : black) + "'\n";
   render_figure(ctx, "fig5", "N^9 det K against N (the paper's Fig. 5)",
-                body5 + class_plot({6, false, true, true}, ctx), plots::kColumnWidthCm, 6.5);
+                body5 + class_plot({6, true, true, true, true, false}, ctx), plots::kColumnWidthCm, 7.6);
 
   // Fig. 6: the lower part, linear, up to where the rotation programs (2.58e7) and the random line
   // from N = 12 on fit with room for the label above them; the random line's start above the frame is

@@ -66,15 +66,16 @@ std::string class_plot(const ClassPlot& p, const Context& ctx) {
     return p.titles ? "title " + plots::gp_quote(p.short_titles && !brief.empty() ? brief : full)
                     : std::string("notitle");
   };
+  auto line_title = [&p, &title](const std::string& full) { return p.line_titles ? title(full) : "notitle"; };
   std::vector<std::string> parts;
   if (p.limit)
-    parts.push_back(std::string("LIMIT with lines lw 2 lc rgb '") + limit + "' " + title("limit 61509375/4"));
+    parts.push_back(std::string("LIMIT with lines lw 2 lc rgb '") + limit + "' " + line_title("limit 61509375/4"));
   parts.push_back(series("strcol(1) eq 'uniform'", p.column,
                          std::string("with points pt 5 ps 0.75 lc rgb '") + uniform + "'",
                          title("uniform projections", "uniform")));
   if (p.random)
     parts.push_back("'fig4_random.csv' skip 1 using 1:" + std::to_string(p.column == 6 ? 5 : 4) +
-                    " with lines dt 2 lw 2 lc rgb '" + random + "' " + title(random_title(ctx)));
+                    " with lines dt 2 lw 2 lc rgb '" + random + "' " + line_title(random_title(ctx)));
   parts.push_back(series("strcol(1) eq 'rotation'", p.column,
                          std::string("with points pt 3 ps 1.1 lw 2 lc rgb '") + rotation + "'",
                          title("rotation about each axis [12]", "rotation [12]")));

@@ -33,6 +33,7 @@ struct ClassPlot {
   bool random = true;         // the random programs' dashed line (their D when column is 6, else det K)
   bool limit = false;         // the D limit, as the gnuplot variable LIMIT
   bool short_titles = false;  // "rotation [12]" for a key in three columns
+  bool line_titles = true;    // the limit and random lines in the key; Fig. 5 labels them in the plot
 };
 std::string class_plot(const ClassPlot& p, const Context& ctx);
 
