@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <regex>
 #include <sstream>
@@ -132,6 +133,55 @@ TEST_F(ReproduceQuick, LimitsAreWrittenAsMathematics) {
   const std::string gp = slurp(dir_ / "fig10.gp");
   EXPECT_EQ(gp.find("sqrt("), std::string::npos);
   EXPECT_NE(gp.find("45 + 18√2"), std::string::npos);
+}
+
+// The PDF section of a figure's script (the PNG and SVG sections repeat it with other terminals).
+std::string pdf_section(const std::string& gp) {
+  const auto start = gp.find("# ---- pdf ----"), end = gp.find("# ---- png ----");
+  return start == std::string::npos ? std::string() : gp.substr(start, end - start);
+}
+
+// Issue 33's figure layout, as the scripts state it. fig5 carries its own key of the program classes;
+// fig7's and fig8's θ axes say their unit; fig8's two panels share one y range.
+TEST_F(ReproduceQuick, FiguresFiveSevenEightStateKeyUnitAndScale) {
+  const std::string fig5 = pdf_section(slurp(dir_ / "fig5.gp"));
+  EXPECT_EQ(fig5.find("unset key"), std::string::npos);
+  for (const char* t :
+       {"title 'uniform'", "title 'rotation [12]'", "title 'optimised for D'", "title 'printable jigs'"})
+    EXPECT_NE(fig5.find(t), std::string::npos) << t;
+  EXPECT_EQ(std::regex_search(pdf_section(slurp(dir_ / "fig7.gp")), std::regex("set ylabel \"θ[^\n]*per unit σ")),
+            true);
+  const std::string fig8 = pdf_section(slurp(dir_ / "fig8.gp"));
+  EXPECT_NE(fig8.find("per unit σ"), std::string::npos);
+  const std::regex range("set yrange \\[0:([^\\]]+)\\]");
+  std::vector<std::string> tops;
+  for (auto it = std::sregex_iterator(fig8.begin(), fig8.end(), range); it != std::sregex_iterator(); ++it)
+    tops.push_back((*it)[1]);
+  ASSERT_EQ(tops.size(), 2u);
+  EXPECT_EQ(tops[0], tops[1]);
+  EXPECT_EQ(fig8.find("[12] 60°"), std::string::npos);  // the cryptic labels are gone
+}
+
+// fig10 writes D's unit as fig6 does ("/ 10^7", never "(10^7)") and prints every tick of a panel with
+// the same number of decimals ('%.2f'), never '%g' (12, 12.05, 12.1).
+TEST_F(ReproduceQuick, FigTenHasOneUnitAndTickConvention) {
+  const std::string fig10 = pdf_section(slurp(dir_ / "fig10.gp"));
+  EXPECT_NE(fig10.find("det K / 10^{/*1.1 7}"), std::string::npos);
+  EXPECT_EQ(fig10.find("(10^"), std::string::npos);
+  EXPECT_EQ(fig10.find("format y '%g'"), std::string::npos);
+  const std::regex format("set format y '%\\.[0-9]f'");
+  EXPECT_EQ(std::distance(std::sregex_iterator(fig10.begin(), fig10.end(), format), std::sregex_iterator()), 4);
+}
+
+// fig11 is a flat tilt-azimuth map (no perspective view to hide positions behind others); fig13 has
+// no key outside its frames and draws its tics in front of the shaded intervals.
+TEST_F(ReproduceQuick, FigElevenAndThirteenHideNothing) {
+  const std::string fig11 = pdf_section(slurp(dir_ / "fig11.gp"));
+  EXPECT_EQ(fig11.find("splot"), std::string::npos);
+  EXPECT_NE(fig11.find("tilt(z)"), std::string::npos);
+  const std::string fig13 = pdf_section(slurp(dir_ / "fig13.gp"));
+  EXPECT_EQ(fig13.find("key outside"), std::string::npos);
+  EXPECT_NE(fig13.find("set tics front"), std::string::npos);
 }
 
 // stderr is a log here, not a terminal: one line per stage with the time left, no carriage returns.
