@@ -104,7 +104,8 @@ TEST(ProgramEquivalence, RotatedShuffledNoisyProgramIsOrthogonalButNotSignedPerm
 TEST(ProgramEquivalence, NoiseNearTheToleranceIsStillEquivalent) {
   // Each coordinate moved by up to 5e-7 moves a position by at most 8.7e-7 < tol = 1e-6, so the
   // rotation itself is a valid map; a map estimated from two noisy positions alone often is not.
-  for (int n : {18, 30})
+  // N = 500 also moves nearest-neighbour distances by nearly their slack of 2 tol.
+  for (int n : {18, 30, 500})
     for (std::uint64_t seed = 1; seed <= 20; ++seed) {
       const Program p = Program::random(n, seed);
       const Program q = noisy(shuffled(transformed(p, random_rotation(300 + seed)), seed), 5e-7, 400 + seed);
