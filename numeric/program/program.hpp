@@ -2,16 +2,25 @@
 // meter's frame), with named constructors for the classic programs of the paper's Figs. 1-4.
 // Exact constructions use the scalar's own sqrt/cos so they stay exact to 50+ digits.
 #pragma once
+#include <cmath>
 #include <cstdint>
 #include <stdexcept>
 #include <vector>
-
-#include <boost/math/constants/constants.hpp>
 
 #include "numeric/model/paper9.hpp"
 #include "numeric/program/random_sphere.hpp"
 
 namespace scalcal {
+
+// pi in the scalar's own precision. In double, 4 atan(1) is exactly the double nearest pi (a
+// power-of-two multiple of the correctly rounded atan(1)); a multiprecision atan is good to its
+// precision. Not Boost.Math's constant: its header alone pulled 967 headers into every unit that
+// names a program (about 3 s of each compile).
+template <class Scalar>
+Scalar scalar_pi() {
+  using std::atan;
+  return Scalar(4) * atan(Scalar(1));
+}
 
 template <class Scalar>
 struct ProgramTpl {
@@ -36,7 +45,7 @@ struct ProgramTpl {
   static Vec3T<Scalar> from_angles_deg(const Scalar& a1_deg, const Scalar& a2_deg) {
     using std::cos;
     using std::sin;
-    const Scalar deg = boost::math::constants::pi<Scalar>() / Scalar(180);
+    const Scalar deg = scalar_pi<Scalar>() / Scalar(180);
     const Scalar a1 = a1_deg * deg, a2 = a2_deg * deg;
     return Vec3T<Scalar>(cos(a2) * cos(a1), cos(a2) * sin(a1), sin(a2));
   }
@@ -88,8 +97,8 @@ struct ProgramTpl {
     using std::sin;
     ProgramTpl p;
     const Scalar zero(0);
-    const Scalar deg = boost::math::constants::pi<Scalar>() / Scalar(180);
-    const Scalar two_pi = boost::math::constants::two_pi<Scalar>();
+    const Scalar deg = scalar_pi<Scalar>() / Scalar(180);
+    const Scalar two_pi = Scalar(2) * scalar_pi<Scalar>();
     for (int axis = 0; axis < 3; ++axis) {
       const int a = (axis + 2) % 3;  // rotation about z first: the ring lies in the x-y plane
       for (int j = 0; j < k; ++j) {
