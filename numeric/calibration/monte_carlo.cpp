@@ -57,8 +57,7 @@ std::vector<PositionSamples> simulate_with(const AnyMeter& meter, const Program&
 struct Estimate {
   Eigen::VectorXd X;
   double noise = 0;
-  int iterations = 0;
-  bool converged = false;
+  Summary summary;  // the fit's own: a trial that did not converge is left out of the statistics
 };
 
 }  // namespace
@@ -91,10 +90,10 @@ MonteCarloResult run_monte_carlo(const MonteCarloOptions& o, const std::function
     Estimate e;
     if (paper9) {
       const CalibrationResult c = calibrate(data, co);
-      e = {Eigen::VectorXd(c.X), c.noise, c.iterations, c.summary.converged()};
+      e = {Eigen::VectorXd(c.X), c.noise, c.summary};
     } else {
       const ModelCalibration c = calibrate_model(model, data, co);
-      e = {c.X, c.noise, c.iterations, c.summary.converged()};
+      e = {c.X, c.noise, c.summary};
     }
     return e;
   };
@@ -107,10 +106,10 @@ MonteCarloResult run_monte_carlo(const MonteCarloOptions& o, const std::function
   for (int t = 0; t < o.trials; ++t) {
     if (progress && (t % 100 == 0)) progress(t, o.trials);
     const Estimate c = estimate(simulate(o.noise, o.bench_error_deg, o.samples, rng));
-    if (!c.converged) continue;
+    if (!c.summary.converged()) continue;
     estimates.push_back(c.X);
     noise_ratio += c.noise / o.noise;
-    iterations += c.iterations;
+    iterations += c.summary.iterations;
   }
   if (progress) progress(o.trials, o.trials);
   const Eigen::Index P = r.truth.size();

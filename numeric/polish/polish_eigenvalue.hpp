@@ -214,8 +214,7 @@ std::vector<int> multiplicity_guesses(const Row& mu) {
 struct Attempt {
   VecX z;
   Real norm;
-  int iterations = 0;
-  bool converged = false;  // |F| <= 10^-(P+10)
+  Summary summary;       // converged: |F| <= 10^-(P+10)
   bool maximum = false;    // converged, lambda is lambda_min, a dual C >= 0, no worse than the start
   ProgramTpl<Real> program;
   Real E;
@@ -254,15 +253,15 @@ PolishResult polish_eigenvalue(const PolishOps<Model>& criterion, const Program&
     Attempt a;
     a.z = kkt.initial(eta, eig);
     a.norm = newton_least_squares([&](const VecX& x) { return kkt.residual(x); }, a.z, P, options.max_iterations,
-                                  a.iterations, true);
-    out.summary.iterations += a.iterations;
+                                  a.summary.iterations, true);
+    out.summary.iterations += a.summary.iterations;
     for (const auto& v : kkt.positions(a.z)) a.program.positions.push_back(v / v.norm());
     a.E = polish_value(criterion, a.program);
-    a.converged = a.norm <= target;
+    a.summary.termination = a.norm <= target ? Termination::converged : Termination::not_converged;
     // First-order conditions also hold at saddles of lambda on the multiplicity-m manifold: at
     // N = 9 near E = 12.3957 Ipopt results lay 1e-6 from such a root with E lower by 1e-11. So a
     // maximum must also be no worse than the double optimum it started from.
-    if (a.converged && abs(a.E * a.z(kkt.lambda_at()) - Real(1)) <= sqrt(target) &&
+    if (a.summary.converged() && abs(a.E * a.z(kkt.lambda_at()) - Real(1)) <= sqrt(target) &&
         a.E <= start_E * (1 + sqrt(target)) && kkt.positive_dual(a.z, sqrt(target))) {
       a.maximum = true;
       a.norm = kkt.residual(a.z).norm();  // with the dual that proves it
@@ -270,7 +269,7 @@ PolishResult polish_eigenvalue(const PolishOps<Model>& criterion, const Program&
     // A residual r moves E by O(r); a root that is not a maximum says nothing certain about the
     // optimum, so it claims no more than the digits it shares with the double optimum.
     a.digits = a.maximum ? P : digits_left_by(a.norm, P);
-    if (a.converged && !a.maximum) {
+    if (a.summary.converged() && !a.maximum) {
       const Real apart = abs(a.E - start_E) / start_E;
       a.digits = std::min(a.digits, apart > 0 ? std::max(1, static_cast<int>(floor(-log10(apart))) - 1) : 15);
     }
