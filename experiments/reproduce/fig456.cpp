@@ -76,8 +76,8 @@ void report_figures_4_5_6(Context& ctx, double limit) {
     const bool misses = e.ev.value(CriterionKind::D) > limit * (1 + kLimitTolerance);
     if (misses) missed += (missed.empty() ? "" : ", ") + std::to_string(n);
     rows.push_back({std::to_string(n), decimal(e.ev.value(CriterionKind::D), 8),
-                    decimal(e.ev.value(CriterionKind::D) / limit - 1, 3), misses ? "misses" : "reaches",
-                    std::to_string(e.hits) + "/" + std::to_string(e.starts), decimal(e.seconds, 3)});
+                    excess_text(e.ev.value(CriterionKind::D) / limit - 1), misses ? "misses" : "reaches",
+                    std::to_string(e.hits) + "/" + std::to_string(e.starts), seconds_text(e.seconds)});
   }
   r.paragraph(
       "The optimised D-criterion programs (scalcal's multistart; `hits` = starts that reached the best value):");

@@ -32,6 +32,16 @@ std::string pct(double ours, double theirs) {
   return ::fmt::format("{:+.3g} %", 100.0 * relative);
 }
 
+std::string seconds_text(double s) {
+  if (!std::isfinite(s)) return "n/a";
+  return s >= 100 ? ::fmt::format("{:.0f}", s) : ::fmt::format("{:.3g}", s);
+}
+
+std::string excess_text(double relative) {
+  if (std::isfinite(relative) && std::abs(relative) < 1e-12) return "0 (to rounding)";
+  return decimal(relative, 3);
+}
+
 std::string csv_num(double x) { return std::isfinite(x) ? ::fmt::format("{}", x) : std::string(); }
 
 std::string exact_and_decimal(std::string_view exact, double value, int significant) {

@@ -15,6 +15,14 @@ std::string decimal(double x, int significant = 6);
 // Signed relative difference in percent, "+0.123 %".
 std::string pct(double ours, double theirs);
 
+// Seconds as a person reads a timing: three significant digits (0.00462, 27.3, 105), not the
+// nine of the clock.
+std::string seconds_text(double s);
+
+// A relative excess over a limit; below 1e-12 in size it is the rounding of two equal values and
+// prints as "0 (to rounding)" rather than as data such as -9.44e-15.
+std::string excess_text(double relative);
+
 // Shortest round-trip text; empty when not finite (gnuplot and CSV readers skip empty cells).
 std::string csv_num(double x);
 

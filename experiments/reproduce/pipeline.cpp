@@ -45,8 +45,8 @@ std::string preamble(const Context& ctx) {
 
 std::string epilogue(const Context& ctx, double total) {
   std::string e = "\n## Run\n\n| stage | seconds |\n| --- | ---: |\n";
-  for (const auto& [name, s] : ctx.timings) e += "| " + name + " | " + decimal(s, 3) + " |\n";
-  return e + "| **total** | " + decimal(total, 3) + " |\n\nSeed " + std::to_string(ctx.options.seed) + ", " +
+  for (const auto& [name, s] : ctx.timings) e += "| " + name + " | " + seconds_text(s) + " |\n";
+  return e + "| **total** | " + seconds_text(total) + " |\n\nSeed " + std::to_string(ctx.options.seed) + ", " +
          std::to_string(ctx.threads()) + " threads.\n";
 }
 

@@ -211,6 +211,24 @@ TEST_F(ReproduceQuick, ReportPrintsExactNumbersExactly) {
   EXPECT_NE(md.find("Limit of A for N → ∞: 45+18*sqrt(2) = 70.455844"), std::string::npos);
 }
 
+// Timings carry three significant digits, not the clock's nine, and an optimum equal to the limit up
+// to rounding reads "0 (to rounding)", not -9.44e-15 (issue 33: both were shown as data).
+TEST_F(ReproduceQuick, ReportShowsNoClockDigitsOrRoundingNoise) {
+  const std::string md = slurp(dir_ / "REPORT.md");
+  std::istringstream run(md.substr(md.find("## Run")));
+  int timings = 0;
+  for (std::string line; std::getline(run, line);) {
+    std::smatch m;  // the seconds cell of a stage row
+    if (!std::regex_search(line, m, std::regex("\\| ([0-9.]+) \\|$"))) continue;
+    const std::string digits = std::regex_replace(m[1].str(), std::regex("^[0.]+|\\."), "");
+    EXPECT_LE(digits.size(), 3u) << line;
+    ++timings;
+  }
+  EXPECT_GE(timings, 10);
+  EXPECT_FALSE(std::regex_search(md, std::regex("\\| -?[0-9.]+e-1[3-9] \\|"))) << "rounding noise shown as data";
+  EXPECT_NE(md.find("| 12 | 15377343.75 | 0 (to rounding) | reaches |"), std::string::npos);
+}
+
 TEST_F(ReproduceQuick, CsvNumbersAreShortest) {
   for (const char* f : {"fig4_programs.csv", "fig4_random.csv", "fig10.csv", "tables.csv"})
     EXPECT_EQ(scalcal::testing::overlong_numbers(slurp(dir_ / f)), std::vector<std::string>{}) << f;
