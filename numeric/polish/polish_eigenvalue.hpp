@@ -215,7 +215,7 @@ struct Attempt {
   VecX z;
   Real norm;
   Summary summary;       // converged: |F| <= 10^-(P+10)
-  bool maximum = false;    // converged, lambda is lambda_min, a dual C >= 0, no worse than the start
+  bool maximum = false;  // converged, lambda is lambda_min, a dual C >= 0, no worse than the start
   ProgramTpl<Real> program;
   Real E;
   int digits = 0;  // the digits of E this attempt can vouch for
