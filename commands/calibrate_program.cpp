@@ -124,7 +124,8 @@ ProgramQuality program_quality(const CalibrateRequest& q, CalibrateResult& r, co
     const double v = out.evaluation.value(c);
     double limit = NAN;
     if (paper9) {
-      if (has_limit(c) && !outside) limit = limit_value(c, region);  // a registered criterion may have no known limit: NaN
+      if (has_limit(c) && !outside)
+        limit = limit_value(c, region);  // a registered criterion may have no known limit: NaN
     } else if (const auto stated = stated_limit(r.model, criterion_name(c))) {
       limit = stated->value;
     }

@@ -47,9 +47,8 @@ std::string distrust(const nlohmann::json& j, const FullCorrection& c) {
 }  // namespace
 
 FullCorrection read_calibration(const std::string& file, bool force, Warnings& warnings) {
-  return calibration_of(
-      parse_json_file_text(read_text_file(file), file, "a JSON object written by `calibrate --out`"), file, force,
-      warnings);
+  return calibration_of(parse_json_file_text(read_text_file(file), file, "a JSON object written by `calibrate --out`"),
+                        file, force, warnings);
 }
 
 FullCorrection calibration_of(const Json& document, const std::string& file, bool force, Warnings& warnings) {

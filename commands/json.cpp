@@ -26,7 +26,8 @@ std::string json_text(const Json& j, int indent) { return j.dump(indent, ' ', fa
 Json parse_json_file_text(const std::string& text, const std::string& file, const std::string& expected) {
   const Json::parser_callback_t depth_check = [&](int depth, Json::parse_event_t, Json&) {
     if (depth > kMaxJsonDepth)
-      throw InputError(file, 0, "not " + expected + ": nested deeper than " + std::to_string(kMaxJsonDepth) + " levels");
+      throw InputError(file, 0,
+                       "not " + expected + ": nested deeper than " + std::to_string(kMaxJsonDepth) + " levels");
     return true;
   };
   try {

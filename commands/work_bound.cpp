@@ -65,8 +65,8 @@ double available_memory_bytes() {
 
 void check_work(const std::string& what, const WorkEstimate& e, const std::string& advice) {
   if (e.cpu_seconds > kMaxCpuSeconds)
-    throw UsageError(what + " would take about " + amount_of_time(e.cpu_seconds) +
-                     " of CPU (estimate); the bound is " + amount_of_time(kMaxCpuSeconds) + ": " + advice);
+    throw UsageError(what + " would take about " + amount_of_time(e.cpu_seconds) + " of CPU (estimate); the bound is " +
+                     amount_of_time(kMaxCpuSeconds) + ": " + advice);
   const double allowed = available_memory_bytes();
   if (e.bytes > allowed)
     throw UsageError(what + " would need about " + amount_of_memory(e.bytes) +

@@ -76,7 +76,7 @@ inline constexpr const char* paper = medium;     // open circles: the paper's Ta
 
 // One colour and point type per criterion D, A, E, S (kCriteria order), one colour per error group.
 inline constexpr const char* criterion[4] = {black, dark, medium, light};
-inline constexpr int criterion_point[4] = {5, 7, 9, 13};        // square, disc, triangle, diamond
+inline constexpr int criterion_point[4] = {5, 7, 9, 13};  // square, disc, triangle, diamond
 // Curves of the four criteria drawn together (Fig. 9's ellipses) also differ in dash: D solid, A dashed,
 // E dash-dot, S dash-dot-dot, so D and A (black and dark blue) stay apart in greyscale.
 inline constexpr int criterion_dash[4] = {1, 2, 4, 5};

@@ -222,7 +222,7 @@ constexpr double kMaxExponent = 1000;
 void check_exponents(const std::string& key, const std::string& text) {
   for (std::size_t at = text.find('^'); at != std::string::npos; at = text.find('^', at + 1)) {
     std::size_t b = text.find_first_not_of(" \t", at + 1);
-    if (b == std::string::npos) return;  // the parser reports the syntax error
+    if (b == std::string::npos) return;                        // the parser reports the syntax error
     std::size_t e = text.find_first_of("+-*/^(), \t", b + 1);  // the end of a plain atom (2^1001)
     e = e == std::string::npos ? text.size() - 1 : e - 1;
     if (text[b] == '(') {
@@ -274,8 +274,8 @@ ParamMap parse_params(const Family& family, const std::vector<std::string>& sett
       if (static_cast<int>(own.size()) > p.max_symbols)
         throw InputError("--param", 0,
                          p.key + "=" + display_name(text) + ": " + std::to_string(own.size()) +
-                             " symbols; the exact forms take minutes to hours beyond " +
-                             std::to_string(p.max_symbols) + " here (give numbers for the others)");
+                             " symbols; the exact forms take minutes to hours beyond " + std::to_string(p.max_symbols) +
+                             " here (give numbers for the others)");
       out[p.key] = value;
     } catch (const InputError&) {
       throw;

@@ -42,8 +42,8 @@ std::vector<Case> cases() {
   // A JSON text nested 100000 deep (the round found 60 MB of '[' reaching 4.45 GB).
   out.push_back({"JsonDeep",
                  [] {
-                   return "correct --calibration " + file("deep.json", std::string(100000, '[')) +
-                          " --measurements " + file("m.txt", "0 1 2 3\n");
+                   return "correct --calibration " + file("deep.json", std::string(100000, '[')) + " --measurements " +
+                          file("m.txt", "0 1 2 3\n");
                  },
                  E::error,
                  {"deep.json", "nested deeper than 64 levels"}});
@@ -61,12 +61,11 @@ std::vector<Case> cases() {
                  E::error,
                  {"--param", "orientation=", "may not itself contain '^'"}});
   // Symbols: the exact forms' cost grows steeply with them (8 took 23 s, 12 over 60 s and 1.7 GB).
-  out.push_back({"FamilySymbols",
-                 [] {
-                   return std::string("family octahedral --param axes=a+b+c --param edges=d+e --param diagonals=f+g");
-                 },
-                 E::error,
-                 {"--param", "7 distinct symbols", "beyond 6"}});
+  out.push_back(
+      {"FamilySymbols",
+       [] { return std::string("family octahedral --param axes=a+b+c --param edges=d+e --param diagonals=f+g"); },
+       E::error,
+       {"--param", "7 distinct symbols", "beyond 6"}});
   out.push_back({"JigOrientationSymbols",
                  [] { return std::string("family jig:cuboctahedron --param orientation=aa:a,b,c,t"); },
                  E::error,
