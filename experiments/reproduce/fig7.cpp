@@ -43,8 +43,11 @@ void figure_7(Context& ctx) {
   const char* frames[] = {"0.88\nset bmargin at screen 0.66", "0.64\nset bmargin at screen 0.42",
                           "0.40\nset bmargin at screen 0.12"};
   for (int i = 0; i < 3; ++i) {
-    // θ is in units of the noise RMS σ: the label says so on a second line.
-    body += "set tmargin at screen " + std::string(frames[i]) + "\nset ylabel \"" + thetas[i] + "\\nper unit σ\"\n";
+    // θ is in units of the noise RMS σ: the label says so on a second line. gnuplot sets a label beside
+    // its panel's widest tick label: (b) and (c) tick in one digit, not (a)'s four, so their labels are
+    // moved out by the difference (at print size "per unit σ" touched the ticks) and all three align.
+    body += "set tmargin at screen " + std::string(frames[i]) + "\nset ylabel \"" + thetas[i] + "\\nper unit σ\"" +
+            (i == 0 ? "" : " offset -2.5,0") + "\n";
     body += std::string("set label 1 '(") + "abc"[i] + ")' at graph 0.98, graph 0.86 right front\n";
     body += i == 0 ? "set format x ''\nset ytics 0.01\nset format y '%.2f'\n" + range_a
                    : "set autoscale y\nset ytics 1\nset format y '%g'\nunset key\nunset arrow 1\nunset label 2\n"
