@@ -119,7 +119,14 @@ void real_data(Context& ctx) {
   values.set("--measurements", file);
   values.set("--magnitude", "9.81744");
   const commands::CalibrateResult c = commands::calibrate(commands::calibrate_request(values));
-  const RawLog log = read_raw_log(file);
+  // The report presents this calibration as a result: if it stopped being one (no convergence, or
+  // parameters the positions cannot identify), it says so first instead of showing numbers as good.
+  if (!c.converged() || !c.not_identifiable.empty()) {
+    std::string why = c.converged() ? "" : "the fit did not converge (" + c.fit.estimate.summary.message + ")";
+    for (const auto& p : c.not_identifiable) why += (why.empty() ? "" : "; ") + p;
+    rep.paragraph("> **Not a trustworthy calibration:** " + why + ". The numbers below are shown as diagnosis only.");
+  }
+  const RawLog log = read_raw_log(file);  // again, for the plot: `calibrate` keeps only the intervals
   const IntervalDetection& d = *c.detection;
   // Before: the datasheet way, zero at 32768 and one gain for all three axes (the best such gain).
   std::vector<double> raw_norms;
