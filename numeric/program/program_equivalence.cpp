@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <numeric>
 #include <optional>
 
 #include <Eigen/Geometry>
@@ -82,7 +83,7 @@ std::vector<double> nearest_distances(const Positions& p) {
   const std::size_t n = p.size();
   if (n < 2) return {};
   std::vector<std::size_t> order(n);
-  for (std::size_t i = 0; i < n; ++i) order[i] = i;
+  std::iota(order.begin(), order.end(), std::size_t{0});
   std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return p[a].x() < p[b].x(); });
   std::vector<double> out(n);
   for (std::size_t t = 0; t < n; ++t) {
