@@ -75,12 +75,10 @@ std::array<Jet, 3> position(const Chart& ch, const I& U, const I& T, int half) {
   const Jet one = constant(I(1.0)), two_u = 2.0 * u, two_t = 2.0 * t;
   const Jet ru = reciprocal(one + square(u)), rt = reciprocal(one + square(t));
   const Jet cos_tilt = (one - square(u)) * ru, sin_tilt = two_u * ru;
-  const Jet c = static_cast<double>(half) * ((one - square(t)) * rt),
-            s = static_cast<double>(half) * (two_t * rt);
+  const Jet c = static_cast<double>(half) * ((one - square(t)) * rt), s = static_cast<double>(half) * (two_t * rt);
   const Jet sc = sin_tilt * c, ss = sin_tilt * s;
   std::array<Jet, 3> x;
-  for (int i = 0; i < 3; ++i)
-    x[static_cast<std::size_t>(i)] = ch.e1(i) * sc + ch.e2(i) * ss + ch.axis(i) * cos_tilt;
+  for (int i = 0; i < 3; ++i) x[static_cast<std::size_t>(i)] = ch.e1(i) * sc + ch.e2(i) * ss + ch.axis(i) * cos_tilt;
   return x;
 }
 
