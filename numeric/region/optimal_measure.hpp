@@ -32,6 +32,10 @@ bool measure_objective(const Eigen::Matrix<double, Model::kParameters, Model::kP
   constexpr int P = Model::kParameters;
   using Mat = Eigen::Matrix<double, P, P>;
   if constexpr (SmoothCriterion<Crit>) {
+    // The value alone (the line search's 42 calls an iteration) skips the inverse's products; it
+    // is the derivatives' value to the bit (D: the same log det; A: the trace of the inverse,
+    // whose symmetrisation leaves the diagonal exact).
+    if (!Z) return Crit::objective(M, 1, phi);
     MatrixDerivatives<double, P> d;
     if (!Crit::derivatives(M, 1, d)) return false;
     phi = d.value;
