@@ -25,6 +25,13 @@ cmake --build "$build" -j"$(nproc)" $(printf -- '--target %s ' "${targets[@]}")
 corpus="$build"/corpus
 rm -rf "$corpus" && mkdir -p "$build"/findings
 for t in "${targets[@]}"; do mkdir -p "$corpus/$t"; done
+# A previous run's findings are replayed as corpus inputs, then cleared: a run fails on what it finds
+# itself, and an input that once crashed or hung fails it again until fixed.
+for t in "${targets[@]}"; do
+  for f in "$build"/findings/"$t"-*; do
+    if [ -e "$f" ]; then mv "$f" "$corpus/$t/finding-$(basename "$f")"; fi
+  done
+done
 find data experiments/docs -name '*.csv' | while read -r f; do
   if head -c 4096 "$f" | grep -q 'ix'; then
     for m in 0 1; do { printf "\\x3$m"; cat "$f"; } >"$corpus/fuzz_measurements_csv/$m-$(basename "$f")"; done
