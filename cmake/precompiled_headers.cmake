@@ -3,7 +3,7 @@
 # commands/correct.cpp spent 7 s of its 8.5 s in -fsyntax-only. One header per target, private to
 # it (nothing installed depends on it); -DSCALCAL_PCH=OFF turns them off. Targets whose units are
 # compiled with the same flags share one: building a header costs 3-7 s of CPU, and 26 targets
-# each built their own (124 s of a whole build's CPU, 30 s of the CLI's).
+# each built their own (124 s of a whole build's CPU, 26 s of the CLI's).
 option(SCALCAL_PCH "precompile the headers every unit of a target includes" ON)
 set(SCALCAL_PCH_HEADERS <algorithm> <cmath> <cstdio> <functional> <iostream> <map> <memory> <optional>
     <sstream> <stdexcept> <string> <vector> <Eigen/Dense>)
@@ -22,5 +22,17 @@ endfunction()
 function(scalcal_share_precompiled target owner)
   if(SCALCAL_PCH)
     target_precompile_headers(${target} REUSE_FROM ${owner})
+  endif()
+endfunction()
+
+# scalcal_precompile_in_group(GROUP TARGET [EXTRA_HEADER ...]): the first target of GROUP builds the
+# header (scalcal_precompile), every later one shares it (scalcal_share_precompiled).
+function(scalcal_precompile_in_group group target)
+  get_property(owner GLOBAL PROPERTY SCALCAL_PCH_OWNER_${group})
+  if(owner)
+    scalcal_share_precompiled(${target} ${owner})
+  else()
+    scalcal_precompile(${target} ${ARGN})
+    set_property(GLOBAL PROPERTY SCALCAL_PCH_OWNER_${group} ${target})
   endif()
 endfunction()

@@ -61,7 +61,8 @@ std::vector<Case> cases() {
                  E::error,
                  {"--param", "orientation=", "may not itself contain '^'"}});
   // A decimal literal's exponent is computed exactly as well: 0E555555555 took 19 s, and the fuzzer's
-  // 30-digit exponent would take years; 1e3 and 2.5e-3 stay ordinary numbers.
+  // 30-digit exponent would take years. (The bound is on the exponent's size only; it counts leading
+  // zeros out, so 1E-00001001 is refused as 1E-1001 is.)
   out.push_back(
       {"JigOrientationDecimalExponent",
        [] { return std::string("family jig:cube --param 'orientation=q:1,0,0,0E5555555555555555555555555'"); },
