@@ -13,9 +13,9 @@ build=build-fuzz
 if grep -qs '^SCALCAL_FUZZ:BOOL=ON' build-asan/CMakeCache.txt; then
   build=build-asan
 else
-  flags="-O1 -g1 -fno-omit-frame-pointer -fsanitize=address,undefined -fno-sanitize-recover=all -fsanitize=fuzzer-no-link"
-  cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=None -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_CXX_FLAGS="$flags" \
-    -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" -DSCALCAL_FUZZ=ON -DSCALCAL_MPI=OFF -DSCALCAL_PYTHON=OFF >/dev/null
+  source scripts/sanitizer_flags.sh
+  cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=None -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_CXX_FLAGS="$sanitizer_cxx_flags" \
+    -DCMAKE_EXE_LINKER_FLAGS="$sanitizer_link_flags" -DSCALCAL_FUZZ=ON -DSCALCAL_MPI=OFF -DSCALCAL_PYTHON=OFF >/dev/null
 fi
 targets=(fuzz_program_csv fuzz_measurements_csv fuzz_catalogue_name fuzz_region_spec fuzz_calibration_json
   fuzz_family_params fuzz_program_name)

@@ -1,19 +1,19 @@
 #!/usr/bin/env bash
 # The whole test suite again, built with clang, AddressSanitizer and UndefinedBehaviorSanitizer (-O1,
-# line tables) into build-asan/, with libFuzzer's coverage instrumentation so that scripts/fuzz.sh
+# line tables; the checks are in scripts/sanitizer_flags.sh) into build-asan/, with libFuzzer's coverage instrumentation so that scripts/fuzz.sh
 # links its fuzzers against the same objects instead of building the libraries a second time. Any
 # sanitizer report aborts its test, so zero failures means zero findings. Arguments go to ctest.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
-flags="-O1 -g1 -fno-omit-frame-pointer -fsanitize=address,undefined -fno-sanitize-recover=all -fsanitize=fuzzer-no-link"
+source scripts/sanitizer_flags.sh
 configure=()
 if [ ! -f build-asan/CMakeCache.txt ]; then
   configure+=(-G Ninja)
   if command -v ccache >/dev/null; then configure+=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache); fi
 fi
-cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=None -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_CXX_FLAGS="$flags" \
-  -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" -DCMAKE_SHARED_LINKER_FLAGS="-fsanitize=address,undefined" \
+cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=None -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_CXX_FLAGS="$sanitizer_cxx_flags" \
+  -DCMAKE_EXE_LINKER_FLAGS="$sanitizer_link_flags" -DCMAKE_SHARED_LINKER_FLAGS="$sanitizer_link_flags" \
   -DSCALCAL_FUZZ=ON -DSCALCAL_BENCH=OFF -DSCALCAL_MPI=OFF -DSCALCAL_PACKAGE_TEST=OFF -DSCALCAL_PYTHON=OFF \
   "${configure[@]}" >/dev/null
 # The build runs the test executables too (GoogleTest's discovery), so the options come first.
