@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # The whole test suite again, built with clang, AddressSanitizer and UndefinedBehaviorSanitizer (-O1,
-# line tables; the checks are in scripts/sanitizer_flags.sh) into build-asan/, with libFuzzer's coverage instrumentation so that scripts/fuzz.sh
-# links its fuzzers against the same objects instead of building the libraries a second time. Any
-# sanitizer report aborts its test, so zero failures means zero findings. Arguments go to ctest.
+# line tables; the checks are in scripts/sanitizer_flags.sh) into build-asan/, with libFuzzer's coverage
+# instrumentation so that scripts/fuzz.sh links its fuzzers against the same objects instead of building
+# the libraries a second time. Any sanitizer report aborts its test, so zero failures means zero
+# findings. Arguments go to ctest.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
