@@ -166,7 +166,9 @@ CorrectResult correct(const CorrectRequest& q) {
     if (cp >= 0 && std::isnan(r.position) && !table.labels.empty()) r.position_label = table.labels[k];
     r.corrected = out.correction.apply(
         Vec3(v[static_cast<std::size_t>(ix)], v[static_cast<std::size_t>(iy)], v[static_cast<std::size_t>(iz)]));
-    r.modulus = r.corrected.stableNorm();  // finite for outputs near 1e300
+    // Scaled, so finite for outputs near 1e300; not Eigen's stableNorm, whose summation order follows the
+    // vector's address alignment (its last bit changed with the optimisation level).
+    r.modulus = std::hypot(r.corrected(0), r.corrected(1), r.corrected(2));
     out.rows.push_back(r);
   }
   return out;
