@@ -8,10 +8,12 @@
 #include <cmath>
 #include <limits>
 #include <string_view>
+#include <type_traits>
 #include <vector>
 
 #include <Eigen/SVD>
 
+#include "numeric/criteria/design_svd.hpp"
 #include "numeric/criteria/evaluation_models.hpp"
 #include "numeric/criteria/registry.hpp"
 #include "numeric/model/design.hpp"
@@ -58,10 +60,18 @@ RowT<Model, Scalar> singular_values(const PositionsT<Scalar>& positions, Evaluat
   constexpr int P = Model::kParameters;
   using std::sqrt;
   const auto H = design_matrix<Model>(positions);
-  Eigen::JacobiSVD<Eigen::Matrix<Scalar, Eigen::Dynamic, P>> svd(H, Eigen::ComputeFullV);
   RowT<Model, Scalar> sigma = RowT<Model, Scalar>::Zero();
-  sigma.head(svd.singularValues().size()) = svd.singularValues();
-  V = svd.matrixV();
+  if constexpr (std::is_same_v<Scalar, double>) {  // one SVD for every model (design_svd.hpp)
+    Eigen::VectorXd s;
+    Eigen::MatrixXd v;
+    design_svd(H, s, v);
+    sigma.head(s.size()) = s;
+    V = v;
+  } else {
+    Eigen::JacobiSVD<Eigen::Matrix<Scalar, Eigen::Dynamic, P>> svd(H, Eigen::ComputeFullV);
+    sigma.head(svd.singularValues().size()) = svd.singularValues();
+    V = svd.matrixV();
+  }
   const Scalar eps = Eigen::NumTraits<Scalar>::epsilon();
   const Scalar tol = Scalar(std::max<int>(static_cast<int>(positions.size()), P)) * eps * sigma(0);
   int rank = 0;
@@ -130,9 +140,9 @@ EvaluationTpl<Scalar, Model> evaluate(const ProgramTpl<Scalar>& program) {
   return ev;
 }
 
-// Every registered model in double is evaluated in many units (CLI, reproduce, synthesis); its SVD
-// costs about 25 s of compile time per unit, so it is instantiated once per model, in that model's
-// generated evaluation unit (evaluation_unit.cpp.in).
+// Every registered model in double is evaluated in many units (CLI, reproduce, synthesis), so it is
+// instantiated once per model, in that model's generated evaluation unit (evaluation_unit.cpp.in);
+// its SVD, once for every model, in design_svd.cpp.
 #define SCALCAL_EVALUATE_INSTANCES(prefix, M) \
   prefix template EvaluationTpl<double, M> evaluate<M, double>(const ProgramTpl<double>&);
 #define SCALCAL_EXTERN_EVALUATE(M) SCALCAL_EVALUATE_INSTANCES(extern, M)

@@ -7,12 +7,13 @@
 #include <cmath>
 #include <vector>
 
-#include <Eigen/QR>
+#include <Eigen/Core>
 
 #include "numeric/criteria/derivatives.hpp"
 #include "numeric/criteria/evaluation.hpp"
 #include "numeric/synthesis/criterion_ops.hpp"
 #include "numeric/synthesis/local_result.hpp"
+#include "numeric/synthesis/minimum_norm_solve.hpp"
 #include "numeric/synthesis/synthesis_models.hpp"
 
 namespace scalcal {
@@ -104,7 +105,7 @@ LocalResult refine_active_diagonal(const CriterionOps<Model>& criterion, const L
     }
     for (int i = 0; i < n; ++i) A.block<3, 1>(3 * i, m + i) = 2 * z.segment<3>(3 * i);
     b(3 * n) = 1;
-    const Eigen::VectorXd w = A.completeOrthogonalDecomposition().solve(b);
+    const Eigen::VectorXd w = minimum_norm_solve(A, b);
     z.segment(mu0, m) = w.head(m);
     z.segment(nu0, n) = w.tail(n);
   }
@@ -113,10 +114,7 @@ LocalResult refine_active_diagonal(const CriterionOps<Model>& criterion, const L
   if (!kkt<Model>(z, n, active, F, &J)) return best;
   double residual = F.norm();
   for (int it = 0; it < max_iterations && residual > 1e-15 * std::max(1.0, t); ++it) {
-    Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod;
-    cod.setThreshold(1e-11);
-    cod.compute(J);
-    const Eigen::VectorXd trial = z - cod.solve(F);
+    const Eigen::VectorXd trial = z - minimum_norm_solve(J, F, 1e-11);
     Eigen::VectorXd F_trial;
     if (!kkt<Model>(trial, n, active, F_trial, nullptr) || !(F_trial.norm() < residual)) break;
     z = trial;
