@@ -9,6 +9,8 @@
 
 #include <Eigen/Core>
 
+#include "numeric/model/dense_instances.hpp"
+
 namespace scalcal {
 
 template <class Scalar>

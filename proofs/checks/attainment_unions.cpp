@@ -107,8 +107,8 @@ int main() {
   check(interval_in(proven["S"], 14, 27) && proven["S"].count(12), "S certified at 12 and 14..27 = [14, 2*14 - 1]");
 
   // The closure below 200 matches the claim exactly (above 2a - 1 the induction covers every N).
-  const int limit = 200;
-  auto claimed = [limit](std::set<int> extra, int from) {
+  constexpr int limit = 200;
+  auto claimed = [](std::set<int> extra, int from) {
     for (int n = from; n <= limit; ++n) extra.insert(n);
     return extra;
   };
