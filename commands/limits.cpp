@@ -5,9 +5,13 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "commands/region_request.hpp"
 #include "commands/usage_error.hpp"
+#include "numeric/region/region_limits.hpp"
+#include "numeric/synthesis/seeds.hpp"
 #include "symbolic/exact.hpp"
 #include "symbolic/limits.hpp"
 
@@ -68,17 +72,27 @@ LimitsResult limits(const LimitsRequest& q, const Progress& progress) {
   LimitsResult r;
   r.model = q.model;
   if (!sphere) r.region = resolve_region(q.regions, r.warnings);
+  std::vector<RegionLimitTask> tasks;
+  std::vector<std::size_t> task_row;
   for (auto c : kCriteria) {
     CriterionLimits l;
     l.criterion = c;
     l.sphere = q.model == ModelKind::paper9 ? paper9_limit(c) : model_limit(q.model, c);
     if (r.region && l.sphere) {  // a region's limit is judged against the sphere's, so both must exist
-      if (progress) progress(std::string(criterion_name(c)) + " on " + r.region->text(), c.index(), kCriterionCount);
-      l.region = region_limit(c, *r.region);
+      tasks.push_back({c, *r.region});
+      task_row.push_back(r.criteria.size());
       l.sphere_value = l.sphere->value;
     }
     r.criteria.push_back(std::move(l));
   }
+  if (tasks.empty()) return r;
+  // The criteria's limits side by side, one worker process per core (region_limits.hpp).
+  const std::string stage = "limits on " + r.region->text();
+  if (progress) progress(stage, 0, static_cast<int>(tasks.size()));
+  const std::vector<RegionLimit> limits = region_limits(tasks, {}, thread_count(0), [&](int done, int total) {
+    if (progress) progress(stage, done, total);
+  });
+  for (std::size_t i = 0; i < tasks.size(); ++i) r.criteria[task_row[i]].region = limits[i];
   return r;
 }
 

@@ -13,6 +13,7 @@
 #include "experiments/reproduce/format.hpp"
 #include "numeric/program/catalogue.hpp"
 #include "numeric/region/region_limit.hpp"
+#include "numeric/region/region_limits.hpp"
 #include "numeric/region/region_synthesis.hpp"
 #include "plots/csv_writer.hpp"
 #include "plots/figure.hpp"
@@ -160,19 +161,32 @@ void figure_regions(Context& ctx) {
     std::vector<std::string> cells;
   };
   std::vector<LimitRow> rows;
-  // One part of the stage per region, of equal weight: each runs the same limits and N scan.
+  // Every region's limits first, side by side in worker processes (region_limits.hpp): the first
+  // half of the stage. Then one part per region, of equal weight, for its N scan.
+  std::vector<RegionLimitTask> tasks;
+  for (const auto& f : families(ctx.options.quick))
+    for (double theta : f.angles) {
+      const Region region = parse_region({f.spec(theta)});
+      if (!region.is_sphere())
+        for (auto c : kCriteria) tasks.push_back({c, region});
+    }
+  ctx.progress.part(0, 0.5, "region limits");
+  const std::vector<RegionLimit> region_limit_values = region_limits(
+      tasks, quick_limits, ctx.threads(), [&](int finished, int count) { ctx.progress.step(finished, count); });
+  std::size_t next_limit = 0;
   long long total = 0, done = 0;
   for (const auto& f : families(ctx.options.quick)) total += static_cast<long long>(f.angles.size());
   for (const auto& f : families(ctx.options.quick))
     for (double theta : f.angles) {
       const std::string spec = f.spec(theta);
-      ctx.progress.part(static_cast<double>(done) / static_cast<double>(total), 1.0 / static_cast<double>(total),
+      ctx.progress.part(0.5 + 0.5 * static_cast<double>(done) / static_cast<double>(total),
+                        0.5 / static_cast<double>(total),
                         "region " + spec + " (" + std::to_string(done + 1) + "/" + std::to_string(total) + ")");
       ++done;
       const Region region = parse_region({spec});
       std::optional<RegionLimit> d_limit;
       for (auto c : kCriteria) {
-        const RegionLimit l = region.is_sphere() ? RegionLimit{} : region_limit(c, region, quick_limits);
+        const RegionLimit l = region.is_sphere() ? RegionLimit{} : region_limit_values[next_limit++];
         const double value = region.is_sphere() ? criterion_limit(c).value : l.value;
         rows.push_back({f.name,
                         c,

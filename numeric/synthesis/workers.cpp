@@ -181,8 +181,8 @@ std::vector<LocalResult> run_in_workers(int tasks, int workers, int positions,
   }
   if (stopped) std::rethrow_exception(stopped);
   if (failed || done != tasks)
-    throw std::runtime_error("synthesize: a worker process failed (" + std::to_string(done) + " of " +
-                             std::to_string(tasks) + " starts returned)");
+    throw std::runtime_error("a worker process failed (" + std::to_string(done) + " of " + std::to_string(tasks) +
+                             " tasks returned)");
   return results;
 }
 

@@ -1,0 +1,96 @@
+// Region limits computed side by side in worker processes (region_limits.hpp).
+#include "numeric/region/region_limits.hpp"
+
+#include <cmath>
+#include <cstddef>
+
+#include "numeric/synthesis/workers.hpp"
+
+namespace scalcal {
+namespace {
+
+// A RegionLimit crosses the workers' pipe as a fixed-size record of doubles (run_in_workers carries
+// programs: the doubles ride as the coordinates of kRecordPositions positions). Supports larger than
+// kMaxSupport come back empty and are computed again here.
+constexpr int kMaxSupport = 2000;
+constexpr int kHeader = 8 + 81;  // ok, value, has bound, bound, gap, candidates, refinements, boxes; K
+constexpr int kRecordPositions = (kHeader + 4 * kMaxSupport + 1 + 2) / 3;
+
+std::vector<double> pack(const RegionLimit& l) {
+  std::vector<double> out(static_cast<std::size_t>(3 * kRecordPositions), 0.0);
+  const std::size_t n = l.support.size();
+  if (n > static_cast<std::size_t>(kMaxSupport)) return out;  // out[0] = 0: not carried
+  out[0] = 1;
+  out[1] = l.value;
+  out[2] = l.lower_bound ? 1.0 : 0.0;
+  out[3] = l.lower_bound.value_or(0.0);
+  out[4] = l.equivalence_gap;
+  out[5] = l.candidates;
+  out[6] = l.refinements;
+  out[7] = static_cast<double>(l.boxes);
+  for (int i = 0; i < 81; ++i) out[static_cast<std::size_t>(8 + i)] = l.K(i / 9, i % 9);
+  out[kHeader] = static_cast<double>(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    for (int c = 0; c < 3; ++c) out[kHeader + 1 + 3 * i + static_cast<std::size_t>(c)] = l.support[i](c);
+    out[kHeader + 1 + 3 * n + i] = l.weights[i];
+  }
+  return out;
+}
+
+bool unpack(const std::vector<double>& in, RegionLimit& l) {
+  if (in[0] != 1) return false;
+  l.value = in[1];
+  if (in[2] != 0) l.lower_bound = in[3];
+  l.equivalence_gap = in[4];
+  l.candidates = static_cast<int>(in[5]);
+  l.refinements = static_cast<int>(in[6]);
+  l.boxes = static_cast<long>(in[7]);
+  for (int i = 0; i < 81; ++i) l.K(i / 9, i % 9) = in[static_cast<std::size_t>(8 + i)];
+  const auto n = static_cast<std::size_t>(in[kHeader]);
+  for (std::size_t i = 0; i < n; ++i) {
+    l.support.emplace_back(in[kHeader + 1 + 3 * i], in[kHeader + 2 + 3 * i], in[kHeader + 3 + 3 * i]);
+    l.weights.push_back(in[kHeader + 1 + 3 * n + i]);
+  }
+  return true;
+}
+
+}  // namespace
+
+std::vector<RegionLimit> region_limits(const std::vector<RegionLimitTask>& tasks, const RegionLimitOptions& options,
+                                       int workers, const std::function<void(int, int)>& progress) {
+  const int count = static_cast<int>(tasks.size());
+  std::vector<RegionLimit> out(tasks.size());
+  if (workers <= 1 || count <= 1) {
+    for (int k = 0; k < count; ++k) {
+      out[static_cast<std::size_t>(k)] = region_limit(tasks[static_cast<std::size_t>(k)].criterion,
+                                                      tasks[static_cast<std::size_t>(k)].region, options);
+      if (progress) progress(k + 1, count);
+    }
+    return out;
+  }
+  const std::vector<LocalResult> records = run_in_workers(
+      count, workers, kRecordPositions,
+      [&](int k) {
+        const RegionLimitTask& t = tasks[static_cast<std::size_t>(k)];
+        const std::vector<double> packed = pack(region_limit(t.criterion, t.region, options));
+        LocalResult r;
+        for (int i = 0; i < kRecordPositions; ++i)
+          r.program.positions.emplace_back(packed[static_cast<std::size_t>(3 * i)],
+                                           packed[static_cast<std::size_t>(3 * i + 1)],
+                                           packed[static_cast<std::size_t>(3 * i + 2)]);
+        return r;
+      },
+      progress);
+  for (int k = 0; k < count; ++k) {
+    std::vector<double> packed;
+    packed.reserve(static_cast<std::size_t>(3 * kRecordPositions));
+    for (const Vec3& x : records[static_cast<std::size_t>(k)].program.positions)
+      packed.insert(packed.end(), {x(0), x(1), x(2)});
+    const RegionLimitTask& t = tasks[static_cast<std::size_t>(k)];
+    if (!unpack(packed, out[static_cast<std::size_t>(k)]))
+      out[static_cast<std::size_t>(k)] = region_limit(t.criterion, t.region, options);
+  }
+  return out;
+}
+
+}  // namespace scalcal
