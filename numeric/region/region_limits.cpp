@@ -1,7 +1,6 @@
 // Region limits computed side by side in worker processes (region_limits.hpp).
 #include "numeric/region/region_limits.hpp"
 
-#include <cmath>
 #include <cstddef>
 
 #include "numeric/synthesis/workers.hpp"
@@ -9,15 +8,14 @@
 namespace scalcal {
 namespace {
 
-// A RegionLimit crosses the workers' pipe as a fixed-size record of doubles (run_in_workers carries
-// programs: the doubles ride as the coordinates of kRecordPositions positions). Supports larger than
-// kMaxSupport come back empty and are computed again here.
+// A RegionLimit crosses the workers' pipe as a fixed-size record of doubles (run_values_in_workers).
+// Supports larger than kMaxSupport come back empty and are computed again here.
 constexpr int kMaxSupport = 2000;
 constexpr int kHeader = 8 + 81;  // ok, value, has bound, bound, gap, candidates, refinements, boxes; K
-constexpr int kRecordPositions = (kHeader + 4 * kMaxSupport + 1 + 2) / 3;
+constexpr int kRecordSize = kHeader + 1 + 4 * kMaxSupport;  // then n, 3n coordinates, n weights
 
 std::vector<double> pack(const RegionLimit& l) {
-  std::vector<double> out(static_cast<std::size_t>(3 * kRecordPositions), 0.0);
+  std::vector<double> out(static_cast<std::size_t>(kRecordSize), 0.0);
   const std::size_t n = l.support.size();
   if (n > static_cast<std::size_t>(kMaxSupport)) return out;  // out[0] = 0: not carried
   out[0] = 1;
@@ -68,28 +66,15 @@ std::vector<RegionLimit> region_limits(const std::vector<RegionLimitTask>& tasks
     }
     return out;
   }
-  const std::vector<LocalResult> records = run_in_workers(
-      count, workers, kRecordPositions,
+  const std::vector<std::vector<double>> records = run_values_in_workers(
+      count, workers, kRecordSize,
       [&](int k) {
         const RegionLimitTask& t = tasks[static_cast<std::size_t>(k)];
-        const std::vector<double> packed = pack(region_limit(t.criterion, t.region, options));
-        LocalResult r;
-        for (int i = 0; i < kRecordPositions; ++i)
-          r.program.positions.emplace_back(packed[static_cast<std::size_t>(3 * i)],
-                                           packed[static_cast<std::size_t>(3 * i + 1)],
-                                           packed[static_cast<std::size_t>(3 * i + 2)]);
-        return r;
+        return pack(region_limit(t.criterion, t.region, options));
       },
       progress);
-  for (int k = 0; k < count; ++k) {
-    std::vector<double> packed;
-    packed.reserve(static_cast<std::size_t>(3 * kRecordPositions));
-    for (const Vec3& x : records[static_cast<std::size_t>(k)].program.positions)
-      packed.insert(packed.end(), {x(0), x(1), x(2)});
-    const RegionLimitTask& t = tasks[static_cast<std::size_t>(k)];
-    if (!unpack(packed, out[static_cast<std::size_t>(k)]))
-      out[static_cast<std::size_t>(k)] = region_limit(t.criterion, t.region, options);
-  }
+  for (std::size_t k = 0; k < tasks.size(); ++k)
+    if (!unpack(records[k], out[k])) out[k] = region_limit(tasks[k].criterion, tasks[k].region, options);
   return out;
 }
 

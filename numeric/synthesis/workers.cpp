@@ -226,19 +226,33 @@ std::vector<LocalResult> run_in_threads(int tasks, int threads, const std::funct
   return results;
 }
 
-std::vector<double> run_in_child(int size, const std::function<std::vector<double>()>& f) {
+std::vector<std::vector<double>> run_values_in_workers(int tasks, int workers, int size,
+                                                       const std::function<std::vector<double>(int)>& task,
+                                                       const std::function<void(int, int)>& progress) {
+  // The doubles cross the pipe as the coordinates of a program's positions.
   const int positions = (size + 2) / 3;
-  const LocalResult r = run_in_workers(1, 1, positions, [&](int) {
-    std::vector<double> v = f();
-    v.resize(static_cast<std::size_t>(3 * positions), 0.0);
-    LocalResult out;
-    for (int i = 0; i < positions; ++i) out.program.positions.emplace_back(v[3 * i], v[3 * i + 1], v[3 * i + 2]);
-    return out;
-  })[0];
-  std::vector<double> out;
-  for (const Vec3& x : r.program.positions) out.insert(out.end(), {x(0), x(1), x(2)});
-  out.resize(static_cast<std::size_t>(size));
+  const std::vector<LocalResult> records = run_in_workers(
+      tasks, workers, positions,
+      [&](int k) {
+        std::vector<double> v = task(k);
+        v.resize(static_cast<std::size_t>(3 * positions), 0.0);
+        LocalResult out;
+        for (int i = 0; i < positions; ++i) out.program.positions.emplace_back(v[3 * i], v[3 * i + 1], v[3 * i + 2]);
+        return out;
+      },
+      progress);
+  std::vector<std::vector<double>> out;
+  for (const LocalResult& r : records) {
+    std::vector<double> v;
+    for (const Vec3& x : r.program.positions) v.insert(v.end(), {x(0), x(1), x(2)});
+    v.resize(static_cast<std::size_t>(size));
+    out.push_back(std::move(v));
+  }
   return out;
+}
+
+std::vector<double> run_in_child(int size, const std::function<std::vector<double>()>& f) {
+  return run_values_in_workers(1, 1, size, [&](int) { return f(); })[0];
 }
 
 }  // namespace scalcal

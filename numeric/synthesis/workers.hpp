@@ -23,6 +23,12 @@ std::vector<LocalResult> run_in_workers(int tasks, int workers, int positions,
 std::vector<LocalResult> run_in_threads(int tasks, int threads, const std::function<LocalResult(int)>& task,
                                         const std::function<void(int done, int total)>& progress = {});
 
+// task(k) for k < tasks in worker processes, as run_in_workers, for results of `size` doubles each
+// (shorter results are padded with zeros, longer ones cut).
+std::vector<std::vector<double>> run_values_in_workers(int tasks, int workers, int size,
+                                                       const std::function<std::vector<double>(int)>& task,
+                                                       const std::function<void(int done, int total)>& progress = {});
+
 // f() in one child process (for work that initialises Ipopt, whose MUMPS state a later fork must
 // not inherit); its `size` doubles come back through the same pipe as a program's coordinates.
 std::vector<double> run_in_child(int size, const std::function<std::vector<double>()>& f);
