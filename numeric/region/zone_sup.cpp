@@ -10,6 +10,7 @@
 
 #include "numeric/model/paper9.hpp"
 #include "numeric/region/interval.hpp"
+#include "numeric/region/upward_jet.hpp"
 
 namespace scalcal {
 namespace {
@@ -18,47 +19,7 @@ namespace bn = boost::numeric;
 using I = Interval;
 using Rows = Eigen::Matrix<double, Eigen::Dynamic, 9>;
 
-// A value with its gradient and Hessian in the chart's two coordinates (u, t): second-order
-// forward differentiation, on intervals (enclosures over a box) or points.
-struct Jet {
-  I v, du, dt, uu, ut, tt;
-};
-
-Jet constant(const I& c) { return {c, I(0.0), I(0.0), I(0.0), I(0.0), I(0.0)}; }
-Jet operator+(const Jet& a, const Jet& b) {
-  return {a.v + b.v, a.du + b.du, a.dt + b.dt, a.uu + b.uu, a.ut + b.ut, a.tt + b.tt};
-}
-Jet operator-(const Jet& a, const Jet& b) {
-  return {a.v - b.v, a.du - b.du, a.dt - b.dt, a.uu - b.uu, a.ut - b.ut, a.tt - b.tt};
-}
-// A double times a jet: Boost's scalar-interval product, one sign test instead of the four-way case
-// analysis of an interval product (the enclosure is the same: the double is exact).
-Jet operator*(double c, const Jet& a) { return {c * a.v, c * a.du, c * a.dt, c * a.uu, c * a.ut, c * a.tt}; }
-Jet operator*(const Jet& a, const Jet& b) {
-  return {a.v * b.v,
-          a.du * b.v + a.v * b.du,
-          a.dt * b.v + a.v * b.dt,
-          a.uu * b.v + 2.0 * (a.du * b.du) + a.v * b.uu,
-          a.ut * b.v + a.du * b.dt + a.dt * b.du + a.v * b.ut,
-          a.tt * b.v + 2.0 * (a.dt * b.dt) + a.v * b.tt};
-}
-Jet square(const Jet& a) {
-  return {bn::square(a.v),
-          2.0 * (a.v * a.du),
-          2.0 * (a.v * a.dt),
-          2.0 * (bn::square(a.du) + a.v * a.uu),
-          2.0 * (a.du * a.dt + a.v * a.ut),
-          2.0 * (bn::square(a.dt) + a.v * a.tt)};
-}
-Jet reciprocal(const Jet& a) {
-  const I r = I(1.0) / a.v, r2 = bn::square(r), r3 = r2 * r;
-  return {r,
-          -a.du * r2,
-          -a.dt * r2,
-          2.0 * (bn::square(a.du) * r3) - a.uu * r2,
-          2.0 * (a.du * a.dt * r3) - a.ut * r2,
-          2.0 * (bn::square(a.dt) * r3) - a.tt * r2};
-}
+using Jet = UpwardJet;
 
 // One piece of a zone: tilts within 90 degrees of `axis`, as u = tan(tilt / 2) in [u0, u1] (a
 // subset of [0, 1]); azimuth on two rational half circles, c = (1 - t^2) / (1 + t^2),
@@ -69,35 +30,28 @@ struct Chart {
   double u0, u1;
 };
 
+UpwardInterval upward(const I& a) { return {-a.lower(), a.upper()}; }
+
 // x(u, t) with its derivatives, on the box U x T (or a point).
 std::array<Jet, 3> position(const Chart& ch, const I& U, const I& T, int half) {
-  const Jet u{U, I(1.0), I(0.0), I(0.0), I(0.0), I(0.0)}, t{T, I(0.0), I(1.0), I(0.0), I(0.0), I(0.0)};
-  const Jet one = constant(I(1.0)), two_u = 2.0 * u, two_t = 2.0 * t;
+  const UpwardInterval zero{0.0, 0.0}, one_i = point(1.0);
+  const Jet u{upward(U), one_i, zero, zero, zero, zero}, t{upward(T), zero, one_i, zero, zero, zero};
+  const Jet one = constant(one_i), two_u = scaled(2.0, u), two_t = scaled(2.0, t);
   const Jet ru = reciprocal(one + square(u)), rt = reciprocal(one + square(t));
   const Jet cos_tilt = (one - square(u)) * ru, sin_tilt = two_u * ru;
-  const Jet c = static_cast<double>(half) * ((one - square(t)) * rt), s = static_cast<double>(half) * (two_t * rt);
+  const Jet c = scaled(static_cast<double>(half), (one - square(t)) * rt),
+            s = scaled(static_cast<double>(half), two_t * rt);
   const Jet sc = sin_tilt * c, ss = sin_tilt * s;
   std::array<Jet, 3> x;
-  for (int i = 0; i < 3; ++i) x[static_cast<std::size_t>(i)] = ch.e1(i) * sc + ch.e2(i) * ss + ch.axis(i) * cos_tilt;
+  for (int i = 0; i < 3; ++i)
+    x[static_cast<std::size_t>(i)] = scaled(ch.e1(i), sc) + scaled(ch.e2(i), ss) + scaled(ch.axis(i), cos_tilt);
   return x;
-}
-
-Jet norm2(const Rows& C, const std::array<Jet, 3>& x) {
-  const std::array<Jet, 9> h{x[0],         x[1],        x[2],        square(x[0]), square(x[1]),
-                             square(x[2]), x[0] * x[1], x[1] * x[2], x[2] * x[0]};
-  Jet out = constant(I(0.0));
-  for (int j = 0; j < C.rows(); ++j) {
-    Jet y = constant(I(0.0));
-    for (int k = 0; k < 9; ++k)
-      if (C(j, k) != 0.0) y = y + C(j, k) * h[static_cast<std::size_t>(k)];
-    out = out + square(y);
-  }
-  return out;
 }
 
 // The midpoint in the current (upward) rounding: any double near the middle will do.
 double mid(const I& x) { return 0.5 * x.lower() + 0.5 * x.upper(); }
-double radius(const I& x) { return 0.5 * (x.upper() - x.lower()); }
+double mid(const UpwardInterval& x) { return 0.5 * lower(x) + 0.5 * x.hi; }
+double radius(const UpwardInterval& x) { return 0.5 * (x.hi + x.neg_lo); }
 
 // max over s in [-R, R] of alpha + beta s + gamma s^2 (gamma exact), as a proven upper bound.
 double max_1d(const I& alpha, const I& beta, double gamma, double R) {
@@ -153,9 +107,9 @@ struct Box {
 // The bound on one box: the smaller of the natural enclosure and the second-order Taylor form
 // f(c) + g.d + d^T H(B) d / 2 around the centre c.
 double box_bound(const Rows& C, const Chart& ch, const Box& b) {
-  const Jet over = norm2(C, position(ch, I(b.u0, b.u1), I(b.t0, b.t1), b.half));
+  const Jet over = norm2_jet(C, position(ch, I(b.u0, b.u1), I(b.t0, b.t1), b.half));
   const double cu = 0.5 * (b.u0 + b.u1), ct = 0.5 * (b.t0 + b.t1);
-  const Jet at = norm2(C, position(ch, I(cu), I(ct), b.half));
+  const Jet at = norm2_jet(C, position(ch, I(cu), I(ct), b.half));
   // Half-widths rounded up so that [c - r, c + r] covers the box.
   const double ru =
       (I(b.u1) - I(cu)).upper() > (I(cu) - I(b.u0)).upper() ? (I(b.u1) - I(cu)).upper() : (I(cu) - I(b.u0)).upper();
@@ -167,8 +121,8 @@ double box_bound(const Rows& C, const Chart& ch, const Box& b) {
   I spread = I(radius(at.du)) * I(ru) + I(radius(at.dt)) * I(rt);
   spread += I(0.5) * (I(radius(over.uu)) * bn::square(I(ru)) + I(2.0) * I(radius(over.ut)) * I(ru) * I(rt) +
                       I(radius(over.tt)) * bn::square(I(rt)));
-  const double taylor = (I(at.v.upper()) + I(max_quadratic(gu, gt, a, hb, d, ru, rt)) + spread).upper();
-  return std::min(over.v.upper(), taylor);
+  const double taylor = (I(at.v.hi) + I(max_quadratic(gu, gt, a, hb, d, ru, rt)) + spread).upper();
+  return std::min(over.v.hi, taylor);
 }
 
 Vec3 point(const Chart& ch, double u, double t, int half) {
@@ -267,8 +221,8 @@ SupBound sup_norm2_over_points(const Rows& C, const std::vector<Vec3>& points) {
   SupBound out;
   out.lower = -1;
   for (const Vec3& x : points) {
-    const Jet j = norm2(C, {constant(I(x(0))), constant(I(x(1))), constant(I(x(2)))});
-    out.upper = std::max(out.upper, j.v.upper());
+    const Jet j = norm2_jet(C, {constant(point(x(0))), constant(point(x(1))), constant(point(x(2)))});
+    out.upper = std::max(out.upper, j.v.hi);
     const double v = value_at(C, x);
     if (v > out.lower) {
       out.lower = v;

@@ -13,12 +13,14 @@
 #include <exception>
 #include <iostream>
 #include <mutex>
+#include <new>
 #include <stdexcept>
 #include <string>
 #include <system_error>
 #include <thread>
 
 #include <poll.h>
+#include <sys/mman.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -96,6 +98,26 @@ int decode(const std::vector<char>& buf, int positions, LocalResult& r) {
   throw ResourceError(std::string("could not start worker processes: ") + call + ": " + reason);
 }
 
+// The next task's index, in memory the workers share: each takes the next task when it is free, so a
+// few long tasks do not wait behind one worker's share (the results are stored by index, as before).
+class SharedCounter {
+ public:
+  SharedCounter() {
+    void* p = ::mmap(nullptr, sizeof(std::atomic<int>), PROT_READ | PROT_WRITE, MAP_SHARED | MAP_ANONYMOUS, -1, 0);
+    if (p == MAP_FAILED)
+      throw ResourceError(std::string("could not share the task counter: mmap: ") + std::strerror(errno));
+    next_ = new (p) std::atomic<int>(0);
+  }
+  ~SharedCounter() { ::munmap(next_, sizeof(std::atomic<int>)); }
+  SharedCounter(const SharedCounter&) = delete;
+  SharedCounter& operator=(const SharedCounter&) = delete;
+  int take() { return next_->fetch_add(1); }
+
+ private:
+  std::atomic<int>* next_;
+};
+static_assert(std::atomic<int>::is_always_lock_free, "the counter is shared between processes");
+
 }  // namespace
 
 std::vector<LocalResult> run_in_workers(int tasks, int workers, int positions,
@@ -107,6 +129,7 @@ std::vector<LocalResult> run_in_workers(int tasks, int workers, int positions,
   std::cout.flush();  // a forked worker must not inherit (and later repeat) buffered output
   std::cerr.flush();
   std::fflush(nullptr);
+  SharedCounter next;
   std::vector<pollfd> fds;
   std::vector<pid_t> pids;
   for (int w = 0; w < workers; ++w) {
@@ -122,7 +145,7 @@ std::vector<LocalResult> run_in_workers(int tasks, int workers, int positions,
     }
     if (pid == 0) {
       ::close(fd[0]);
-      for (int k = w; k < tasks; k += workers) {
+      for (int k; (k = next.take()) < tasks;) {
         const LocalResult r = task(k);
         if (r.program.size() != positions) ::_exit(4);
         const std::vector<char> buf = encode(k, r, positions);

@@ -11,7 +11,8 @@
 namespace scalcal {
 
 // task(k) for k < tasks, in min(workers, tasks) child processes (at least one: the caller's process
-// never initialises MUMPS, whose state a later fork would otherwise inherit). Every program returned
+// never initialises MUMPS, whose state a later fork would otherwise inherit), each taking the next
+// task from a shared counter when it is free. Every program returned
 // has `positions` positions. Throws std::runtime_error when a worker fails.
 std::vector<LocalResult> run_in_workers(int tasks, int workers, int positions,
                                         const std::function<LocalResult(int)>& task,
