@@ -118,6 +118,10 @@ class SharedCounter {
 };
 static_assert(std::atomic<int>::is_always_lock_free, "the counter is shared between processes");
 
+// Set in a worker process: it runs one batch and exits, so MUMPS state it leaves behind is never
+// inherited by a later fork that matters, and its own Ipopt calls need no further child each.
+bool in_worker_process = false;
+
 }  // namespace
 
 std::vector<LocalResult> run_in_workers(int tasks, int workers, int positions,
@@ -144,6 +148,7 @@ std::vector<LocalResult> run_in_workers(int tasks, int workers, int positions,
       stop_started_workers(pids, fds, "fork");
     }
     if (pid == 0) {
+      in_worker_process = true;
       ::close(fd[0]);
       for (int k; (k = next.take()) < tasks;) {
         const LocalResult r = task(k);
@@ -275,6 +280,11 @@ std::vector<std::vector<double>> run_values_in_workers(int tasks, int workers, i
 }
 
 std::vector<double> run_in_child(int size, const std::function<std::vector<double>()>& f) {
+  if (in_worker_process) {  // already a disposable process (region_limits' workers): no second fork
+    std::vector<double> v = f();
+    v.resize(static_cast<std::size_t>(size), 0.0);
+    return v;
+  }
   return run_values_in_workers(1, 1, size, [&](int) { return f(); })[0];
 }
 
