@@ -1,7 +1,7 @@
 // Random search on all cores. The R programs are cut into fixed chunks; chunk k has its own
 // generator seeded by (seed, k), threads take chunks from an atomic counter, and the best is the
 // lowest value, ties to the lowest (chunk, index): the result never depends on scheduling.
-// Programs are drawn kLanes at a time; for D their LDL^T factorisations run side by side (one SIMD
+// Programs are drawn kBatch at a time; for D their LDL^T factorisations run side by side (one SIMD
 // lane each) and stop early when none of them can beat the thread's best so far (a program that
 // is strictly worse than some program can never be the overall best, so this is scheduling-proof).
 #include <algorithm>
@@ -33,7 +33,7 @@ struct Best {
 };
 
 struct Buffers {
-  explicit Buffers(int n) : stride(sample_buffer_size(n)), xyz(static_cast<std::size_t>(3 * kLanes * stride)) {}
+  explicit Buffers(int n) : stride(sample_buffer_size(n)), xyz(static_cast<std::size_t>(3 * kBatch * stride)) {}
   double* x(int lane) { return xyz.data() + static_cast<std::size_t>(3 * lane * stride); }
   double* y(int lane) { return x(lane) + stride; }
   double* z(int lane) { return x(lane) + 2 * stride; }
@@ -82,10 +82,10 @@ SCALCAL_KERNEL void search_chunk_body(Xoshiro256x4& rng, long long begin, long l
                                       double (*score)(const double*, int), bool batched, ModelScore model_score,
                                       const PositionSampler& sampler, Buffers& buf, Best& mine) {
   const int np = padded_size(n);
-  alignas(32) double m[45][kLanes];
+  alignas(64) double m[45][kBatch];
   double m45[45];
-  for (long long k0 = begin; k0 < end; k0 += kLanes) {
-    const int lanes = static_cast<int>(std::min<long long>(kLanes, end - k0));
+  for (long long k0 = begin; k0 < end; k0 += kBatch) {
+    const int lanes = static_cast<int>(std::min<long long>(kBatch, end - k0));
     for (int l = 0; l < lanes; ++l) {
       if (sampler)
         sampler(rng, n, buf.x(l), buf.y(l), buf.z(l));
@@ -98,9 +98,9 @@ SCALCAL_KERNEL void search_chunk_body(Xoshiro256x4& rng, long long begin, long l
     if (model_score) {
       for (int l = 0; l < lanes; ++l) consider(mine, model_score(buf.x(l), buf.y(l), buf.z(l), n), k0 + l, buf, l, n);
     } else if (batched) {
-      for (int l = lanes; l < kLanes; ++l)
+      for (int l = lanes; l < kBatch; ++l)
         for (int e = 0; e < 45; ++e) m[e][l] = m[e][0];  // padding lanes repeat lane 0, then are ignored
-      double v[kLanes];
+      double v[kBatch];
       d_criterion_batch(m, n, det_needed_for(mine.value, n), v);
       for (int l = 0; l < lanes; ++l) consider(mine, v[l], k0 + l, buf, l, n);
     } else {

@@ -29,6 +29,8 @@ namespace scalcal {
 // Positions are processed kLanes at a time; buffers hold a multiple of kLanes (padded with zero
 // vectors, which add nothing to H^T H: every entry is a monomial of degree 2 to 4).
 inline constexpr int kLanes = 4;
+// Programs whose LDL^T factorisations run side by side (d_criterion_batch).
+inline constexpr int kBatch = 8;
 constexpr int padded_size(int n) { return (n + kLanes - 1) / kLanes * kLanes; }
 // Room each coordinate buffer of sample_sphere needs for n points.
 constexpr int sample_buffer_size(int n) { return padded_size(n) + kLanes; }
@@ -195,48 +197,54 @@ SCALCAL_KERNEL void accumulate_information(const double* x, const double* y, con
     for (int c = 0; c <= r; ++c) m45[packed(r, c)] = m[kMoments.entry[r][c]];
 }
 
-// D = N^9 / det(H^T H) of kLanes programs at once (m[entry][program], packed lower triangles), by
+// D = N^9 / det(H^T H) of B programs at once (m[entry][program], packed lower triangles), by
 // right-looking LDL^T across the programs: the same operations, in the same order, as one program
 // alone, so a program's value does not depend on its neighbours. +infinity for a pivot <= 1e-12 N.
 // Early exit: after pivot j, det M <= d_0 ... d_j S_{j+1,j+1} ... S_88 (Hadamard's inequality on
 // the Schur complement S; in floating point too, since every update only subtracts d_j l^2 >= 0 from
 // a diagonal entry and products of smaller positive factors are smaller). When that bound is below
-// `det_needed` for every program, none of them can be a new best, and all get +infinity.
-SCALCAL_KERNEL void d_criterion_batch(double (*m)[kLanes], int n, double det_needed, double* out) {
+// `det_needed` for every program, none of them can be a new best, and all get +infinity. The
+// factorisation is a chain of 9 dependent divisions: kBatch = 8 programs side by side fill an
+// AVX-512 vector, or two AVX2 ones whose chains overlap (4 at a time left it latency-bound).
+template <int B>
+SCALCAL_KERNEL void d_criterion_batch(double (*m)[B], int n, double det_needed, double* out) {
   const double N = n;
   double n9 = 1.0;
   for (int k = 0; k < 9; ++k) n9 *= N;
-  double det[kLanes], ok[kLanes];
-  for (int l = 0; l < kLanes; ++l) det[l] = 1.0, ok[l] = 1.0;
+  double det[B], ok[B];
+  for (int l = 0; l < B; ++l) det[l] = 1.0, ok[l] = 1.0;
   const double tiny = 1e-12 * N;
+#pragma GCC unroll 9
   for (int j = 0; j < 9; ++j) {
-    double inv[kLanes];
-    for (int l = 0; l < kLanes; ++l) {
+    double inv[B];
+    for (int l = 0; l < B; ++l) {
       const double d = m[packed(j, j)][l];
       ok[l] = d > tiny ? ok[l] : 0.0;
       det[l] *= d;
       inv[l] = 1.0 / d;
     }
+#pragma GCC unroll 9
     for (int i = j + 1; i < 9; ++i) {
-      double lij[kLanes];
-      for (int l = 0; l < kLanes; ++l) lij[l] = m[packed(i, j)][l] * inv[l];
+      double lij[B];
+      for (int l = 0; l < B; ++l) lij[l] = m[packed(i, j)][l] * inv[l];
+#pragma GCC unroll 9
       for (int k = j + 1; k <= i; ++k)
-        for (int l = 0; l < kLanes; ++l) m[packed(i, k)][l] -= lij[l] * m[packed(k, j)][l];
+        for (int l = 0; l < B; ++l) m[packed(i, k)][l] -= lij[l] * m[packed(k, j)][l];
     }
     if (j == 2 || j == 5) {
       bool any = false;
-      for (int l = 0; l < kLanes; ++l) {
+      for (int l = 0; l < B; ++l) {
         double bound = det[l];
         for (int k = j + 1; k < 9; ++k) bound *= m[packed(k, k)][l];
         any |= ok[l] != 0.0 && !(bound < det_needed);
       }
       if (!any) {
-        for (int l = 0; l < kLanes; ++l) out[l] = std::numeric_limits<double>::infinity();
+        for (int l = 0; l < B; ++l) out[l] = std::numeric_limits<double>::infinity();
         return;
       }
     }
   }
-  for (int l = 0; l < kLanes; ++l) out[l] = ok[l] != 0.0 ? n9 / det[l] : std::numeric_limits<double>::infinity();
+  for (int l = 0; l < B; ++l) out[l] = ok[l] != 0.0 ? n9 / det[l] : std::numeric_limits<double>::infinity();
 }
 
 // The determinant a program must exceed to have D below `best` (with a relative margin of 1e-12,

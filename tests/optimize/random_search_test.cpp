@@ -41,7 +41,7 @@ TEST(RandomSearchKernel, RankDeficientIsInfinite) {
   EXPECT_TRUE(std::isinf(score_positions(eta.data(), 9, CriterionKind::D)));
 }
 
-// The batched D of kLanes programs agrees with the one-program path; the early exit gives +infinity
+// The batched D of kBatch programs agrees with the one-program path; the early exit gives +infinity
 // only when every program is worse than the threshold, and never hides a program that beats it.
 TEST(RandomSearchKernel, BatchedDAndEarlyExit) {
   const int n = 18;
@@ -51,8 +51,8 @@ TEST(RandomSearchKernel, BatchedDAndEarlyExit) {
   double* y = x + sample_buffer_size(n);
   double* z = y + sample_buffer_size(n);
   for (int trial = 0; trial < 200; ++trial) {
-    double m[45][kLanes], single[kLanes];
-    for (int l = 0; l < kLanes; ++l) {
+    double m[45][kBatch], single[kBatch];
+    for (int l = 0; l < kBatch; ++l) {
       sample_sphere(rng, n, x, y, z);
       for (int i = 0; i < n; ++i) EXPECT_NEAR(x[i] * x[i] + y[i] * y[i] + z[i] * z[i], 1.0, 1e-14);
       double m45[45];
@@ -60,16 +60,16 @@ TEST(RandomSearchKernel, BatchedDAndEarlyExit) {
       for (int e = 0; e < 45; ++e) m[e][l] = m45[e];
       single[l] = score_information(m45, n, CriterionKind::D);
     }
-    double copy[45][kLanes], v[kLanes];
-    std::copy(&m[0][0], &m[0][0] + 45 * kLanes, &copy[0][0]);
+    double copy[45][kBatch], v[kBatch];
+    std::copy(&m[0][0], &m[0][0] + 45 * kBatch, &copy[0][0]);
     d_criterion_batch(copy, n, 0.0, v);
-    for (int l = 0; l < kLanes; ++l) EXPECT_NEAR(v[l] / single[l], 1.0, 1e-12);
-    // Thresholds just below and above the best of the four.
-    const double best = *std::min_element(single, single + kLanes);
+    for (int l = 0; l < kBatch; ++l) EXPECT_NEAR(v[l] / single[l], 1.0, 1e-12);
+    // Thresholds just below and above the best of the batch.
+    const double best = *std::min_element(single, single + kBatch);
     for (double factor : {0.999, 1.001}) {
-      std::copy(&m[0][0], &m[0][0] + 45 * kLanes, &copy[0][0]);
+      std::copy(&m[0][0], &m[0][0] + 45 * kBatch, &copy[0][0]);
       d_criterion_batch(copy, n, det_needed_for(best * factor, n), v);
-      const double got = *std::min_element(v, v + kLanes);
+      const double got = *std::min_element(v, v + kBatch);
       if (factor > 1)
         EXPECT_NEAR(got / best, 1.0, 1e-12);  // the winner must survive
       else
