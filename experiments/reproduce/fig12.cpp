@@ -15,6 +15,7 @@
 #include "numeric/region/region_limit.hpp"
 #include "numeric/region/region_limits.hpp"
 #include "numeric/region/region_synthesis.hpp"
+#include "numeric/synthesis/workers.hpp"
 #include "plots/csv_writer.hpp"
 #include "plots/figure.hpp"
 
@@ -56,14 +57,14 @@ std::array<double, 3> thetas(const Mat9& K) {
 
 // The smallest N of `sizes` whose best program on the region comes within 1 % of `limit`.
 std::optional<std::pair<int, double>> smallest_n(const Region& region, double limit, const std::vector<int>& sizes,
-                                                 const Context& ctx) {
+                                                 const Context& ctx, int threads) {
   for (int n : sizes) {
     SynthesisOptions o;
     o.positions = n;
     o.criterion = CriterionKind::D;
     o.starts = ctx.options.quick ? 2 : 4;
     o.seed = ctx.options.seed;
-    o.threads = ctx.threads();
+    o.threads = threads;
     const SynthesisResult r = synthesize_on_region(o, region);
     if (r.value <= 1.01 * limit) return std::make_pair(n, r.value);
   }
@@ -174,15 +175,18 @@ void figure_regions(Context& ctx) {
   const std::vector<RegionLimit> region_limit_values = region_limits(
       tasks, quick_limits, ctx.threads(), [&](int finished, int count) { ctx.progress.step(finished, count); });
   std::size_t next_limit = 0;
-  long long total = 0, done = 0;
-  for (const auto& f : families(ctx.options.quick)) total += static_cast<long long>(f.angles.size());
+  // Then each region's N scan, one region per task in the same worker processes (the regions' scans
+  // are independent, and whole scans side by side keep both cores busy where one synthesis at a
+  // time, 4 starts, does not). A task returns (smallest N or 0, its D).
+  struct Scan {
+    std::string family, spec;
+    double theta, limit;
+    Region region;
+  };
+  std::vector<Scan> scans;
   for (const auto& f : families(ctx.options.quick))
     for (double theta : f.angles) {
       const std::string spec = f.spec(theta);
-      ctx.progress.part(0.5 + 0.5 * static_cast<double>(done) / static_cast<double>(total),
-                        0.5 / static_cast<double>(total),
-                        "region " + spec + " (" + std::to_string(done + 1) + "/" + std::to_string(total) + ")");
-      ++done;
       const Region region = parse_region({spec});
       std::optional<RegionLimit> d_limit;
       for (auto c : kCriteria) {
@@ -200,12 +204,27 @@ void figure_regions(Context& ctx) {
                   csv_num(t[0] / sphere_thetas[0]), csv_num(t[1] / sphere_thetas[1]),
                   csv_num(t[2] / sphere_thetas[2])});
       const double limit = d_limit ? d_limit->value : criterion_limit(CriterionKind::D).value;
-      const auto n = smallest_n(region, limit, n_scan, ctx);
-      sizes.row({f.name, csv_num(theta), spec, n ? std::to_string(n->first) : "", n ? csv_num(n->second) : "",
-                 n ? csv_num(n->second / limit) : ""});
-      n_table += "| `" + spec + "` | " + (n ? std::to_string(n->first) : "over " + std::to_string(n_scan.back())) +
-                 " | " + (n ? decimal(n->second / limit, 5) : "") + " |\n";
+      scans.push_back({f.name, spec, theta, limit, region});
     }
+  ctx.progress.part(0.5, 0.5, "N scans of " + std::to_string(scans.size()) + " regions");
+  const std::vector<std::vector<double>> found = run_values_in_workers(
+      static_cast<int>(scans.size()), ctx.threads(), 2,
+      [&](int k) {
+        const Scan& sc = scans[static_cast<std::size_t>(k)];
+        const auto n = smallest_n(sc.region, sc.limit, n_scan, ctx, 1);
+        return std::vector<double>{n ? static_cast<double>(n->first) : 0.0, n ? n->second : 0.0};
+      },
+      [&](int finished, int count) { ctx.progress.step(finished, count); });
+  for (std::size_t k = 0; k < scans.size(); ++k) {
+    const Scan& sc = scans[k];
+    const bool reached = found[k][0] > 0;
+    const int n = static_cast<int>(found[k][0]);
+    const double d = found[k][1];
+    sizes.row({sc.family, csv_num(sc.theta), sc.spec, reached ? std::to_string(n) : "", reached ? csv_num(d) : "",
+               reached ? csv_num(d / sc.limit) : ""});
+    n_table += "| `" + sc.spec + "` | " + (reached ? std::to_string(n) : "over " + std::to_string(n_scan.back())) +
+               " | " + (reached ? decimal(d / sc.limit, 5) : "") + " |\n";
+  }
   // By family, then criterion, then angle: each curve is one run of rows, so gnuplot joins it.
   std::stable_sort(rows.begin(), rows.end(), [](const LimitRow& a, const LimitRow& b) {
     return std::tie(a.family, a.criterion) < std::tie(b.family, b.criterion);

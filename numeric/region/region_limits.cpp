@@ -1,7 +1,9 @@
 // Region limits computed side by side in worker processes (region_limits.hpp).
 #include "numeric/region/region_limits.hpp"
 
+#include <algorithm>
 #include <cstddef>
+#include <numeric>
 
 #include "numeric/synthesis/workers.hpp"
 
@@ -52,6 +54,15 @@ bool unpack(const std::vector<double>& in, RegionLimit& l) {
   return true;
 }
 
+// A rough cost, for handing out the longest tasks first (so that one does not start last and leave
+// the other workers idle): the first candidate grid's size, and nothing for D on one cap or band,
+// which is one-dimensional (zonal_d.hpp). Only the order of hand-out depends on it, not a result.
+std::size_t rough_cost(const RegionLimitTask& t, const RegionLimitOptions& options) {
+  const Region& r = t.region;
+  if (t.criterion == CriterionKind::D && r.zones.size() == 1 && r.candidates.empty() && !r.is_sphere()) return 0;
+  return r.measure_grid(options.grid_step_deg).size();
+}
+
 }  // namespace
 
 std::vector<RegionLimit> region_limits(const std::vector<RegionLimitTask>& tasks, const RegionLimitOptions& options,
@@ -66,15 +77,21 @@ std::vector<RegionLimit> region_limits(const std::vector<RegionLimitTask>& tasks
     }
     return out;
   }
+  std::vector<std::size_t> cost(tasks.size()), order(tasks.size());
+  for (std::size_t k = 0; k < tasks.size(); ++k) cost[k] = rough_cost(tasks[k], options);
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return cost[a] > cost[b]; });
   const std::vector<std::vector<double>> records = run_values_in_workers(
       count, workers, kRecordSize,
       [&](int k) {
-        const RegionLimitTask& t = tasks[static_cast<std::size_t>(k)];
+        const RegionLimitTask& t = tasks[order[static_cast<std::size_t>(k)]];
         return pack(region_limit(t.criterion, t.region, options));
       },
       progress);
-  for (std::size_t k = 0; k < tasks.size(); ++k)
-    if (!unpack(records[k], out[k])) out[k] = region_limit(tasks[k].criterion, tasks[k].region, options);
+  for (std::size_t j = 0; j < tasks.size(); ++j) {
+    const std::size_t k = order[j];
+    if (!unpack(records[j], out[k])) out[k] = region_limit(tasks[k].criterion, tasks[k].region, options);
+  }
   return out;
 }
 
