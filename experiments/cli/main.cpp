@@ -8,6 +8,9 @@
 #include <vector>
 
 #include <sys/resource.h>
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
 #include <CLI/CLI.hpp>
 
 #include "commands/tool_info.hpp"
@@ -79,6 +82,13 @@ int print_man_page(const std::vector<std::string>& args) {
 }  // namespace
 
 int main(int argc, char** argv) {
+#if defined(__GLIBC__)
+  // Ipopt and MUMPS allocate and free their workspace at every iteration; glibc's default returned the
+  // heap's top to the system each time and took fresh zeroed pages back (1.4 million page faults and
+  // 443,000 brk calls in one `reproduce`). 16 MiB of slack at the top: 0.3 million faults, system time
+  // 10.9 -> 7.3 s, the same peak memory (37 MiB) and the same results.
+  mallopt(M_TOP_PAD, 16 << 20);
+#endif
   scalcal::symbolic::register_family_programs();  // every family's names, for every PROGRAM argument
   const std::vector<std::string> args(argv + 1, argv + argc);
   if (args.empty()) {
