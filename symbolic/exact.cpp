@@ -3,6 +3,8 @@
 // forms are equal.
 #include "symbolic/exact.hpp"
 
+#include <cln/real.h>
+
 namespace scalcal::symbolic {
 
 using GiNaC::ex;
@@ -86,6 +88,24 @@ MomentFunction point_moments(std::vector<WeightedPoint> points) {
     for (const auto& p : points) sum += p.weight * power(p.eta[0], a) * power(p.eta[1], b) * power(p.eta[2], c);
     return canonical(sum);
   };
+}
+
+namespace {
+struct ExactDecimals : GiNaC::map_function {
+  ex operator()(const ex& e) override {
+    if (GiNaC::is_a<GiNaC::numeric>(e)) {
+      const GiNaC::numeric& n = GiNaC::ex_to<GiNaC::numeric>(e);
+      if (n.is_real() && !n.is_rational()) return GiNaC::numeric(cln::rationalize(cln::realpart(n.to_cl_N())));
+      return e;
+    }
+    return e.map(*this);
+  }
+};
+}  // namespace
+
+ex exact_decimals(const ex& e) {
+  ExactDecimals exact;
+  return exact(e);
 }
 
 }  // namespace scalcal::symbolic

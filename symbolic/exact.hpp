@@ -43,6 +43,12 @@ GiNaC::ex canonical(const GiNaC::ex& e);
 //   1889568*(2*a+e)^(-2)*(3*a+4*d+6*e)^5*(8*d+9*e)^(-3),   45+18*sqrt(2).
 std::string canonical_text(const GiNaC::ex& e);
 
+// e with every real float replaced by the simplest fraction within its precision (0.1 -> 1/10): a
+// decimal the user typed (0.5, 1.) stands for the exact number it names. GiNaC's floats made the
+// closed forms depend on rounding: a denominator could cancel to zero, and the printed forms varied
+// from run to run (the fuzzer found both).
+GiNaC::ex exact_decimals(const GiNaC::ex& e);
+
 // True when e is provably zero after canonical().
 inline bool is_zero_exact(const GiNaC::ex& e) { return canonical(e).is_zero(); }
 

@@ -289,11 +289,12 @@ ParamMap parse_params(const Family& family, const std::vector<std::string>& sett
   auto read = [&](const FamilyParam& p, const std::string& text) {
     check_exponents(p.key, text);
     try {
-      const GiNaC::ex value = p.read ? p.read(text, reader) : reader(text);
+      const GiNaC::ex typed = p.read ? p.read(text, reader) : reader(text);
       // Every family is a set of real directions: an imaginary parameter would give complex positions.
       const bool imaginary =
-          GiNaC::is_a<GiNaC::numeric>(value) ? !GiNaC::ex_to<GiNaC::numeric>(value).is_real() : value.has(GiNaC::I);
+          GiNaC::is_a<GiNaC::numeric>(typed) ? !GiNaC::ex_to<GiNaC::numeric>(typed).is_real() : typed.has(GiNaC::I);
       if (imaginary) throw InputError("--param", 0, p.key + "=" + display_name(text) + ": not a real number");
+      const GiNaC::ex value = exact_decimals(typed);
       std::set<std::string> own;
       collect_symbols(value, own);
       if (static_cast<int>(own.size()) > p.max_symbols)

@@ -125,6 +125,9 @@ GiNaC::matrix orientation_matrix(const std::string& text, GiNaC::parser& reader)
       const std::string part = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
       try {
         v.push_back(reader(part));
+        // q: and rows: components and aa:'s axis are exact (exact_decimals); aa:'s angle keeps its
+        // float, reduced modulo 360 below.
+        if (!(text.rfind("aa:", 0) == 0 && v.size() == 4)) v.back() = exact_decimals(v.back());
       } catch (const std::exception& e) {
         throw fail("'" + display_name(part) + "' is not an expression (" + e.what() + ")");
       }
