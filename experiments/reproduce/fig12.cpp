@@ -163,49 +163,47 @@ void figure_regions(Context& ctx) {
   };
   std::vector<LimitRow> rows;
   // Every region's limits first, side by side in worker processes (region_limits.hpp): the first
-  // half of the stage. Then one part per region, of equal weight, for its N scan.
-  std::vector<RegionLimitTask> tasks;
-  for (const auto& f : families(ctx.options.quick))
-    for (double theta : f.angles) {
-      const Region region = parse_region({f.spec(theta)});
-      if (!region.is_sphere())
-        for (auto c : kCriteria) tasks.push_back({c, region});
-    }
-  ctx.progress.part(0, 0.5, "region limits");
-  const std::vector<RegionLimit> region_limit_values = region_limits(
-      tasks, quick_limits, ctx.threads(), [&](int finished, int count) { ctx.progress.step(finished, count); });
-  std::size_t next_limit = 0;
-  // Then each region's N scan, one region per task in the same worker processes (the regions' scans
-  // are independent, and whole scans side by side keep both cores busy where one synthesis at a
-  // time, 4 starts, does not). A task returns (smallest N or 0, its D).
+  // half of the stage. Then the regions' N scans, the second half.
   struct Scan {
     std::string family, spec;
     double theta, limit;
     Region region;
   };
-  std::vector<Scan> scans;
+  std::vector<Scan> scans;  // every region once; limit is its D limit, set below
+  std::vector<RegionLimitTask> tasks;
   for (const auto& f : families(ctx.options.quick))
     for (double theta : f.angles) {
       const std::string spec = f.spec(theta);
-      const Region region = parse_region({spec});
-      std::optional<RegionLimit> d_limit;
-      for (auto c : kCriteria) {
-        const RegionLimit l = region.is_sphere() ? RegionLimit{} : region_limit_values[next_limit++];
-        const double value = region.is_sphere() ? criterion_limit(c).value : l.value;
-        rows.push_back({f.name,
-                        c,
-                        theta,
-                        {f.name, csv_num(theta), spec, std::string(criterion_name(c)), csv_num(value),
-                         csv_num(value / criterion_limit(c).value)}});
-        if (c == CriterionKind::D && !region.is_sphere()) d_limit = l;
-      }
-      const std::array<double, 3> t = d_limit ? thetas(d_limit->K) : sphere_thetas;
-      errors.row({f.name, csv_num(theta), spec, csv_num(t[0]), csv_num(t[1]), csv_num(t[2]),
-                  csv_num(t[0] / sphere_thetas[0]), csv_num(t[1] / sphere_thetas[1]),
-                  csv_num(t[2] / sphere_thetas[2])});
-      const double limit = d_limit ? d_limit->value : criterion_limit(CriterionKind::D).value;
-      scans.push_back({f.name, spec, theta, limit, region});
+      scans.push_back({f.name, spec, theta, 0.0, parse_region({spec})});
+      if (!scans.back().region.is_sphere())
+        for (auto c : kCriteria) tasks.push_back({c, scans.back().region});
     }
+  ctx.progress.part(0, 0.5, "region limits");
+  const std::vector<RegionLimit> region_limit_values = region_limits(
+      tasks, quick_limits, ctx.threads(), [&](int finished, int count) { ctx.progress.step(finished, count); });
+  std::size_t next_limit = 0;
+  // The limits' rows, the D measure's thetas, and the D limit each scan aims at.
+  for (Scan& sc : scans) {
+    const Region& region = sc.region;
+    std::optional<RegionLimit> d_limit;
+    for (auto c : kCriteria) {
+      const RegionLimit l = region.is_sphere() ? RegionLimit{} : region_limit_values[next_limit++];
+      const double value = region.is_sphere() ? criterion_limit(c).value : l.value;
+      rows.push_back({sc.family,
+                      c,
+                      sc.theta,
+                      {sc.family, csv_num(sc.theta), sc.spec, std::string(criterion_name(c)), csv_num(value),
+                       csv_num(value / criterion_limit(c).value)}});
+      if (c == CriterionKind::D && !region.is_sphere()) d_limit = l;
+    }
+    const std::array<double, 3> t = d_limit ? thetas(d_limit->K) : sphere_thetas;
+    errors.row({sc.family, csv_num(sc.theta), sc.spec, csv_num(t[0]), csv_num(t[1]), csv_num(t[2]),
+                csv_num(t[0] / sphere_thetas[0]), csv_num(t[1] / sphere_thetas[1]), csv_num(t[2] / sphere_thetas[2])});
+    sc.limit = d_limit ? d_limit->value : criterion_limit(CriterionKind::D).value;
+  }
+  // Each region's N scan, one region per task in the same worker processes (the regions' scans are
+  // independent, and whole scans side by side keep both cores busy where one synthesis at a time,
+  // 4 starts, does not). A task returns (smallest N or 0, its D).
   ctx.progress.part(0.5, 0.5, "N scans of " + std::to_string(scans.size()) + " regions");
   const std::vector<std::vector<double>> found = run_values_in_workers(
       static_cast<int>(scans.size()), ctx.threads(), 2,

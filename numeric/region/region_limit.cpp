@@ -35,11 +35,6 @@ bool is_new(const Vec3& x, const std::vector<Vec3>& candidates) {
   return std::none_of(candidates.begin(), candidates.end(), [&](const Vec3& c) { return c.dot(x) >= cos_tol; });
 }
 
-// D on one cap or band is one-dimensional (numeric/region/zonal_d.hpp).
-bool zonal(const Region& region) {
-  return region.zones.size() == 1 && region.candidates.empty() && !region.is_sphere();
-}
-
 RegionLimit zonal_limit(const Zone& zone) {
   const ZonalMeasure m = zonal_d_limit(zone);
   RegionLimit out;
@@ -178,7 +173,7 @@ int add_peaks(const Eigen::Matrix<double, Eigen::Dynamic, P>& C, const Region& r
 template <class Crit>
 RegionLimit limit_of(const Region& region, const RegionLimitOptions& options) {
   if constexpr (kDeterminantOnly<Crit>)
-    if (zonal(region)) return zonal_limit(region.zones.front());
+    if (is_single_zone(region)) return zonal_limit(region.zones.front());
   const std::vector<Vec3> grid = region.measure_grid(options.grid_step_deg);
   std::vector<Vec3> candidates = grid;
   std::vector<double> weights;
@@ -255,6 +250,10 @@ RegionLimit limit_of(const Region& region, const RegionLimitOptions& options) {
 }
 
 }  // namespace
+
+bool is_single_zone(const Region& region) {
+  return region.zones.size() == 1 && region.candidates.empty() && !region.is_sphere();
+}
 
 RegionLimit region_limit(CriterionKind c, const Region& region, const RegionLimitOptions& options) {
   return visit_criterion(c, [&](auto C) { return limit_of<decltype(C)>(region, options); });

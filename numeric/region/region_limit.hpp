@@ -30,6 +30,10 @@ struct RegionLimitOptions {
 
 RegionLimit region_limit(CriterionKind c, const Region& region, const RegionLimitOptions& options = {});
 
+// One cap or band and nothing else: there D is one-dimensional and region_limit() takes it from
+// numeric/region/zonal_d.hpp.
+bool is_single_zone(const Region& region);
+
 // The limit a program on the region is judged against: the proven closed form on the sphere, the
 // region's optimal measure elsewhere.
 double limit_value(CriterionKind c, const Region& region);

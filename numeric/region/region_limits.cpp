@@ -58,9 +58,8 @@ bool unpack(const std::vector<double>& in, RegionLimit& l) {
 // the other workers idle): the first candidate grid's size, and nothing for D on one cap or band,
 // which is one-dimensional (zonal_d.hpp). Only the order of hand-out depends on it, not a result.
 std::size_t rough_cost(const RegionLimitTask& t, const RegionLimitOptions& options) {
-  const Region& r = t.region;
-  if (t.criterion == CriterionKind::D && r.zones.size() == 1 && r.candidates.empty() && !r.is_sphere()) return 0;
-  return r.measure_grid(options.grid_step_deg).size();
+  if (t.criterion == CriterionKind::D && is_single_zone(t.region)) return 0;
+  return t.region.measure_grid(options.grid_step_deg).size();
 }
 
 }  // namespace
