@@ -1,7 +1,9 @@
 // The hot loop of random search: draw a program into fixed buffers, accumulate H^T H in place,
 // factor it and score it, with no allocation per program. Generator: four xoshiro256** streams
 // (Blackman & Vigna 2018) in SIMD lanes, seeded by splitmix64; sphere points by Marsaglia's (1972)
-// method, one 64-bit draw per candidate, rejection by branch-free compaction.
+// method, one 64-bit draw per candidate, rejection by branch-free compaction. Two paths give the
+// same bits: one program at a time (sample_sphere, accumulate_information: the reference), and
+// kBatch programs at once with one program per lane (draw_disc_batch, batch_information).
 #pragma once
 #include <algorithm>
 #include <cmath>
@@ -11,6 +13,9 @@
 #include <vector>
 
 #include <Eigen/Eigenvalues>
+#if defined(__GNUC__) && defined(__x86_64__)
+#include <immintrin.h>
+#endif
 
 #include "numeric/criteria/registry.hpp"
 #include "numeric/model/paper9.hpp"
@@ -34,6 +39,9 @@ inline constexpr int kBatch = 8;
 constexpr int padded_size(int n) { return (n + kLanes - 1) / kLanes * kLanes; }
 // Room each coordinate buffer of sample_sphere needs for n points.
 constexpr int sample_buffer_size(int n) { return padded_size(n) + kLanes; }
+// Room for one coordinate of one program in a batch's buffer of disc points (draw_disc_batch): n +
+// kLanes for the compaction's overrun, rounded up to whole 8 x 8 blocks for the transposition.
+constexpr int batch_stride(int n) { return (n + kLanes + 7) / 8 * 8; }
 
 // Four xoshiro256** streams side by side (lane l of each state word; GCC/Clang vector extension),
 // seeded by one splitmix64 chain from the seed: stream l's four words follow stream l-1's.
@@ -61,54 +69,126 @@ class Xoshiro256x4 {
   Words s_[4];
 };
 
-// n points uniform on the sphere into x, y, z (each with room for sample_buffer_size(n)).
-// Marsaglia: (u, v) uniform in the unit disc, s = u^2 + v^2, gives
-// (2u sqrt(1-s), 2v sqrt(1-s), 1 - 2s) uniform on the sphere. Each 64-bit draw of each stream is
+typedef double Reals4 __attribute__((vector_size(4 * sizeof(double))));
+
+// Marsaglia (1972): (u, v) uniform in the unit disc, s = u^2 + v^2, gives
+// (2u sqrt(1-s), 2v sqrt(1-s), 1 - 2s) uniform on the sphere. Each 64-bit draw r of each stream is
 // one candidate: u from its high and v from its low 32 bits, as 2^-31 fixed point in [-1, 1) (put
-// into the mantissa of a double in [2, 4), minus 3). Candidates go in order (draw, stream); the
-// accepted ones are kept by branch-free compaction, and those past the n-th are dropped.
-SCALCAL_KERNEL void sample_sphere(Xoshiro256x4& rng, int n, double* x, double* y, double* z) {
-  typedef double Reals __attribute__((vector_size(4 * sizeof(double))));
-  typedef std::int64_t Mask __attribute__((vector_size(4 * sizeof(std::int64_t))));
+// into the mantissa of a double in [2, 4), minus 3). Accepted where 0 < s < 1.
+SCALCAL_KERNEL void disc_candidates(const Xoshiro256x4::Words& r, Reals4& u, Reals4& v, Reals4& s) {
   const Xoshiro256x4::Words two = Xoshiro256x4::Words{} + 0x4000000000000000ull;
-  for (int k = 0; k < n;) {
+  const Xoshiro256x4::Words ub = ((r >> 32) << 20) | two, vb = ((r & 0xFFFFFFFFull) << 20) | two;
+  std::memcpy(&u, &ub, sizeof u);
+  std::memcpy(&v, &vb, sizeof v);
+  u -= 3.0;
+  v -= 3.0;
+  s = u * u + v * v;
+}
+
+// n accepted candidates for each of `lanes` programs in a row, program l's u, v, s at u, v, s + l
+// step (each with room for n + kLanes). Candidates go in order (draw, stream); the accepted ones are
+// kept by branch-free compaction. A program ends at the draw that completes its n points (the rest
+// of that draw is dropped) and the next begins at the next draw; the switch is branch-free too, so
+// the loop's exit is mispredicted once per batch instead of once per program.
+SCALCAL_KERNEL void draw_disc_batch(Xoshiro256x4& rng, int n, int lanes, double* u, double* v, double* s,
+                                    std::ptrdiff_t step) {
+  typedef std::int64_t Mask __attribute__((vector_size(4 * sizeof(std::int64_t))));
+  Xoshiro256x4 local = rng;  // in registers: the stores below could alias the caller's generator
+  int program = 0, k = 0;
+  std::ptrdiff_t at = 0;  // program * step
+  while (program < lanes) {
     Xoshiro256x4::Words r;
-    rng.next(r);
-    Reals u, v;
-    const Xoshiro256x4::Words ub = ((r >> 32) << 20) | two, vb = ((r & 0xFFFFFFFFull) << 20) | two;
-    std::memcpy(&u, &ub, sizeof u);
-    std::memcpy(&v, &vb, sizeof v);
-    u -= 3.0;
-    v -= 3.0;
-    const Reals s = u * u + v * v;
-    const Mask accept = (s < 1.0) & (s > 0.0);  // -1 where accepted
+    local.next(r);
+    Reals4 U, V, S;
+    disc_candidates(r, U, V, S);
+    const Mask accept = (S < 1.0) & (S > 0.0);  // -1 where accepted
     for (int l = 0; l < 4; ++l) {
-      x[k] = u[l];
-      y[k] = v[l];
-      z[k] = s[l];
+      u[at + k] = U[l];
+      v[at + k] = V[l];
+      s[at + k] = S[l];
       k -= static_cast<int>(accept[l]);
     }
+    const int done = k >= n;
+    program += done;
+    k = done ? 0 : k;
+    at = program * step;
   }
-  // 2 sqrt(1 - s) four at a time: std::sqrt does not vectorise (errno), so 1/sqrt(a) comes from
-  // the bit-level estimate (relative error < 3.5e-2) and four Newton steps (< 1e-20 before
-  // rounding), and sqrt(a) = a / sqrt(a): points are unit vectors to a few ulp.
-  for (int k = n; k < padded_size(n); ++k) z[k] = 0.0;
+  rng = local;
+}
+
+// One program: n accepted candidates into u, v, s.
+SCALCAL_KERNEL void draw_disc_points(Xoshiro256x4& rng, int n, double* u, double* v, double* s) {
+  draw_disc_batch(rng, n, 1, u, v, s, 0);
+}
+
+#if defined(__GNUC__) && defined(__x86_64__)
+#define SCALCAL_HAVE_AVX512_DRAW 1
+#define SCALCAL_AVX512_TARGET "avx512f,avx512dq,avx512vl,avx512bw,avx2,fma,bmi,bmi2,popcnt"
+// draw_disc_batch with AVX-512's compress in place of the scalar compaction: the same candidates
+// kept in the same order, a third faster (random_search.cpp's AVX-512 loop; only where the CPU has
+// it). The empty asm keeps the compiler from folding the generator's * 9 into the << 20 as one slow
+// 64-bit vector multiply.
+__attribute__((target(SCALCAL_AVX512_TARGET))) inline void draw_disc_batch_avx512(Xoshiro256x4& rng, int n, int lanes,
+                                                                                  double* u, double* v, double* s,
+                                                                                  std::ptrdiff_t step) {
+  Xoshiro256x4 local = rng;
+  int program = 0, k = 0;
+  std::ptrdiff_t at = 0;
+  while (program < lanes) {
+    Xoshiro256x4::Words r;
+    local.next(r);
+    asm("" : "+v"(r));
+    Reals4 U, V, S;
+    disc_candidates(r, U, V, S);
+    const __m256d s4 = reinterpret_cast<__m256d>(S);
+    const __mmask8 accept = _mm256_cmp_pd_mask(s4, _mm256_set1_pd(1.0), _CMP_LT_OQ) &
+                            _mm256_cmp_pd_mask(s4, _mm256_setzero_pd(), _CMP_GT_OQ);
+    _mm256_storeu_pd(u + at + k, _mm256_maskz_compress_pd(accept, reinterpret_cast<__m256d>(U)));
+    _mm256_storeu_pd(v + at + k, _mm256_maskz_compress_pd(accept, reinterpret_cast<__m256d>(V)));
+    _mm256_storeu_pd(s + at + k, _mm256_maskz_compress_pd(accept, s4));
+    k += __builtin_popcount(accept);
+    const int done = k >= n;
+    program += done;
+    k = done ? 0 : k;
+    at = program * step;
+  }
+  rng = local;
+}
+#endif
+
+// Marsaglia's map of accepted disc points (u, v, s) to the sphere, in place: (x, y, z) replaces
+// (u, v, s). R is double or a vector of doubles, W the unsigned 64-bit integers of the same shape;
+// every lane goes through the same operations, so a program's points do not depend on the width.
+// 2 sqrt(1 - s): 1/sqrt(a) from the bit-level estimate (relative error < 3.5e-2) and four Newton
+// steps (< 1e-20 before rounding; std::sqrt does not vectorise: errno), then sqrt(a) = a / sqrt(a):
+// points are unit vectors to a few ulp. For s in (0, 1) only: other values may be slow or NaN.
+template <class R, class W>
+SCALCAL_KERNEL void disc_to_sphere(R& x, R& y, R& s) {
+  const R a = 1.0 - s;
+  W bits;
+  std::memcpy(&bits, &a, sizeof bits);
+  bits = 0x5FE6EB50C7B537A9ull - (bits >> 1);
+  R q;
+  std::memcpy(&q, &bits, sizeof q);
+  for (int it = 0; it < 4; ++it) q = q * (1.5 - 0.5 * a * q * q);
+  const R r = 2.0 * a * q;
+  x *= r;
+  y *= r;
+  s = 1.0 - 2.0 * s;
+}
+
+// n points uniform on the sphere into x, y, z (each with room for sample_buffer_size(n)), zero
+// vectors after the n-th up to padded_size(n).
+SCALCAL_KERNEL void sample_sphere(Xoshiro256x4& rng, int n, double* x, double* y, double* z) {
+  typedef Reals4 Reals;
+  draw_disc_points(rng, n, x, y, z);
+  for (int k = n; k < padded_size(n); ++k) z[k] = 0.0;  // s = 0: a harmless a = 1 in the padding
   for (int k = 0; k < padded_size(n); k += 4) {
     Reals X, Y, S;
     std::memcpy(&X, x + k, sizeof X);
     std::memcpy(&Y, y + k, sizeof Y);
     std::memcpy(&S, z + k, sizeof S);
-    const Reals a = 1.0 - S;
-    Xoshiro256x4::Words bits;
-    std::memcpy(&bits, &a, sizeof bits);
-    bits = 0x5FE6EB50C7B537A9ull - (bits >> 1);
-    Reals q;
-    std::memcpy(&q, &bits, sizeof q);
-    for (int it = 0; it < 4; ++it) q = q * (1.5 - 0.5 * a * q * q);
-    const Reals r = 2.0 * a * q;
-    X *= r;
-    Y *= r;
-    S = 1.0 - 2.0 * S;
+    disc_to_sphere<Reals, Xoshiro256x4::Words>(X, Y, S);
     std::memcpy(x + k, &X, sizeof X);
     std::memcpy(y + k, &Y, sizeof Y);
     std::memcpy(z + k, &S, sizeof S);
@@ -195,6 +275,104 @@ SCALCAL_KERNEL void accumulate_information(const double* x, const double* y, con
   m[30] = m[5] - m[21] - m[28];                                // zzzz
   for (int r = 0; r < 9; ++r)
     for (int c = 0; c <= r; ++c) m45[packed(r, c)] = m[kMoments.entry[r][c]];
+}
+
+// kBatch programs side by side, one per lane (GCC/Clang vector extension: one AVX-512 register, two
+// AVX2 ones, four SSE2 ones).
+typedef double Programs __attribute__((vector_size(kBatch * sizeof(double))));
+typedef std::uint64_t ProgramWords __attribute__((vector_size(kBatch * sizeof(std::uint64_t))));
+
+// The 8 x 8 block r (row l: 8 values of program l) transposed in place (row i: value i of every
+// program), in three rounds of two-vector shuffles.
+SCALCAL_KERNEL void transpose_block(Programs* r) {
+  static_assert(kBatch == 8, "transpose_block handles 8 x 8 blocks");
+  Programs t[8], w[8];
+  for (int k = 0; k < 4; ++k) {
+    t[2 * k] = __builtin_shufflevector(r[2 * k], r[2 * k + 1], 0, 8, 2, 10, 4, 12, 6, 14);
+    t[2 * k + 1] = __builtin_shufflevector(r[2 * k], r[2 * k + 1], 1, 9, 3, 11, 5, 13, 7, 15);
+  }
+  for (int k = 0; k < 2; ++k)
+    for (int j = 0; j < 2; ++j) {
+      w[4 * k + j] = __builtin_shufflevector(t[4 * k + j], t[4 * k + j + 2], 0, 1, 8, 9, 4, 5, 12, 13);
+      w[4 * k + j + 2] = __builtin_shufflevector(t[4 * k + j], t[4 * k + j + 2], 2, 3, 10, 11, 6, 7, 14, 15);
+    }
+  for (int j = 0; j < 4; ++j) {
+    r[j] = __builtin_shufflevector(w[j], w[j + 4], 0, 1, 2, 3, 8, 9, 10, 11);
+    r[j + 4] = __builtin_shufflevector(w[j], w[j + 4], 4, 5, 6, 7, 12, 13, 14, 15);
+  }
+}
+
+// H^T H of kBatch programs into m[45][kBatch] (packed lower triangles), from their accepted disc
+// points (draw_disc_batch: program l's u, v, s at disc + (3 l + c) batch_stride(n), c = 0, 1, 2).
+// The points are transposed to one program per lane and mapped to the sphere into x, y, z (room for
+// n each); then the moments are accumulated as accumulate_information does for one program: the
+// same kLanes partial sums (position i into partial i mod kLanes, in increasing i), added in the
+// same order, the same derived moments. So every program's H^T H is bit for bit the one of
+// sample_sphere and accumulate_information, with 8 programs per instruction instead of 4 positions
+// and no sums across lanes; the zero padding is skipped (it adds exact zeros: no sum is ever -0).
+SCALCAL_KERNEL void batch_information(const double* __restrict disc, int n, Programs* __restrict x,
+                                      Programs* __restrict y, Programs* __restrict z, double (*m)[kBatch]) {
+  const int stride = batch_stride(n);
+  int i0 = 0;
+  for (; i0 + 4 < n; i0 += 8) {  // whole blocks while more than 4 positions are left
+    Programs block[3][8];
+    for (int c = 0; c < 3; ++c) {
+      for (int l = 0; l < kBatch; ++l)
+        std::memcpy(&block[c][l], disc + static_cast<std::ptrdiff_t>((3 * l + c) * stride + i0), sizeof(Programs));
+      transpose_block(block[c]);
+    }
+    for (int j = 0; j < 8 && i0 + j < n; ++j) {  // past n: the compaction's leftovers, never mapped
+      disc_to_sphere<Programs, ProgramWords>(block[0][j], block[1][j], block[2][j]);
+      x[i0 + j] = block[0][j];
+      y[i0 + j] = block[1][j];
+      z[i0 + j] = block[2][j];
+    }
+  }
+  for (int i = i0; i < n; ++i) {  // the last 1 to 4 one at a time: cheaper than a whole block
+    Programs c3[3];
+    for (int c = 0; c < 3; ++c)
+      for (int l = 0; l < kBatch; ++l) c3[c][l] = disc[(3 * l + c) * stride + i];
+    disc_to_sphere<Programs, ProgramWords>(c3[0], c3[1], c3[2]);
+    x[i] = c3[0];
+    y[i] = c3[1];
+    z[i] = c3[2];
+  }
+  Programs partial[kLanes][24];
+  for (int p = 0; p < kLanes; ++p) {
+    Programs acc[24] = {};
+    for (int i = p; i < n; i += kLanes) {
+      const Programs X = x[i], Y = y[i], Z = z[i];
+      const Programs xx = X * X, xy = X * Y, xz = X * Z, yy = Y * Y, yz = Y * Z, zz = Z * Z;
+      acc[0] += xx, acc[1] += xy, acc[2] += xz, acc[3] += yy, acc[4] += yz;
+      acc[5] += X * xx, acc[6] += X * xy, acc[7] += X * xz, acc[8] += X * yy, acc[9] += X * yz;
+      acc[10] += X * zz, acc[11] += Y * yy, acc[12] += Y * yz, acc[13] += Y * zz, acc[14] += Z * zz;
+      acc[15] += xx * xx, acc[16] += xx * xy, acc[17] += xx * xz, acc[18] += xx * yy, acc[19] += xx * yz;
+      acc[20] += xy * yy, acc[21] += xy * yz, acc[22] += yy * yy, acc[23] += yy * yz;
+    }
+    for (int k = 0; k < 24; ++k) partial[p][k] = acc[k];
+  }
+  Programs a[24];
+  for (int k = 0; k < 24; ++k) {
+    Programs s = Programs{} + 0.0;
+    for (int p = 0; p < kLanes; ++p) s += partial[p][k];
+    a[k] = s;
+  }
+  // The 31 moments in kMoments' order, derived as in accumulate_information.
+  Programs mo[31];
+  for (int k = 0; k < 5; ++k) mo[k] = a[k];
+  mo[5] = static_cast<double>(n) - a[0] - a[3];
+  for (int k = 6; k <= 15; ++k) mo[k] = a[k - 1];
+  mo[16] = a[15], mo[17] = a[16], mo[18] = a[17], mo[19] = a[18];
+  mo[20] = a[19], mo[22] = a[20], mo[23] = a[21], mo[26] = a[22];
+  mo[27] = a[23];
+  mo[21] = mo[0] - mo[16] - mo[19];
+  mo[24] = mo[1] - mo[17] - mo[22];
+  mo[25] = mo[2] - mo[18] - mo[23];
+  mo[28] = mo[3] - mo[19] - mo[26];
+  mo[29] = mo[4] - mo[20] - mo[27];
+  mo[30] = mo[5] - mo[21] - mo[28];
+  for (int r = 0; r < 9; ++r)
+    for (int c = 0; c <= r; ++c) std::memcpy(m[packed(r, c)], &mo[kMoments.entry[r][c]], sizeof(Programs));
 }
 
 // D = N^9 / det(H^T H) of B programs at once (m[entry][program], packed lower triangles), by
