@@ -231,6 +231,37 @@ inline constexpr MomentTable kMoments = make_moment_table();
 // The 45 entries of the lower triangle of H^T H, packed (a, b), b <= a, at a(a+1)/2 + b.
 constexpr int packed(int a, int b) { return a * (a + 1) / 2 + b; }
 
+// The 24 accumulated moment sums (accumulate_information says which) plus the point (X, Y, Z): V is
+// a vector of kLanes positions of one program or of one position of kBatch programs. One body for
+// both paths, so their sums round alike (the same expressions, fused alike).
+template <class V>
+SCALCAL_KERNEL void add_moments(V* acc, const V& X, const V& Y, const V& Z) {
+  const V xx = X * X, xy = X * Y, xz = X * Z, yy = Y * Y, yz = Y * Z, zz = Z * Z;
+  acc[0] += xx, acc[1] += xy, acc[2] += xz, acc[3] += yy, acc[4] += yz;
+  acc[5] += X * xx, acc[6] += X * xy, acc[7] += X * xz, acc[8] += X * yy, acc[9] += X * yz;
+  acc[10] += X * zz, acc[11] += Y * yy, acc[12] += Y * yz, acc[13] += Y * zz, acc[14] += Z * zz;
+  acc[15] += xx * xx, acc[16] += xx * xy, acc[17] += xx * xz, acc[18] += xx * yy, acc[19] += xx * yz;
+  acc[20] += xy * yy, acc[21] += xy * yz, acc[22] += yy * yy, acc[23] += yy * yz;
+}
+
+// The 31 moments in kMoments' order (degree, then decreasing powers of x, then of y) from the 24
+// sums a of `count` unit vectors (V: double, or one lane per program).
+template <class V>
+SCALCAL_KERNEL void derive_moments(const V* a, double count, V* m) {
+  for (int k = 0; k < 5; ++k) m[k] = a[k];                     // xx xy xz yy yz
+  m[5] = count - a[0] - a[3];                                  // zz
+  for (int k = 6; k <= 15; ++k) m[k] = a[k - 1];               // the ten cubic moments
+  m[16] = a[15], m[17] = a[16], m[18] = a[17], m[19] = a[18];  // xxxx xxxy xxxz xxyy
+  m[20] = a[19], m[22] = a[20], m[23] = a[21], m[26] = a[22];  // xxyz xyyy xyyz yyyy
+  m[27] = a[23];                                               // yyyz
+  m[21] = m[0] - m[16] - m[19];                                // xxzz
+  m[24] = m[1] - m[17] - m[22];                                // xyzz
+  m[25] = m[2] - m[18] - m[23];                                // xzzz
+  m[28] = m[3] - m[19] - m[26];                                // yyzz
+  m[29] = m[4] - m[20] - m[27];                                // yzzz
+  m[30] = m[5] - m[21] - m[28];                                // zzzz
+}
+
 // Moments of `count` unit vectors in structure-of-arrays form (n, a multiple of kLanes, includes
 // the zero padding), kLanes partial sums per moment held in one vector (GCC/Clang vector
 // extension: AVX where compiled for it, else pairs of SSE2 registers); the partial sums are added
@@ -246,12 +277,7 @@ SCALCAL_KERNEL void accumulate_information(const double* x, const double* y, con
     std::memcpy(&X, x + i, sizeof X);
     std::memcpy(&Y, y + i, sizeof Y);
     std::memcpy(&Z, z + i, sizeof Z);
-    const Lanes xx = X * X, xy = X * Y, xz = X * Z, yy = Y * Y, yz = Y * Z, zz = Z * Z;
-    acc[0] += xx, acc[1] += xy, acc[2] += xz, acc[3] += yy, acc[4] += yz;
-    acc[5] += X * xx, acc[6] += X * xy, acc[7] += X * xz, acc[8] += X * yy, acc[9] += X * yz;
-    acc[10] += X * zz, acc[11] += Y * yy, acc[12] += Y * yz, acc[13] += Y * zz, acc[14] += Z * zz;
-    acc[15] += xx * xx, acc[16] += xx * xy, acc[17] += xx * xz, acc[18] += xx * yy, acc[19] += xx * yz;
-    acc[20] += xy * yy, acc[21] += xy * yz, acc[22] += yy * yy, acc[23] += yy * yz;
+    add_moments(acc, X, Y, Z);
   }
   double a[24];
   for (int k = 0; k < 24; ++k) {
@@ -259,20 +285,8 @@ SCALCAL_KERNEL void accumulate_information(const double* x, const double* y, con
     for (int l = 0; l < kLanes; ++l) s += acc[k][l];
     a[k] = s;
   }
-  // The 31 moments in kMoments' order (degree, then decreasing powers of x, then of y).
   double m[31];
-  for (int k = 0; k < 5; ++k) m[k] = a[k];                     // xx xy xz yy yz
-  m[5] = count - a[0] - a[3];                                  // zz
-  for (int k = 6; k <= 15; ++k) m[k] = a[k - 1];               // the ten cubic moments
-  m[16] = a[15], m[17] = a[16], m[18] = a[17], m[19] = a[18];  // xxxx xxxy xxxz xxyy
-  m[20] = a[19], m[22] = a[20], m[23] = a[21], m[26] = a[22];  // xxyz xyyy xyyz yyyy
-  m[27] = a[23];                                               // yyyz
-  m[21] = m[0] - m[16] - m[19];                                // xxzz
-  m[24] = m[1] - m[17] - m[22];                                // xyzz
-  m[25] = m[2] - m[18] - m[23];                                // xzzz
-  m[28] = m[3] - m[19] - m[26];                                // yyzz
-  m[29] = m[4] - m[20] - m[27];                                // yzzz
-  m[30] = m[5] - m[21] - m[28];                                // zzzz
+  derive_moments(a, static_cast<double>(count), m);
   for (int r = 0; r < 9; ++r)
     for (int c = 0; c <= r; ++c) m45[packed(r, c)] = m[kMoments.entry[r][c]];
 }
@@ -341,13 +355,7 @@ SCALCAL_KERNEL void batch_information(const double* __restrict disc, int n, Prog
   for (int p = 0; p < kLanes; ++p) {
     Programs acc[24] = {};
     for (int i = p; i < n; i += kLanes) {
-      const Programs X = x[i], Y = y[i], Z = z[i];
-      const Programs xx = X * X, xy = X * Y, xz = X * Z, yy = Y * Y, yz = Y * Z, zz = Z * Z;
-      acc[0] += xx, acc[1] += xy, acc[2] += xz, acc[3] += yy, acc[4] += yz;
-      acc[5] += X * xx, acc[6] += X * xy, acc[7] += X * xz, acc[8] += X * yy, acc[9] += X * yz;
-      acc[10] += X * zz, acc[11] += Y * yy, acc[12] += Y * yz, acc[13] += Y * zz, acc[14] += Z * zz;
-      acc[15] += xx * xx, acc[16] += xx * xy, acc[17] += xx * xz, acc[18] += xx * yy, acc[19] += xx * yz;
-      acc[20] += xy * yy, acc[21] += xy * yz, acc[22] += yy * yy, acc[23] += yy * yz;
+      add_moments(acc, x[i], y[i], z[i]);
     }
     for (int k = 0; k < 24; ++k) partial[p][k] = acc[k];
   }
@@ -357,20 +365,8 @@ SCALCAL_KERNEL void batch_information(const double* __restrict disc, int n, Prog
     for (int p = 0; p < kLanes; ++p) s += partial[p][k];
     a[k] = s;
   }
-  // The 31 moments in kMoments' order, derived as in accumulate_information.
   Programs mo[31];
-  for (int k = 0; k < 5; ++k) mo[k] = a[k];
-  mo[5] = static_cast<double>(n) - a[0] - a[3];
-  for (int k = 6; k <= 15; ++k) mo[k] = a[k - 1];
-  mo[16] = a[15], mo[17] = a[16], mo[18] = a[17], mo[19] = a[18];
-  mo[20] = a[19], mo[22] = a[20], mo[23] = a[21], mo[26] = a[22];
-  mo[27] = a[23];
-  mo[21] = mo[0] - mo[16] - mo[19];
-  mo[24] = mo[1] - mo[17] - mo[22];
-  mo[25] = mo[2] - mo[18] - mo[23];
-  mo[28] = mo[3] - mo[19] - mo[26];
-  mo[29] = mo[4] - mo[20] - mo[27];
-  mo[30] = mo[5] - mo[21] - mo[28];
+  derive_moments(a, static_cast<double>(n), mo);
   for (int r = 0; r < 9; ++r)
     for (int c = 0; c <= r; ++c) std::memcpy(m[packed(r, c)], &mo[kMoments.entry[r][c]], sizeof(Programs));
 }
