@@ -6,6 +6,7 @@
 
 #include "numeric/criteria/criterion.hpp"
 #include "numeric/criteria/dual_kind.hpp"
+#include "numeric/criteria/exchange_path.hpp"
 #include "numeric/criteria/starts.hpp"
 
 namespace scalcal {
@@ -50,6 +51,14 @@ struct ACriterion {
     if (llt.info() != Eigen::Success) return false;
     out = Scalar(n) * llt.solve(Eigen::Matrix<Scalar, P, P>::Identity()).trace();
     return true;
+  }
+
+  // objective() at M(a) on a vertex exchange's path from its value at a = 0, in O(1)
+  // (exchange_path.hpp); false where M(a) is not positive definite.
+  static bool objective_along(const ExchangePath& path, int n, double at_zero, double a, double& out) {
+    if (!(path.determinant_ratio(a) > 0)) return false;
+    out = at_zero + n * path.trace_change(a);
+    return out > 0;
   }
 
   template <class Scalar, int P>

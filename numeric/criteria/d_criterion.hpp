@@ -7,6 +7,7 @@
 
 #include "numeric/criteria/criterion.hpp"
 #include "numeric/criteria/dual_kind.hpp"
+#include "numeric/criteria/exchange_path.hpp"
 #include "numeric/criteria/starts.hpp"
 
 namespace scalcal {
@@ -51,6 +52,16 @@ struct DCriterion {
     Eigen::LLT<Eigen::Matrix<Scalar, P, P>> llt(M);
     if (llt.info() != Eigen::Success) return false;
     out = log_d(llt, n);
+    return true;
+  }
+
+  // objective() at M(a) on a vertex exchange's path from its value at a = 0: log det M(a) = log det M +
+  // log det T(a) (exchange_path.hpp); false where M(a) is not positive definite.
+  static bool objective_along(const ExchangePath& path, int, double at_zero, double a, double& out) {
+    using std::log;
+    const double r = path.determinant_ratio(a);
+    if (!(r > 0)) return false;
+    out = at_zero - log(r);
     return true;
   }
 

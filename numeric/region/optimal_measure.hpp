@@ -11,7 +11,9 @@
 #include <Eigen/Eigenvalues>
 
 #include "numeric/criteria/criterion.hpp"
+#include "numeric/criteria/exchange_path.hpp"
 #include "numeric/model/model.hpp"
+#include "numeric/synthesis/symmetric_pairs.hpp"
 
 namespace scalcal {
 
@@ -83,15 +85,35 @@ MeasureOnCandidates<Model::kParameters> optimal_measure(const std::vector<Vec3>&
                                                         int max_iterations = 3000, double tolerance = 1e-9) {
   constexpr int P = Model::kParameters;
   using Mat = Eigen::Matrix<double, P, P>;
+  constexpr int Q = P * (P + 1) / 2;
   const int n = static_cast<int>(candidates.size());
   Eigen::Matrix<double, P, Eigen::Dynamic> H(P, n);
   for (int i = 0; i < n; ++i) H.col(i) = Model::row(candidates[static_cast<std::size_t>(i)]);
+  // Each candidate's products h_a h_b (b <= a, at symmetric_pair(a, b)): M(w) is then one
+  // matrix-vector product and so are the sensitivities h_i^T Z h_i, with Q of the P^2 entries each
+  // and no packing of a general matrix product (which took a third of the A limit on cap:90).
+  Eigen::Matrix<double, Eigen::Dynamic, Q> products(n, Q);
+  for (int a = 0; a < P; ++a)
+    for (int b = 0; b <= a; ++b) products.col(symmetric_pair(a, b)) = H.row(a).cwiseProduct(H.row(b)).transpose();
   Eigen::ArrayXd w = Eigen::ArrayXd::Constant(n, 1.0 / n);
   if (static_cast<int>(start.size()) == n) {
     for (int i = 0; i < n; ++i) w(i) = std::max(start[static_cast<std::size_t>(i)], 1e-12 / n);
     w /= w.sum();
   }
-  const auto information = [&](const Eigen::ArrayXd& v) -> Mat { return H * v.matrix().asDiagonal() * H.transpose(); };
+  const auto information = [&](const Eigen::ArrayXd& v) -> Mat {
+    const Eigen::Matrix<double, Q, 1> m = products.transpose() * v.matrix();
+    Mat out;
+    for (int a = 0; a < P; ++a)
+      for (int b = 0; b <= a; ++b) out(a, b) = out(b, a) = m(symmetric_pair(a, b));
+    return out;
+  };
+  // h_i^T Z h_i for every candidate (Z symmetric: its lower triangle, off the diagonal twice).
+  const auto sensitivities = [&](const Mat& Z) -> Eigen::ArrayXd {
+    Eigen::Matrix<double, Q, 1> z;
+    for (int a = 0; a < P; ++a)
+      for (int b = 0; b <= a; ++b) z(symmetric_pair(a, b)) = a == b ? Z(a, a) : Z(a, b) + Z(b, a);
+    return (products * z).array();
+  };
   constexpr bool smooth = SmoothCriterion<Crit>;
   MeasureOnCandidates<P> out;
   double p = smooth ? 1.0 : 8.0;
@@ -110,7 +132,7 @@ MeasureOnCandidates<Model::kParameters> optimal_measure(const std::vector<Vec3>&
   constexpr int kStageIterations = 200;
   int it = 0, stage_start = 0;
   for (; it < max_iterations; ++it) {
-    const Eigen::ArrayXd d = (H.transpose() * Z).cwiseProduct(H.transpose()).rowwise().sum().array().max(0.0);
+    const Eigen::ArrayXd d = sensitivities(Z).max(0.0);
     const double average = (w * d).sum();
     const double gap = d.maxCoeff() / average - 1.0;
     out.equivalence_gap = gap;
@@ -152,15 +174,24 @@ MeasureOnCandidates<Model::kParameters> optimal_measure(const std::vector<Vec3>&
     // only: a smoothed nonsmooth form's line search costs an eigen-decomposition per trial, and
     // its weights are made exact afterwards anyway: measure_weights.hpp.)
     if constexpr (smooth) {
-      const Eigen::ArrayXd dv = (H.transpose() * Z).cwiseProduct(H.transpose()).rowwise().sum().array();
+      const Eigen::ArrayXd dv = sensitivities(Z);
       Eigen::Index j = 0, k = -1;
       dv.maxCoeff(&j);
       for (Eigen::Index i = 0; i < n; ++i)
         if (w(i) > 0 && i != j && (k < 0 || dv(i) < dv(k))) k = i;
       if (k >= 0 && dv(j) > dv(k)) {
-        const Mat delta = H.col(j) * H.col(j).transpose() - H.col(k) * H.col(k).transpose();
+        // The criterion's value along M + a (h_j h_j^T - h_k h_k^T): in O(1) from one factorisation of M
+        // where it offers that (exchange_path.hpp), else a factorisation per trial.
+        constexpr bool along_path = requires(const ExchangePath& e, double x) { Crit::objective_along(e, 1, x, x, x); };
+        ExchangePath path;
+        Mat delta;
+        if constexpr (along_path)
+          path = exchange_path<P>(Eigen::LLT<Mat>(M), H.col(j), H.col(k));
+        else
+          delta = H.col(j) * H.col(j).transpose() - H.col(k) * H.col(k).transpose();
         const auto phi_at = [&](double a) {
           double v = INFINITY;
+          if constexpr (along_path) return Crit::objective_along(path, 1, phi, a, v) ? v : INFINITY;
           return measure_objective<Crit, Model>(M + a * delta, p, v, nullptr) ? v : INFINITY;
         };
         double lo = 0, hi = w(k);

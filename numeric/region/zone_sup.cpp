@@ -32,17 +32,19 @@ struct Chart {
 
 UpwardInterval upward(const I& a) { return {-a.lower(), a.upper()}; }
 
-// x(u, t) with its derivatives, on the box U x T (or a point).
-std::array<Jet, 3> position(const Chart& ch, const I& U, const I& T, int half) {
-  const UpwardInterval zero{0.0, 0.0}, one_i = point(1.0);
-  const Jet u{upward(U), one_i, zero, zero, zero, zero}, t{upward(T), zero, one_i, zero, zero, zero};
-  const Jet one = constant(one_i), two_u = scaled(2.0, u), two_t = scaled(2.0, t);
-  const Jet ru = reciprocal(one + square(u)), rt = reciprocal(one + square(t));
-  const Jet cos_tilt = (one - square(u)) * ru, sin_tilt = two_u * ru;
-  const Jet c = scaled(static_cast<double>(half), (one - square(t)) * rt),
-            s = scaled(static_cast<double>(half), two_t * rt);
-  const Jet sc = sin_tilt * c, ss = sin_tilt * s;
-  std::array<Jet, 3> x;
+// x(u, t) with its derivatives, on the box U x T (or a point), for one box or two side by side.
+template <class V>
+std::array<UpwardJetT<V>, 3> position(const Chart& ch, UpwardIntervalT<V> U, UpwardIntervalT<V> T, int half) {
+  using J = UpwardJetT<V>;
+  const UpwardIntervalT<V> zero{V{}, V{}}, one_i{splat(-1.0, V{}), splat(1.0, V{})};
+  const J u{U, one_i, zero, zero, zero, zero}, t{T, zero, one_i, zero, zero, zero};
+  const J one = constant(one_i), two_u = scaled(2.0, u), two_t = scaled(2.0, t);
+  const J ru = reciprocal(one + square(u)), rt = reciprocal(one + square(t));
+  const J cos_tilt = (one - square(u)) * ru, sin_tilt = two_u * ru;
+  const J c = scaled(static_cast<double>(half), (one - square(t)) * rt),
+          s = scaled(static_cast<double>(half), two_t * rt);
+  const J sc = sin_tilt * c, ss = sin_tilt * s;
+  std::array<J, 3> x;
   for (int i = 0; i < 3; ++i)
     x[static_cast<std::size_t>(i)] = scaled(ch.e1(i), sc) + scaled(ch.e2(i), ss) + scaled(ch.axis(i), cos_tilt);
   return x;
@@ -107,9 +109,11 @@ struct Box {
 // The bound on one box: the smaller of the natural enclosure and the second-order Taylor form
 // f(c) + g.d + d^T H(B) d / 2 around the centre c.
 double box_bound(const Rows& C, const Chart& ch, const Box& b) {
-  const Jet over = norm2_jet(C, position(ch, I(b.u0, b.u1), I(b.t0, b.t1), b.half));
+  // The jets over the box (lane 0) and at its centre (lane 1), in one pass.
   const double cu = 0.5 * (b.u0 + b.u1), ct = 0.5 * (b.t0 + b.t1);
-  const Jet at = norm2_jet(C, position(ch, I(cu), I(ct), b.half));
+  const UpwardPair U = pair_of(upward(I(b.u0, b.u1)), upward(I(cu))), T = pair_of(upward(I(b.t0, b.t1)), upward(I(ct)));
+  const UpwardJetT<__m128d> both = norm2_jet(C, position(ch, U, T, b.half));
+  const Jet over = lane_of(both, 0), at = lane_of(both, 1);
   // Half-widths rounded up so that [c - r, c + r] covers the box.
   const double ru =
       (I(b.u1) - I(cu)).upper() > (I(cu) - I(b.u0)).upper() ? (I(b.u1) - I(cu)).upper() : (I(cu) - I(b.u0)).upper();
@@ -221,7 +225,7 @@ SupBound sup_norm2_over_points(const Rows& C, const std::vector<Vec3>& points) {
   SupBound out;
   out.lower = -1;
   for (const Vec3& x : points) {
-    const Jet j = norm2_jet(C, {constant(point(x(0))), constant(point(x(1))), constant(point(x(2)))});
+    const Jet j = norm2_jet<double>(C, {constant(point(x(0))), constant(point(x(1))), constant(point(x(2)))});
     out.upper = std::max(out.upper, j.v.hi);
     const double v = value_at(C, x);
     if (v > out.lower) {

@@ -3,7 +3,9 @@
 // end must bound the true set, and the ends must be Boost's to the bit.
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <random>
 
 #include "numeric/region/interval.hpp"
@@ -94,6 +96,60 @@ TEST(UpwardJet, ReciprocalOfAPositiveIntervalIsBoosts) {
   // An interval holding zero has no bounded reciprocal: the whole line, not a wrong one.
   const UpwardInterval whole = reciprocal(UpwardInterval{1.0, 1.0});
   EXPECT_TRUE(std::isinf(whole.neg_lo) && std::isinf(whole.hi));
+}
+
+// Two intervals side by side (UpwardPair, the zone bound's over-the-box and at-the-centre lanes) give
+// each lane the single interval's ends to the bit, for every operation and for a whole norm jet.
+bool same(const UpwardInterval& a, const UpwardInterval& b) {
+  return std::bit_cast<std::uint64_t>(a.neg_lo) == std::bit_cast<std::uint64_t>(b.neg_lo) &&
+         std::bit_cast<std::uint64_t>(a.hi) == std::bit_cast<std::uint64_t>(b.hi);
+}
+
+TEST(UpwardJet, PairsAreTheSingleIntervalsLaneByLane) {
+  const RoundingScope rounding;
+  std::mt19937_64 rng(20261127);
+  std::uniform_real_distribution<double> coefficient(-4.0, 4.0);
+  for (int trial = 0; trial < 100000; ++trial) {
+    const UpwardInterval a = random_interval(rng), b = random_interval(rng), c = random_interval(rng),
+                         d = random_interval(rng);
+    const UpwardPair ac = pair_of(a, c), bd = pair_of(b, d);
+    const double k = coefficient(rng);
+    const UpwardPair results[] = {ac * bd, ac + bd, ac - bd, square(ac), reciprocal(ac), scaled(k, ac), -ac};
+    const UpwardInterval first[] = {a * b, a + b, a - b, square(a), reciprocal(a), scaled(k, a), -a};
+    const UpwardInterval second[] = {c * d, c + d, c - d, square(c), reciprocal(c), scaled(k, c), -c};
+    for (int op = 0; op < 7; ++op) {
+      ASSERT_TRUE(same(lane_of(results[op], 0), first[op])) << trial << " op " << op;
+      ASSERT_TRUE(same(lane_of(results[op], 1), second[op])) << trial << " op " << op;
+    }
+  }
+  std::normal_distribution<double> g;
+  for (int trial = 0; trial < 2000; ++trial) {
+    Eigen::Matrix<double, Eigen::Dynamic, 9> C(3 + trial % 7, 9);
+    for (int i = 0; i < C.rows(); ++i)
+      for (int j = 0; j < 9; ++j) C(i, j) = trial % 3 == 0 && j % 4 == 1 ? 0.0 : g(rng);
+    std::array<UpwardJet, 3> x0, x1;
+    std::array<UpwardJetT<__m128d>, 3> x;
+    for (int i = 0; i < 3; ++i) {
+      UpwardInterval parts0[6], parts1[6];
+      for (int p = 0; p < 6; ++p) {
+        parts0[p] = random_interval(rng);
+        parts1[p] = random_interval(rng);
+      }
+      x0[i] = {parts0[0], parts0[1], parts0[2], parts0[3], parts0[4], parts0[5]};
+      x1[i] = {parts1[0], parts1[1], parts1[2], parts1[3], parts1[4], parts1[5]};
+      x[i] = {pair_of(parts0[0], parts1[0]), pair_of(parts0[1], parts1[1]), pair_of(parts0[2], parts1[2]),
+              pair_of(parts0[3], parts1[3]), pair_of(parts0[4], parts1[4]), pair_of(parts0[5], parts1[5])};
+    }
+    const UpwardJetT<__m128d> both = norm2_jet(C, x);
+    const UpwardJet f0 = norm2_jet(C, x0), f1 = norm2_jet(C, x1);
+    const UpwardJet l0 = lane_of(both, 0), l1 = lane_of(both, 1);
+    const UpwardInterval UpwardJet::*parts[] = {&UpwardJet::v,  &UpwardJet::du, &UpwardJet::dt,
+                                                &UpwardJet::uu, &UpwardJet::ut, &UpwardJet::tt};
+    for (auto part : parts) {
+      ASSERT_TRUE(same(l0.*part, f0.*part)) << trial;
+      ASSERT_TRUE(same(l1.*part, f1.*part)) << trial;
+    }
+  }
 }
 
 // |C h(x)|^2 on point jets is the value at x: the enclosure holds the value computed in long double
