@@ -23,10 +23,10 @@ struct Axis6Model : MonomialModel<Axis6Model> {
   static constexpr std::string_view six = "the six axis directions +-x, +-y, +-z, each N/6 times";
   static constexpr std::string_view only = "exactly N = 6k, by the six axis directions k times each (proven)";
   static constexpr std::array<ModelLimit, 4> limits = {{
-      {"D", 729.0, "729", "1/3", "0", "", 0.0, six, only},
-      {"A", 18.0, "18", "1/3", "0", "", 0.0, six, only},
-      {"E", 3.0, "3", "1/3", "0", "", 0.0, six, only},
-      {"S", 3.0, "3", "1/3", "0", "", 0.0, six, only},
+      {"D", 729.0, "729", "1/3", "0", "", 0.0, six, only, 1.0},
+      {"A", 18.0, "18", "1/3", "0", "", 0.0, six, only, 1.0},
+      {"E", 3.0, "3", "1/3", "0", "", 0.0, six, only, 1.0},
+      {"S", 3.0, "3", "1/3", "0", "", 0.0, six, only, 1.0},
   }};
 };
 static_assert(CalibrationModel<Axis6Model>);

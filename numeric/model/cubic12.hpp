@@ -39,16 +39,16 @@ struct Cubic12Model : MonomialModel<Cubic12Model> {
   static constexpr std::array<ModelLimit, 4> limits = {{
       {"D", 4093910627611872177.0 / 12800000.0, "4093910627611872177/12800000", "7/33", "2/33", "17/99", 2.0 / 33,
        "weight 5/11 on the 6 axis directions, 6/11 on the 8 cube diagonals",
-       "exactly N = 132k (5/66 and 3/44 of N per direction): none below 132 (proven)"},
+       "exactly N = 132k (5/66 and 3/44 of N per direction): none below 132 (proven)", 5.0 / 11},
       {"A", 186.72114910328065, "99+9*sqrt(95)", "(3*sqrt(95)-6)/117", "(45-3*sqrt(95))/234", "(4*sqrt(95)-21)/117",
        0.06734879045116712, "weight (3 sqrt 95 - 19)/26 on the 6 axis directions, the rest on the 8 cube diagonals",
-       "no finite N: the optimal weights are irrational (proven)"},
+       "no finite N: the optimal weights are irrational (proven)", 0.3938608859394958 /* (3 sqrt 95 - 19)/26 */},
       {"E", 39.0, "39", "8/39", "5/78", "19/117", 5.0 / 78,
        "weight 11/26 on the 6 axis directions, 15/26 on the 8 cube diagonals",
-       "exactly N = 624k (44 per axis direction, 45 per cube diagonal, times k) (proven)"},
+       "exactly N = 624k (44 per axis direction, 45 per cube diagonal, times k) (proven)", 11.0 / 26},
       {"S", 27.0, "27", "2/9", "1/18", "5/27", 1.0 / 18,
        "weight 1/2 on the 6 axis directions, 1/2 on the 8 cube diagonals",
-       "exactly N = 48k (4 per axis direction, 3 per cube diagonal, times k) (proven)"},
+       "exactly N = 48k (4 per axis direction, 3 per cube diagonal, times k) (proven)", 0.5},
   }};
 };
 static_assert(CalibrationModel<Cubic12Model>);

@@ -7,6 +7,8 @@
 
 namespace scalcal {
 
+inline constexpr double kNotDetermined = std::numeric_limits<double>::quiet_NaN();
+
 struct ModelLimit {
   std::string_view criterion;  // "D", "A", "E", "S"
   double value;                // the infimum, normalised (D by N^P)
@@ -19,8 +21,10 @@ struct ModelLimit {
   double b;                   // E[x^2 y^2] as a number (NaN: not determined)
   std::string_view measure;   // the optimal measure in words
   std::string_view attained;  // which N attain it, and how sure that is
+  // Where the optimal measure is weight w on the 6 axis directions and 1 - w on the 8 cube diagonals
+  // (evenly within each), w; NaN where it has no such form. The multistart rounds it to N positions
+  // for a start (synthesis/rounded_start.hpp).
+  double axis_weight = kNotDetermined;
 };
-
-inline constexpr double kNotDetermined = std::numeric_limits<double>::quiet_NaN();
 
 }  // namespace scalcal

@@ -1,6 +1,7 @@
 // The multistart for one criterion and model: start k is the uniform random program of seed
 // start_seed(seed, k) (for a registered model other than the paper's and a smooth criterion, every
-// second one exchanged onto a grid first), optimised by the local solver the criterion's form calls for, in
+// second one exchanged onto a grid first; for S under a model that states its optimal measure, start 0 from
+// N = 48 is that measure rounded, run alone first), optimised by the local solver the criterion's form calls for, in
 // threads (Newton, L-BFGS) or worker processes (Ipopt); the best program (lowest value, then lowest start index) never
 // depends on scheduling. synthesize_with<Model> is compiled once per model (the criterion is a CriterionOps), in the
 // model's synthesis unit; synthesize<C, Model> is its name for one criterion type.
@@ -20,6 +21,7 @@
 #include "numeric/synthesis/max_diagonal_newton.hpp"
 #include "numeric/synthesis/multistart.hpp"
 #include "numeric/synthesis/newton_local.hpp"
+#include "numeric/synthesis/rounded_start.hpp"
 #include "numeric/synthesis/seeds.hpp"
 #include "numeric/synthesis/smooth_optimum_check.hpp"
 #include "numeric/synthesis/stopping_rule.hpp"
@@ -130,6 +132,21 @@ void confirm_best(const CriterionOps<Model>& criterion, int positions, Synthesis
   }
 }
 
+// A start this close to the model's proven limit ends the run by itself (no program can be better by
+// more): the rounded optimal measure's polish (rounded_start.hpp) usually is.
+inline constexpr double kNearLimit = 1e-3;
+
+// The rounded optimal measure as start 0 of a max-diagonal criterion under a model other than the paper's
+// that states one, from the lifted form's N (random starts there end at distinct optima, each far
+// above it; the documented sweeps below that N keep their random starts), unless --from gives start 0.
+template <class Model>
+std::optional<Program> rounded_start(const CriterionOps<Model>& criterion, const SynthesisOptions& options) {
+  if (kModelIndex<Model> <= 0 || criterion.form != CriterionForm::MaxDiagonal || !criterion.kind ||
+      options.positions < kLiftedFromPositions || options.first_start)
+    return std::nullopt;
+  return rounded_limit_measure(ModelKind(kModelIndex<Model>), criterion_name(*criterion.kind), options.positions);
+}
+
 // Whether the starts call Ipopt (then they run in worker processes, else in threads).
 template <class Model>
 bool starts_need_ipopt(const CriterionOps<Model>& criterion, LocalSolver requested, int positions) {
@@ -152,8 +169,10 @@ SynthesisResult synthesize_with(const CriterionOps<Model>& criterion, const Synt
   const int cap = forced ? options.starts : criterion.default_starts(options.positions);
   const StoppingRule rule;
   const int workers = thread_count(options.threads);
+  const std::optional<Program> rounded = rounded_start<Model>(criterion, options);
   const auto start_at = [&](int k) {
     if (k == 0 && options.first_start) return local_start<Model>(criterion, *options.first_start, options.local);
+    if (k == 0 && rounded) return local_start<Model>(criterion, *rounded, options.local);
     Program start = Program::random(options.positions, start_seed(options.seed, static_cast<std::uint64_t>(k)));
     // The paper's model keeps its random starts (its results are documented); every other
     // registered model exchanges every second start onto a grid first (exchange_start.hpp) for
@@ -167,7 +186,24 @@ SynthesisResult synthesize_with(const CriterionOps<Model>& criterion, const Synt
   const bool in_processes = starts_need_ipopt<Model>(criterion, options.local, options.positions);
   std::vector<LocalResult> results;
   std::string stopping = forced ? "forced " + std::to_string(cap) : "cap " + std::to_string(cap);
-  while (static_cast<int>(results.size()) < cap) {
+  bool near_limit = false;
+  if (rounded && !forced) {
+    // The rounded start alone first: within kNearLimit of the proven limit, it ends the run.
+    std::function<void(int, int)> progress;
+    if (options.progress) progress = [&](int done, int) { options.progress(done, cap); };
+    results = run_in_workers(
+        1, 1, options.positions, [&](int) { return start_at(0); }, progress);
+    const std::optional<ModelLimit> limit =
+        stated_limit(ModelKind(kModelIndex<Model>), criterion_name(*criterion.kind));
+    if (limit && results[0].value <= limit->value * (1 + kNearLimit)) {
+      near_limit = true;
+      char text[120];
+      std::snprintf(text, sizeof text, "the rounded optimal measure is within %.2g %% of the proven limit",
+                    100 * (results[0].value / limit->value - 1));
+      stopping = text;
+    }
+  }
+  while (!near_limit && static_cast<int>(results.size()) < cap) {
     const int offset = static_cast<int>(results.size());
     int batch = forced ? cap : std::min(rule.batch, cap - offset);
     // No batch ends the run before the criterion's minimum number of starts, so the starts up to it

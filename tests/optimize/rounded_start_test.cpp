@@ -1,0 +1,103 @@
+// The rounded optimal measure as a start (numeric/synthesis/rounded_start.hpp): its counts per
+// direction against the proofs' (proofs/cubic12_limits.md: S is attained by 4 positions per axis
+// direction and 3 per cube diagonal, times k; proofs/axis6_limits.md: k per axis direction), and the
+// multistart that begins from it against the proven limit S >= 27.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+
+#include "numeric/criteria/model_evaluation.hpp"
+#include "numeric/model/cubic12.hpp"
+#include "numeric/model/registry.hpp"
+#include "numeric/synthesis/rounded_start.hpp"
+#include "numeric/synthesis/synthesize.hpp"
+
+namespace scalcal {
+namespace {
+
+const ModelKind kCubic12(kModelIndex<Cubic12Model>), kAxis6(kModelIndex<Axis6Model>), kBias3(kModelIndex<Bias3Model>);
+
+// How many positions lie on the axes and on the cube diagonals, and the most on one direction.
+struct Counts {
+  int axes = 0, diagonals = 0, other = 0;
+  std::map<std::array<int, 3>, int> per_direction;
+};
+
+Counts counts(const Program& p) {
+  Counts c;
+  for (const Vec3& x : p.positions) {
+    const int nonzero = (std::abs(x(0)) > 1e-12) + (std::abs(x(1)) > 1e-12) + (std::abs(x(2)) > 1e-12);
+    (nonzero == 1 ? c.axes : nonzero == 3 ? c.diagonals : c.other)++;
+    const auto sign = [](double v) { return v > 1e-12 ? 1 : v < -1e-12 ? -1 : 0; };
+    c.per_direction[{sign(x(0)), sign(x(1)), sign(x(2))}]++;
+    EXPECT_NEAR(x.norm(), 1.0, 1e-15);
+  }
+  return c;
+}
+
+TEST(RoundedStart, Cubic12AtFortyEightTimesKIsTheProofsProgram) {
+  for (int k : {1, 2, 3}) {
+    const auto p = rounded_limit_measure(kCubic12, "S", 48 * k);
+    ASSERT_TRUE(p);
+    ASSERT_EQ(p->size(), 48 * k);
+    const Counts c = counts(*p);
+    EXPECT_EQ(c.axes, 24 * k);
+    EXPECT_EQ(c.diagonals, 24 * k);
+    EXPECT_EQ(c.other, 0);
+    for (const auto& [direction, n] : c.per_direction)
+      EXPECT_EQ(n, std::abs(direction[0]) + std::abs(direction[1]) + std::abs(direction[2]) == 1 ? 4 * k : 3 * k);
+    EXPECT_NEAR(evaluate(kCubic12, *p).values[CriterionKind::S.index()], 27.0, 1e-9);
+  }
+}
+
+// N = 132: 11 per axis direction; 66 on the diagonals, 8 each and the 2 left over on one antipodal pair.
+TEST(RoundedStart, TheRemainderGoesToAnAntipodalPair) {
+  const auto p = rounded_limit_measure(kCubic12, "S", 132);
+  ASSERT_TRUE(p);
+  const Counts c = counts(*p);
+  EXPECT_EQ(c.axes, 66);
+  int nines = 0;
+  for (const auto& [d, n] : c.per_direction) {
+    if (std::abs(d[0]) + std::abs(d[1]) + std::abs(d[2]) == 1) EXPECT_EQ(n, 11);
+    if (std::abs(d[0]) + std::abs(d[1]) + std::abs(d[2]) == 3) {
+      EXPECT_TRUE(n == 8 || n == 9);
+      if (n == 9) {
+        ++nines;
+        EXPECT_EQ(c.per_direction.at({-d[0], -d[1], -d[2]}), 9);
+      }
+    }
+  }
+  EXPECT_EQ(nines, 2);
+  // An odd N keeps every count but one pair's symmetric.
+  const auto odd = rounded_limit_measure(kCubic12, "S", 133);
+  ASSERT_TRUE(odd);
+  EXPECT_EQ(odd->size(), 133);
+}
+
+TEST(RoundedStart, OnlyWhereTheModelStatesSuchAMeasure) {
+  const auto axes = rounded_limit_measure(kAxis6, "D", 60);
+  ASSERT_TRUE(axes);
+  const Counts c = counts(*axes);
+  EXPECT_EQ(c.axes, 60);
+  for (const auto& entry : c.per_direction) EXPECT_EQ(entry.second, 10);
+  EXPECT_FALSE(rounded_limit_measure(ModelKind::paper9, "S", 60));  // the paper's: no table
+  EXPECT_FALSE(rounded_limit_measure(kBias3, "S", 60));             // any tight frame: no single measure
+}
+
+// cubic12's S at N = 132: the run ends after the rounded start, within 0.1 % of the proven limit 27,
+// below the 27.0779 that 152 random starts reached before it existed.
+TEST(RoundedStart, Cubic12SAt132EndsNearTheLimit) {
+  SynthesisOptions o;
+  o.positions = 132;
+  o.threads = 1;
+  const SynthesisResult r = (synthesize<SCriterion, Cubic12Model>)(o);
+  EXPECT_GE(r.value, 27.0 * (1 - 1e-12));
+  EXPECT_LE(r.value, 27.0 * (1 + kNearLimit));
+  EXPECT_EQ(r.starts, 1);
+  EXPECT_NE(r.stopping.find("proven limit"), std::string::npos) << r.stopping;
+  EXPECT_NEAR(evaluate(kCubic12, r.program).values[CriterionKind::S.index()], r.value, 1e-9 * r.value);
+}
+
+}  // namespace
+}  // namespace scalcal
