@@ -186,6 +186,12 @@ SynthesisResult synthesize_with(const CriterionOps<Model>& criterion, const Synt
   const bool in_processes = starts_need_ipopt<Model>(criterion, options.local, options.positions);
   std::vector<LocalResult> results;
   std::string stopping = forced ? "forced " + std::to_string(cap) : "cap " + std::to_string(cap);
+  // A model other than the paper's states its proven limit (the paper's runs keep their documented
+  // counts): no start can go below it, so one that reaches it ends the run.
+  std::optional<double> proven_limit;
+  if (kModelIndex < Model >> 0 && criterion.kind)
+    if (const auto l = stated_limit(ModelKind(kModelIndex<Model>), criterion_name(*criterion.kind)))
+      proven_limit = l->value;
   bool near_limit = false;
   if (rounded && !forced) {
     // The rounded start alone first: within kNearLimit of the proven limit, it ends the run.
@@ -193,13 +199,11 @@ SynthesisResult synthesize_with(const CriterionOps<Model>& criterion, const Synt
     if (options.progress) progress = [&](int done, int) { options.progress(done, cap); };
     results = run_in_workers(
         1, 1, options.positions, [&](int) { return start_at(0); }, progress);
-    const std::optional<ModelLimit> limit =
-        stated_limit(ModelKind(kModelIndex<Model>), criterion_name(*criterion.kind));
-    if (limit && results[0].value <= limit->value * (1 + kNearLimit)) {
+    if (proven_limit && results[0].value <= *proven_limit * (1 + kNearLimit)) {
       near_limit = true;
       char text[120];
       std::snprintf(text, sizeof text, "the rounded optimal measure is within %.2g %% of the proven limit",
-                    100 * (results[0].value / limit->value - 1));
+                    100 * (results[0].value / *proven_limit - 1));
       stopping = text;
     }
   }
@@ -217,6 +221,12 @@ SynthesisResult synthesize_with(const CriterionOps<Model>& criterion, const Synt
                                               ? run_in_workers(batch, workers, options.positions, task, progress)
                                               : run_in_threads(batch, workers, task, progress);
     results.insert(results.end(), done.begin(), done.end());
+    const bool enough = static_cast<int>(results.size()) >= criterion.minimum_starts(options.positions);
+    if (!forced && proven_limit && enough && static_cast<int>(results.size()) < cap &&
+        best_of_starts(results).value <= *proven_limit * (1 + kHitTolerance)) {
+      stopping = "a start reached the proven limit";
+      break;
+    }
     if (!forced && static_cast<int>(results.size()) < cap &&
         static_cast<int>(results.size()) >= criterion.minimum_starts(options.positions) && rule.satisfied(results)) {
       stopping = rule.description();

@@ -8,6 +8,7 @@
 #include <map>
 
 #include "numeric/criteria/model_evaluation.hpp"
+#include "numeric/model/axis6.hpp"
 #include "numeric/model/cubic12.hpp"
 #include "numeric/model/registry.hpp"
 #include "numeric/synthesis/rounded_start.hpp"
@@ -97,6 +98,18 @@ TEST(RoundedStart, Cubic12SAt132EndsNearTheLimit) {
   EXPECT_EQ(r.starts, 1);
   EXPECT_NE(r.stopping.find("proven limit"), std::string::npos) << r.stopping;
   EXPECT_NEAR(evaluate(kCubic12, r.program).values[CriterionKind::S.index()], r.value, 1e-9 * r.value);
+}
+
+// A start that reaches a model's proven limit ends the run: axis6's E limit is 3, attained by the axes
+// at N = 6k (proofs/axis6_limits.md); the first batch of 8 random starts reaches it at N = 60.
+TEST(RoundedStart, ReachingTheProvenLimitEndsTheRun) {
+  SynthesisOptions o;
+  o.positions = 60;
+  o.threads = 2;
+  const SynthesisResult r = (synthesize<ECriterion, Axis6Model>)(o);
+  EXPECT_NEAR(r.value, 3.0, 3e-8);
+  EXPECT_EQ(r.starts, 8);
+  EXPECT_EQ(r.stopping, "a start reached the proven limit");
 }
 
 }  // namespace
