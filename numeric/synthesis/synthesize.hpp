@@ -58,7 +58,8 @@ LocalResult local_start(const CriterionOps<Model>& criterion, const Program& sta
     // experiments/docs/sweep.md. (Tried from N = 48 on: starts exchanged for A, D or S, or their A or
     // D optima, were consistent and fast but ended above the random starts' best, cubic12's S at
     // N = 132 at 28.3, 27.225 or 27.09 against 27.08; E from the A optimum of an A-exchanged program
-    // reached axis6's limit at N = 150 in 0.4 instead of 81 s but cubic12's E at 39.116 against 39.082.)
+    // reached axis6's limit at N = 150 in 0.4 instead of 81 s but cubic12's E at 39.116 against 39.082.
+    // The model's optimal measure rounded to N does better where the model states one: rounded_start.)
     return ipopt_local<Model>(criterion, start);
   }
   // The nonsmooth forms converge poorly from a random program (E at N = 9: random starts ended
