@@ -27,16 +27,20 @@ std::optional<Program> rounded_limit_measure(ModelKind model, std::string_view c
   for (std::size_t i = 0; i < pairs.size(); ++i)
     if (weight[i] > 0) total += m[i] = std::max(0, static_cast<int>(std::ceil((M - 0.5 * l) * weight[i])));
   while (total != M) {
+    const bool up = total < M;
     std::size_t best = pairs.size();
+    double best_key = 0;
     for (std::size_t i = 0; i < pairs.size(); ++i) {
-      if (!(weight[i] > 0) || (total > M && m[i] == 0)) continue;
-      const double key = total < M ? m[i] / weight[i] : (m[i] - 1) / weight[i];
-      if (best == pairs.size() || (total < M ? key < m[best] / weight[best] : key > (m[best] - 1) / weight[best]))
+      if (!(weight[i] > 0) || (!up && m[i] == 0)) continue;
+      const double key = (up ? m[i] : m[i] - 1) / weight[i];
+      if (best == pairs.size() || (up ? key < best_key : key > best_key)) {
         best = i;
+        best_key = key;
+      }
     }
     if (best == pairs.size()) return std::nullopt;
-    m[best] += total < M ? 1 : -1;
-    total += total < M ? 1 : -1;
+    m[best] += up ? 1 : -1;
+    total += up ? 1 : -1;
   }
   Program out;
   for (std::size_t i = 0; i < pairs.size(); ++i)

@@ -228,8 +228,7 @@ SynthesisResult synthesize_with(const CriterionOps<Model>& criterion, const Synt
       stopping = "a start reached the proven limit";
       break;
     }
-    if (!forced && static_cast<int>(results.size()) < cap &&
-        static_cast<int>(results.size()) >= criterion.minimum_starts(options.positions) && rule.satisfied(results)) {
+    if (!forced && static_cast<int>(results.size()) < cap && enough && rule.satisfied(results)) {
       stopping = rule.description();
       break;
     }
