@@ -31,7 +31,8 @@ AugmentedProgram augment_with(const CriterionOps<Model>& criterion, const Progra
       *criterion.kind, model, region, given.positions, ex, candidates, options,
       [&criterion](const Program& p) { return criterion_value(criterion, p); },
       [&criterion](const Program& start, const PositionBounds& bounds) {
-        return ipopt_local<Model>(criterion, start, {}, &bounds);
+        return ipopt_local<Model>(criterion, start, zone_polish_options(criterion.form == CriterionForm::Smooth),
+                                  &bounds);
       });
   out.program = given;
   out.added = best.added;

@@ -41,7 +41,7 @@ LocalResult region_start(const Region& region, const std::vector<Vec3>& candidat
   out.summary.message = "exchange";
   if (region.zones.empty() || !std::isfinite(out.value)) return out;
   const PositionBounds bounds = position_bounds(region, ex.positions);
-  LocalResult polished = optimize_with_ipopt<C>(out.program, {}, &bounds);
+  LocalResult polished = optimize_with_ipopt<C>(out.program, zone_polish_options(SmoothCriterion<C>), &bounds);
   for (std::size_t i = 0; i < bounds.size(); ++i) {
     Vec3& x = polished.program.positions[i];
     if (bounds[i].kind == PositionBound::Kind::Fixed) x = ex.positions[i];

@@ -9,7 +9,9 @@
 #include <functional>
 #include <string>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <memory>
 #include <utility>
@@ -29,8 +31,9 @@ using Ipopt::Number;
 
 class ProgramNlp : public Ipopt::TNLP {
  public:
-  ProgramNlp(const SmoothProblem& problem, std::vector<double> start, const PositionBounds* bounds)
-      : p_(problem), x0_(std::move(start)), n_(static_cast<int>(x0_.size())) {
+  ProgramNlp(const SmoothProblem& problem, std::vector<double> start, const PositionBounds* bounds,
+             double settle_tolerance)
+      : p_(problem), x0_(std::move(start)), n_(static_cast<int>(x0_.size())), settle_tolerance_(settle_tolerance) {
     const int coordinates = 3 * p_.positions();
     for (int r = 0; r < n_; ++r)
       for (int c = 0; c <= r; ++c)
@@ -44,6 +47,10 @@ class ProgramNlp : public Ipopt::TNLP {
   }
 
   const std::vector<double>& solution() const { return xs_; }
+  // Whether the run ended by the settle rule (LocalOptions::settle_tolerance), and Ipopt's unscaled
+  // dual infeasibility at the last iteration.
+  bool settled() const { return settled_ >= kSettledIterations; }
+  double dual_infeasibility() const { return dual_infeasibility_; }
 
   bool get_nlp_info(Index& n, Index& m, Index& nnz_jac, Index& nnz_h, IndexStyleEnum& style) override {
     n = n_;
@@ -175,6 +182,18 @@ class ProgramNlp : public Ipopt::TNLP {
     return true;
   }
 
+  bool intermediate_callback(Ipopt::AlgorithmMode mode, Index, Number objective, Number primal_infeasibility,
+                             Number dual_infeasibility, Number, Number, Number, Number, Number, Index,
+                             const Ipopt::IpoptData*, Ipopt::IpoptCalculatedQuantities*) override {
+    if (settle_tolerance_ <= 0) return true;
+    const bool still = mode == Ipopt::RegularMode && primal_infeasibility <= 1e-10 && dual_infeasibility <= 1e-6 &&
+                       std::abs(objective - last_objective_) <= settle_tolerance_ * std::max(1.0, std::abs(objective));
+    settled_ = still ? settled_ + 1 : 0;
+    last_objective_ = objective;
+    dual_infeasibility_ = dual_infeasibility;
+    return !settled();
+  }
+
   void finalize_solution(Ipopt::SolverReturn, Index n, const Number* x, const Number*, const Number*, Index,
                          const Number*, const Number*, Number, const Ipopt::IpoptData*,
                          Ipopt::IpoptCalculatedQuantities*) override {
@@ -192,6 +211,11 @@ class ProgramNlp : public Ipopt::TNLP {
   std::vector<double> x0_;
   std::vector<double> xs_;
   int n_;
+  static constexpr int kSettledIterations = 3;
+  double settle_tolerance_;
+  double last_objective_ = std::numeric_limits<double>::infinity();
+  int settled_ = 0;
+  double dual_infeasibility_ = 0;
   std::vector<ZoneRow> zones_;  // linear rows: their Hessian is zero
   std::vector<int> fixed_;
   // The entries the problem says can be nonzero (with the norm constraints' diagonal), in Ipopt's
@@ -230,7 +254,7 @@ LocalResult run_ipopt(const SmoothProblem& problem, const Program& start, const 
     out.summary.message = "rank-deficient start: no local model";
     return out;
   }
-  Ipopt::SmartPtr<ProgramNlp> nlp = new ProgramNlp(problem, problem.start(start), bounds);
+  Ipopt::SmartPtr<ProgramNlp> nlp = new ProgramNlp(problem, problem.start(start), bounds, options.settle_tolerance);
   const Ipopt::SmartPtr<Ipopt::IpoptApplication> app = ipopt_application();
   if (Ipopt::IsNull(app)) {
     out.summary.message = "Ipopt could not be initialised";
@@ -242,9 +266,17 @@ LocalResult run_ipopt(const SmoothProblem& problem, const Program& start, const 
                                               : problem.long_runs()      ? 300
                                                                          : 200);
   const Ipopt::ApplicationReturnStatus status = app->OptimizeTNLP(Ipopt::SmartPtr<Ipopt::TNLP>(GetRawPtr(nlp)));
-  const bool converged = status == Ipopt::Solve_Succeeded || status == Ipopt::Solved_To_Acceptable_Level;
+  const bool settled = status == Ipopt::User_Requested_Stop && nlp->settled();
+  const bool converged = status == Ipopt::Solve_Succeeded || status == Ipopt::Solved_To_Acceptable_Level || settled;
   if (Ipopt::IsValid(app->Statistics())) out.summary.iterations = app->Statistics()->IterationCount();
-  out.summary.message = "Ipopt status " + std::to_string(static_cast<int>(status));
+  if (settled) {
+    char text[96];
+    std::snprintf(text, sizeof text, "Ipopt: the objective settled (dual infeasibility %.2g)",
+                  nlp->dual_infeasibility());
+    out.summary.message = text;
+  } else {
+    out.summary.message = "Ipopt status " + std::to_string(static_cast<int>(status));
+  }
   const std::vector<double>& x = nlp->solution();
   if (x.empty()) return out;
   Program result;
