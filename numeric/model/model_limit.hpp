@@ -25,6 +25,10 @@ struct ModelLimit {
   // (evenly within each), w; NaN where it has no such form. The multistart rounds it to N positions
   // for a start (synthesis/rounded_start.hpp).
   double axis_weight = kNotDetermined;
+  // Whether the multistart's starts after the first are randomised roundings of that measure
+  // (synthesis/rounded_start.hpp) instead of random programs: set where they were measured to find
+  // better optima at a fraction of a random start's cost.
+  bool rounding_starts = false;
 };
 
 }  // namespace scalcal
