@@ -18,14 +18,14 @@ namespace scalcal {
 // or nothing where the model states no such measure.
 std::optional<Program> rounded_limit_measure(ModelKind model, std::string_view criterion, int positions);
 
-// A randomised rounding of the same measure over its 14 directions one by one (not in antipodal pairs),
-// for a further start where the model asks for them (ModelLimit::rounding_starts), else nothing. Each
-// direction gets floor(N w_i) or one more, by systematic sampling in a random order from a random offset,
-// and each position a jitter of up to 5e-4 per coordinate, so that coincident positions can part. The
-// same seed gives the same program.
-// Whether the model asks for randomised roundings as further starts of `criterion`.
+// Whether the model asks for randomised roundings as further starts of `criterion`
+// (ModelLimit::rounding_starts, with a stated axis weight).
 bool asks_for_rounding_starts(ModelKind model, std::string_view criterion);
 
+// A randomised rounding of the same measure over its 14 directions one by one (not in antipodal pairs),
+// for a further start where the model asks for them, else nothing. Each direction gets floor(N w_i) or
+// one more, by systematic sampling in a random order from a random offset, and each position a jitter of
+// up to 5e-4 per coordinate, so that coincident positions can part. The same seed gives the same program.
 std::optional<Program> randomised_rounding(ModelKind model, std::string_view criterion, int positions,
                                            std::uint64_t seed);
 
