@@ -7,11 +7,11 @@ namespace scalcal {
 constexpr int grown_starts(int base, int positions) { return positions <= 12 ? base : base + (positions - 12); }
 
 // The starts that always run before the adaptive rule (synthesis/stopping_rule.hpp) may end a
-// multistart: C::minimum_starts(N) where the criterion knows a deceptive N, else none.
-template <class C>
+// multistart under Model: C::minimum_starts<Model>(N) where the criterion knows a deceptive N, else none.
+template <class C, class Model>
 constexpr int minimum_starts(int positions) {
-  if constexpr (requires { C::minimum_starts(positions); })
-    return C::minimum_starts(positions);
+  if constexpr (requires { C::template minimum_starts<Model>(positions); })
+    return C::template minimum_starts<Model>(positions);
   else
     return 0;
 }

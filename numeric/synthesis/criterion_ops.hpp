@@ -62,7 +62,7 @@ CriterionOps<Model> criterion_ops() {
   ops.symmetry = C::symmetry;
   ops.kind = detail::registered_kind<C>();
   ops.default_starts = [](int n) { return C::default_starts(n); };
-  ops.minimum_starts = [](int n) { return minimum_starts<C>(n); };
+  ops.minimum_starts = [](int n) { return minimum_starts<C, Model>(n); };
   ops.value = [](const InverseInformation<double, P>& k, double n) { return C::template value<Model>(k, n); };
   if constexpr (SmoothCriterion<C>) {
     ops.form = CriterionForm::Smooth;

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "numeric/criteria/evaluation.hpp"
+#include "numeric/criteria/model_evaluation.hpp"
 #include "numeric/synthesis/multistart.hpp"
 #include "numeric/synthesis/newton_local.hpp"
 #include "numeric/synthesis/stopping_rule.hpp"
@@ -58,6 +59,24 @@ TEST(AdaptiveStarts, RunsToTheCapWhereStartsDisagree) {
   EXPECT_EQ(r.starts, 19);
   EXPECT_EQ(r.stopping, "cap 19");
   EXPECT_NEAR(r.value, 15438582.31, 0.01);
+}
+
+// E's forced starts follow the model's trap: under the paper's model at N = 10 every start reaches
+// the optimum, so the first batch ends the run; under axis6 at N = 10 the first 8 starts all end at
+// E = 5.0, and only the forced 256 find the lower optimum (10 of them in the run that found this).
+TEST(AdaptiveStarts, EForcesItsStartsOnlyWhereTheModelHasATrap) {
+  SynthesisOptions o;
+  o.positions = 10;
+  o.criterion = CriterionKind::E;
+  const SynthesisResult paper = synthesize(o);
+  EXPECT_EQ(paper.starts, 8);
+  EXPECT_EQ(paper.stopping, "8 consecutive hits");
+  EXPECT_GE(paper.value, 12.0);  // the proven limit (proofs/aes_limits.md)
+  o.model = *parse_model("axis6");
+  const SynthesisResult axis6 = synthesize(o);
+  EXPECT_EQ(axis6.starts, 256);
+  EXPECT_LT(axis6.value, 4.9);
+  EXPECT_NEAR(evaluate(o.model, axis6.program).value(CriterionKind::E), axis6.value, 1e-9 * axis6.value);
 }
 
 TEST(SphereLbfgs, ReachesTheDAndALimitsAtLargeN) {
