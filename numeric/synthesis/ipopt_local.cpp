@@ -5,6 +5,7 @@
 #include "numeric/synthesis/ipopt_local.hpp"
 
 #include "numeric/synthesis/ipopt_application.hpp"
+#include "numeric/synthesis/solver_bookkeeping.hpp"
 
 #include <functional>
 #include <string>
@@ -235,6 +236,8 @@ Ipopt::SmartPtr<Ipopt::IpoptApplication> ipopt_application() {
   // D optimisation at N = 18. (Sequential MUMPS is not thread-safe: synthesize() forks instead.)
   thread_local Ipopt::SmartPtr<Ipopt::IpoptApplication> app;
   if (Ipopt::IsNull(app)) {
+    // Links the replacements of the solvers' unread bookkeeping into every program that runs Ipopt.
+    [[maybe_unused]] static const bool replaced = solver_bookkeeping_replaced();
     app = IpoptApplicationFactory();
     app->Options()->SetIntegerValue("print_level", 0);
     app->Options()->SetStringValue("sb", "yes");
