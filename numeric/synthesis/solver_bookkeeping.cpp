@@ -23,8 +23,8 @@
 // The Fortran module procedure's symbol (gfortran's mangling), taken by an asm label: an identifier
 // with a leading double underscore is reserved in C++.
 extern "C" __attribute__((visibility("default"), used)) void scalcal_mumps_compute_memory_save(
-    void* instance, std::int64_t* file_size, std::int64_t* structure_size) __asm__(
-    "__dmumps_save_restore_MOD_dmumps_compute_memory_save");
+    void* instance, std::int64_t* file_size,
+    std::int64_t* structure_size) __asm__("__dmumps_save_restore_MOD_dmumps_compute_memory_save");
 
 extern "C" void scalcal_mumps_compute_memory_save(void*, std::int64_t* file_size, std::int64_t* structure_size) {
   *file_size = 0;
