@@ -149,8 +149,11 @@ struct Exchanger {
       }
       if (!changed) break;
     }
-    K = inverse_or_ridge(M, ridged, det_K);
-    out.value = ridged ? kInfinity : value_of<Crit>(K, n);
+    if (stale) {  // a swap in the last pass allowed, or no pass at all
+      K = inverse_or_ridge(M, ridged, det_K);
+      current = value_of<Crit>(K, n);
+    }
+    out.value = ridged ? kInfinity : current;
     out.positions = std::move(positions);
     return out;
   }
