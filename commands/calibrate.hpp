@@ -12,12 +12,17 @@
 #include "commands/progress.hpp"
 #include "commands/values.hpp"
 #include "commands/warning.hpp"
+#include "numeric/calibration/adaptive_detection.hpp"
 #include "numeric/calibration/any_units.hpp"
+#include "numeric/calibration/instrument.hpp"
+#include "numeric/calibration/log_motion.hpp"
 #include "numeric/calibration/outlier_samples.hpp"
 #include "numeric/calibration/raw_log.hpp"
 #include "numeric/calibration/static_intervals.hpp"
+#include "numeric/calibration/tumbling.hpp"
 #include "numeric/criteria/model_evaluation.hpp"
 #include "numeric/criteria/registry.hpp"
+#include "numeric/export/export_format.hpp"
 #include "numeric/model/registry.hpp"
 
 namespace scalcal::commands {
@@ -32,6 +37,7 @@ struct CalibrateRequest {
   std::string format = "auto";      // of the file: auto, csv or text
   double rate = 0;                  // Hz: a raw log whose row k is at k / rate (0: its time column)
   StaticIntervalOptions intervals;  // for a raw log
+  bool intervals_given = false;     // --window, --threshold-factor, --min-interval or --still given: no choosing
   std::string weights = "auto";     // auto, samples or positions
   bool keep_outliers = false;
   int suggest = 3;  // positions to suggest adding
@@ -41,7 +47,9 @@ struct CalibrateRequest {
   std::string program;                    // --program: the program the data measured (its region line is used)
   double tolerance_deg = 0.05;            // a measured position this far outside the region still counts as inside
   std::string sensor;                     // --sensor: a label for the calibration file
-  std::string raw_units, physical_units;  // --units RAW,PHYSICAL for the calibration file ("": not given)
+  std::string raw_units, physical_units;  // --units RAW,PHYSICAL for the calibration file ("": not given), checked
+  std::optional<Instrument> instrument;   // empty: from the log (a tumbling log whose modulus survives the
+                                          // motion is a magnetometer's) and the magnitude
   Warnings warnings;                      // found while reading the request
   std::optional<ModelKind> model;         // empty: auto, the richest linear model the layout carries
   std::optional<CsvTable> table;          // the data given as columns (Python), instead of reading `file`
@@ -52,7 +60,13 @@ struct CalibrationInput {
   std::vector<PositionSamples> data;
   std::optional<RawLog> log;
   IntervalDetection detection;
-  Warnings warnings;  // dropouts and saturated samples of a raw log
+  LogMotion motion;                       // a raw log's: its noise, how much it moves, the modulus in motion
+  std::optional<DetectionChoice> chosen;  // the detection chosen for this log (adaptive_detection.hpp)
+  bool every_sample = false;              // a tumbling log: every usable sample is a position
+  std::vector<int> sample_index;          // with every_sample: each position's sample in the log
+  std::optional<Instrument> instrument;   // as given or as the log shows it; empty when neither says
+  std::string instrument_reason;          // why, one sentence
+  Warnings warnings;                      // dropouts and saturated samples of a raw log
 };
 
 // One measured position as a bench engineer reads it.
@@ -80,9 +94,27 @@ struct ProgramQuality {
   std::vector<SuggestedAddition> suggested;
 };
 
+// A tumbling log's fit: what was left out, how well it covered the sphere, how correlated its
+// residuals are in time.
+struct TumblingReport {
+  std::vector<DisturbedStretch> disturbed;  // left out, in time order
+  int samples_used = 0;
+  Coverage coverage;
+  double noise = NAN;               // one sample's noise from second differences, physical units
+  double correlation_factor = NAN;  // Newey-West standard error / the independent-residual one (largest)
+  int lag = 0;                      // samples of the Newey-West window
+};
+
 struct CalibrateResult {
   std::string file;
   CalibrateRequest request;
+  std::optional<Instrument> instrument;  // the meter, as given or as the log shows it
+  std::string instrument_reason;
+  CalibrationUnits units;                  // of the calibration (calibration file's "units")
+  bool raw_counts = false;                 // the raw units are counts (said with --units)
+  std::string units_reason;                // how the units were known
+  std::optional<LogMotion> motion;         // a raw log's
+  std::optional<TumblingReport> tumbling;  // a tumbling log's fit
   bool weight_by_samples = true;
   ModelKind model = ModelKind::paper9;
   std::string model_reason;                   // why this model (auto), or "requested"
@@ -95,7 +127,9 @@ struct CalibrateResult {
   std::vector<int> outliers;  // indices into positions, |standardised| > kOutlierSigmas, worst first
   std::vector<ExcludedSample> excluded;
   std::optional<IntervalDetection> detection;  // a raw log's
+  std::optional<DetectionChoice> chosen;       // how its detection was chosen
   int rows = 0;                                // a raw log's rows
+  double sample_rate = NAN;                    // a raw log's, Hz
   ProgramQuality program;
   double t95 = NAN;  // Student's t at 97.5 % for dof (95 % two-sided), NaN for dof < 1
   Warnings warnings;

@@ -13,7 +13,10 @@ Json triple(const Vec3& v) { return Json{number_or_null(v(0)), number_or_null(v(
 Json rows_of(const Mat3& m) { return Json{triple(m.row(0)), triple(m.row(1)), triple(m.row(2))}; }
 
 const char* noise_source_name(NoiseSource s) {
-  return s == NoiseSource::scatter ? "scatter" : s == NoiseSource::residuals ? "residuals" : "none";
+  return s == NoiseSource::scatter       ? "scatter"
+         : s == NoiseSource::residuals   ? "residuals"
+         : s == NoiseSource::differences ? "differences"
+                                         : "none";
 }
 
 // The model's parameters in the reported units, as {name: value}.
@@ -48,7 +51,8 @@ Json std_from(const CalibrateResult& r) {
   for (std::size_t k = 0; k < ev.parameter_names.size(); ++k) {
     const auto i = static_cast<Eigen::Index>(k);
     const double p = a.predicted_std(i), q = a.achieved_std(i);
-    j[std::string(ev.parameter_names[k])] = std::isnan(p) && std::isnan(q)                ? Json()
+    j[std::string(ev.parameter_names[k])] = a.model_std.size()                            ? Json("model")
+                                            : std::isnan(p) && std::isnan(q)              ? Json()
                                             : std::isnan(q) || (!std::isnan(p) && p >= q) ? Json("predicted")
                                                                                           : Json("achieved");
   }
@@ -57,6 +61,7 @@ Json std_from(const CalibrateResult& r) {
 
 Json intervals_json(const CalibrateResult& r) {
   Json list = Json::array();
+  if (r.tumbling) return list;  // every sample is a position: `tumbling` says what was used
   for (const auto& p : r.positions)
     list.push_back(Json{{"start", number_or_null(p.start)},
                         {"end", number_or_null(p.end)},
@@ -106,6 +111,36 @@ Json suggested_json(const CalibrateResult& r) {
   return list;
 }
 
+Json motion_json(const CalibrateResult& r) {
+  if (!r.motion) return Json();
+  const LogMotion& m = *r.motion;
+  return Json{
+      {"moving_share", number_or_null(m.moving_share)},       {"noise", triple(m.noise)},
+      {"noise_relative", number_or_null(m.noise_relative)},   {"moving_deviation", number_or_null(m.moving_deviation)},
+      {"still_deviation", number_or_null(m.still_deviation)}, {"field_survives", m.field_survives()}};
+}
+
+Json tumbling_json(const CalibrateResult& r) {
+  if (!r.tumbling) return Json();
+  const TumblingReport& t = *r.tumbling;
+  Json disturbed = Json::array();
+  for (const auto& d : t.disturbed)
+    disturbed.push_back(Json{{"start", d.start},
+                             {"end", d.stop},
+                             {"first_line", d.first_line},
+                             {"last_line", d.last_line},
+                             {"samples", d.samples()},
+                             {"worst", d.worst}});
+  return Json{{"samples_used", t.samples_used},
+              {"disturbed", disturbed},
+              {"covered_share", t.coverage.covered_share},
+              {"largest_gap_deg", t.coverage.largest_gap_deg},
+              {"gap_centre", triple(t.coverage.gap_centre)},
+              {"noise", number_or_null(t.noise)},
+              {"correlation_factor", number_or_null(t.correlation_factor)},
+              {"newey_west_lag", t.lag}};
+}
+
 void add_log(const CalibrateResult& r, Json& j) {
   const IntervalDetection* d = r.detection ? &*r.detection : nullptr;
   j["rows"] = d ? Json(r.rows) : Json();
@@ -115,6 +150,19 @@ void add_log(const CalibrateResult& r, Json& j) {
   j["noise_floor"] = d ? number_or_null(d->still_variance) : Json();
   j["noise_floor_source"] = d ? Json(d->floor_from_still ? "still" : "quiet_windows") : Json();
   j["static_threshold"] = d ? number_or_null(d->threshold) : Json();
+  j["sample_rate"] = number_or_null(r.sample_rate);
+  if (r.chosen)
+    j["detection_choice"] =
+        Json{{"window_seconds", r.chosen->options.window_seconds},
+             {"threshold_factor", r.chosen->options.threshold_factor},
+             {"min_interval_seconds", r.chosen->options.min_seconds},
+             {"candidates_scored", r.chosen->scored},
+             {"predicted_error_ratio", number_or_null(std::sqrt(r.chosen->score / r.chosen->default_score))},
+             {"default_positions", r.chosen->default_positions}};
+  else
+    j["detection_choice"] = Json();
+  j["motion"] = motion_json(r);
+  j["tumbling"] = tumbling_json(r);
 }
 
 }  // namespace
@@ -122,7 +170,12 @@ void add_log(const CalibrateResult& r, Json& j) {
 Json to_json(const CalibrateResult& r) {
   const AnyUnitsCalibration& a = r.fit;
   const auto& e = a.estimate;
-  Json j{{"model", std::string(model_name(r.model))},
+  Json j{{"instrument", r.instrument ? Json(std::string(instrument_name(*r.instrument))) : Json()},
+         {"instrument_reason", r.instrument_reason},
+         {"positions_from", r.tumbling    ? "every sample"
+                            : r.detection ? "still intervals"
+                                          : "bench positions"},
+         {"model", std::string(model_name(r.model))},
          {"model_reason", r.model_reason},
          {"not_identifiable", r.not_identifiable},
          {"not_estimated", r.not_estimated},
@@ -139,6 +192,9 @@ Json to_json(const CalibrateResult& r) {
          {"parameters", parameters_json(r, reported_values(r))},
          {"predicted_std", parameters_json(r, a.predicted_std)},
          {"achieved_std", parameters_json(r, a.achieved_std)},
+         {"model_std", a.model_std.size() ? parameters_json(r, a.model_std) : Json()},
+         {"between_pose_std", number_or_null(a.between_std)},
+         {"within_pose_std", number_or_null(a.within_std)},
          {"std_from", std_from(r)},
          {"dof", a.dof},
          {"t95", number_or_null(r.t95)},
@@ -187,7 +243,9 @@ Json calibration_file_json(const CalibrateResult& r) {
          {"created", utc_now_iso8601()},
          {"tool", Json{{"name", "scalcal"}, {"version", tool_version()}, {"commit", tool_commit()}}},
          {"sensor", label(r.request.sensor)},
-         {"units", Json{{"raw", label(r.request.raw_units)}, {"physical", label(r.request.physical_units)}}},
+         {"instrument", r.instrument ? Json(std::string(instrument_name(*r.instrument))) : Json()},
+         {"units", units_json(r.units, r.raw_counts)},
+         {"units_reason", r.units_reason},
          {"region", r.program.region}};
   const Json result = to_json(r);
   for (const auto& [key, value] : result.items())

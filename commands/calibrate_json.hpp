@@ -21,14 +21,12 @@
 //   program (the measured directions under the model), suggested (positions to add, never twice)
 #pragma once
 #include "commands/calibrate.hpp"
+#include "commands/calibration_file.hpp"
 #include "commands/json.hpp"
 
 namespace scalcal::commands {
 
 Json to_json(const CalibrateResult& result);
-
-// The calibration file's format: 1 is the first with a version (issue 32).
-inline constexpr int kCalibrationFormatVersion = 1;
 
 // The calibration file: format_version, created (UTC, ISO 8601), tool {name, version, commit},
 // sensor (--sensor, null when not given), units {raw, physical} (--units, null when not given),

@@ -13,6 +13,45 @@ std::vector<std::string> model_choices() {
   return c;
 }
 
+Option instrument_option() {
+  Option o = choice_option("--instrument", {"accel", "mag", "gyro"},
+                           "the meter: accel (still poses only: motion adds acceleration), mag (every sample, turned "
+                           "continuously or held still), gyro",
+                           "");
+  o.fallback_text =
+      "from the log (a tumbling log whose modulus survives the motion is a magnetometer's) and --magnitude";
+  return o;
+}
+
+// --units RAW,PHYSICAL: RAW counts or a unit, PHYSICAL a unit, both of the instrument's quantity.
+void read_units(const Values& v, CalibrateRequest& q) {
+  const std::string units = v.text("--units");
+  if (units.empty()) return;
+  const auto comma = units.find(',');
+  if (comma == std::string::npos || comma == 0 || comma + 1 == units.size() ||
+      units.find(',', comma + 1) != std::string::npos)
+    throw UsageError("--units: expected RAW,PHYSICAL (for example counts,m/s^2), got '" + units + "'");
+  q.raw_units = units.substr(0, comma);
+  q.physical_units = units.substr(comma + 1);
+  const auto raw = parse_unit(q.raw_units), physical = parse_unit(q.physical_units);
+  if (!raw && !is_count_unit(q.raw_units))
+    throw UsageError("--units: RAW '" + q.raw_units + "' is not counts nor a unit scalcal knows (" + unit_names() +
+                     ")");
+  if (!physical)
+    throw UsageError("--units: PHYSICAL '" + q.physical_units + "' is not a unit scalcal knows (" + unit_names() + ")");
+  if (raw && raw->quantity != physical->quantity)
+    throw UsageError("--units: " + q.raw_units + " and " + q.physical_units + " are not units of one quantity");
+  if (q.instrument && physical->quantity != quantity_of(*q.instrument))
+    throw UsageError("--units: " + q.physical_units + " is not a unit of " +
+                     std::string(quantity_name(quantity_of(*q.instrument))) + ", which a " +
+                     std::string(instrument_noun(*q.instrument)) + " measures");
+  if (q.magnitude == "auto")
+    throw UsageError("--units: with --magnitude auto the correction maps the field to modulus 1, not to " +
+                     q.physical_units + "; give the field's strength as --magnitude to calibrate in " +
+                     q.physical_units + " (the raw units alone: --units " + q.raw_units + "," + q.physical_units +
+                     " needs a magnitude)");
+}
+
 }  // namespace
 
 const CommandTable& calibrate_table() {
@@ -85,7 +124,10 @@ const CommandTable& calibrate_table() {
        tolerance_option(),
        text_option("--sensor", "LABEL", "a label of the meter for the calibration file (--out)"),
        text_option("--units", "RAW,PHYSICAL",
-                   "the units of the raw data and of the corrected vectors, for the calibration file (--out)"),
+                   "the units of the raw data (counts, or a unit) and of the corrected vectors (a unit), for the "
+                   "calibration file and the exports (default: from --magnitude where the Earth fixes them: 9.81 is "
+                   "m/s^2, 1 is g, 50 is uT)"),
+       instrument_option(),
        out_option("also write the calibration (the JSON object, with \"converged\") to FILE, for `scalcal correct`",
                   "CAL.json"),
        json_option("print one JSON object")}};
@@ -104,6 +146,8 @@ CalibrateRequest calibrate_request(const Values& v) {
   q.intervals.window_seconds = v.number("--window");
   q.intervals.threshold_factor = v.number("--threshold-factor");
   q.intervals.min_seconds = v.number("--min-interval");
+  q.intervals_given =
+      v.given("--window") || v.given("--threshold-factor") || v.given("--min-interval") || v.given("--still");
   q.weights = v.text("--weights");
   q.keep_outliers = v.flag("--keep-outliers");
   q.suggest = static_cast<int>(v.integer("--suggest"));
@@ -115,13 +159,12 @@ CalibrateRequest calibrate_request(const Values& v) {
     q.regions = regions_for(v.list("--region"), q.program, q.warnings);
   q.tolerance_deg = v.number("--tolerance");
   q.sensor = v.text("--sensor");
-  if (const std::string units = v.text("--units"); !units.empty()) {
-    const auto comma = units.find(',');
-    if (comma == std::string::npos || comma == 0 || comma + 1 == units.size())
-      throw UsageError("--units: expected RAW,PHYSICAL (for example counts,m/s^2), got '" + units + "'");
-    q.raw_units = units.substr(0, comma);
-    q.physical_units = units.substr(comma + 1);
-  }
+  if (v.given("--instrument")) q.instrument = parse_instrument(v.text("--instrument"));
+  if (q.instrument == Instrument::gyro)
+    throw UsageError(
+        "--instrument gyro: a gyroscope's calibration (rate tables, known turns, hand rotations) is not in "
+        "this build yet");
+  read_units(v, q);
   if (v.text("--model") != "auto") q.model = *parse_model(v.text("--model"));
   check_calibrate_request(q);
   return q;

@@ -5,79 +5,21 @@
 #include <iomanip>
 #include <sstream>
 
-#include <Eigen/SVD>
-#include <nlohmann/json.hpp>
-
 #include "commands/common_options.hpp"
 #include "numeric/calibration/raw_log.hpp"
 #include "numeric/io/csv_table.hpp"
 #include "numeric/io/input_error.hpp"
 
 namespace scalcal::commands {
-namespace {
 
-double number_at(const nlohmann::json& j, const std::string& file, const std::string& key) {
-  if (!j.is_number()) throw InputError(file, 0, "'" + key + "' must hold numbers");
-  const double v = j.get<double>();
-  if (!std::isfinite(v)) throw InputError(file, 0, "'" + key + "' holds a value that is not finite");
-  return v;
-}
-
-// A reason to distrust the calibration, or "" when there is none.
-std::string distrust(const nlohmann::json& j, const FullCorrection& c) {
-  // A file without "converged" (written by hand, or by another tool) is taken at its word.
-  if (!j.contains("converged")) {
-  } else if (!j["converged"].is_boolean()) {
-    return "'converged' must be true or false";
-  } else if (!j["converged"].get<bool>()) {
-    return "its fit did not converge" +
-           (j.contains("message") && j["message"].is_string() ? " (" + j["message"].get<std::string>() + ")" : "");
-  }
-  const Eigen::JacobiSVD<Mat3> svd(c.matrix);
-  const double condition = svd.singularValues()(0) / svd.singularValues()(2);
-  if (!(condition <= kCorrectionCondition)) {
-    std::ostringstream s;
-    s << std::setprecision(3) << "its matrix is ill-conditioned (condition " << condition << " > "
-      << kCorrectionCondition << ": the axes' gains differ that much, or two axes are nearly parallel)";
-    return s.str();
-  }
-  return "";
-}
-
-}  // namespace
-
-FullCorrection read_calibration(const std::string& file, bool force, Warnings& warnings) {
-  return calibration_of(parse_json_file_text(read_text_file(file), file, "a JSON object written by `calibrate --out`"),
-                        file, force, warnings);
-}
-
-FullCorrection calibration_of(const Json& document, const std::string& file, bool force, Warnings& warnings) {
-  const nlohmann::json j = nlohmann::json::parse(document.dump(-1, ' ', false, Json::error_handler_t::replace));
-  if (j.is_object() && j.contains("model") && j.contains("offset") && (!j.contains("matrix") || j["matrix"].is_null()))
-    throw InputError(file, 0,
-                     "the " + j["model"].dump() +
-                         " calibration has no linear correction (its cubic term "
-                         "makes the correction nonlinear); `correct` applies linear ones only");
-  if (!j.is_object() || !j.contains("offset") || !j.contains("matrix"))
-    throw InputError(file, 0,
-                     "needs the keys 'offset' and 'matrix' (write it with `scalcal calibrate ... --out FILE`)");
-  const auto& o = j["offset"];
-  const auto& m = j["matrix"];
-  if (!o.is_array() || o.size() != 3) throw InputError(file, 0, "'offset' must be three numbers");
-  if (!m.is_array() || m.size() != 3) throw InputError(file, 0, "'matrix' must be three rows of three numbers");
-  FullCorrection c;
-  for (int i = 0; i < 3; ++i) {
-    c.offset(i) = number_at(o[static_cast<std::size_t>(i)], file, "offset");
-    const auto& row = m[static_cast<std::size_t>(i)];
-    if (!row.is_array() || row.size() != 3) throw InputError(file, 0, "'matrix' must be three rows of three numbers");
-    for (int k = 0; k < 3; ++k) c.matrix(i, k) = number_at(row[static_cast<std::size_t>(k)], file, "matrix");
-  }
-  if (!(std::abs(c.matrix.determinant()) > 0)) throw InputError(file, 0, "'matrix' is singular");
-  if (const std::string why = distrust(j, c); !why.empty()) {
-    if (!force) throw InputError(file, 0, "refused: " + why + "; --force applies it all the same");
-    warnings.push_back({file, "applied with --force although " + why});
-  }
-  return c;
+FullCorrection linear_correction(const CalibrationFile& c) {
+  if (c.nonlinear)
+    throw InputError(c.name, 0,
+                     "the " + c.model +
+                         " calibration has no linear correction (its cubic term makes the correction nonlinear); "
+                         "`correct` applies linear ones only, and applying its matrix alone would drop the cubic "
+                         "term");
+  return c.correction;
 }
 
 namespace {
@@ -148,9 +90,9 @@ Json to_json(const CorrectResult& r) {
 
 CorrectResult correct(const CorrectRequest& q) {
   CorrectResult out;
-  out.correction = q.calibration_document
-                       ? calibration_of(*q.calibration_document, q.calibration, q.force, out.warnings)
-                       : read_calibration(q.calibration, q.force, out.warnings);
+  out.correction = linear_correction(
+      q.calibration_document ? calibration_file_of(*q.calibration_document, q.calibration, q.force, out.warnings)
+                             : read_calibration_file(q.calibration, q.force, out.warnings));
   const CsvTable table = read_data(q);
   for (const char* col : {"ix", "iy", "iz"})
     if (!table.has(col)) throw InputError(q.file, 1, std::string("missing column '") + col + "' (need ix,iy,iz)");
@@ -169,6 +111,11 @@ CorrectResult correct(const CorrectRequest& q) {
     // Scaled, so finite for outputs near 1e300; not Eigen's stableNorm, whose summation order follows the
     // vector's address alignment (its last bit changed with the optimisation level).
     r.modulus = std::hypot(r.corrected(0), r.corrected(1), r.corrected(2));
+    const Vec3 raw(v[static_cast<std::size_t>(ix)], v[static_cast<std::size_t>(iy)], v[static_cast<std::size_t>(iz)]);
+    if (raw.allFinite() && !(r.corrected.allFinite() && std::isfinite(r.modulus)))
+      throw InputError(q.file, table.rows[k].line,
+                       "the calibration maps this row to a value that is not finite (beyond 1e308: is its matrix "
+                       "in these raw units?)");
     out.rows.push_back(r);
   }
   return out;

@@ -8,6 +8,7 @@
 
 #include <optional>
 
+#include "commands/calibration_file.hpp"
 #include "commands/json.hpp"
 #include "commands/option_table.hpp"
 #include "commands/values.hpp"
@@ -16,10 +17,6 @@
 #include "numeric/io/csv_table.hpp"
 
 namespace scalcal::commands {
-
-// Above this condition number of the correction's 3x3 matrix the axes' gains differ by that factor
-// or two axes are nearly parallel: no sensor of this kind is built so, a failed fit is.
-inline constexpr double kCorrectionCondition = 100;
 
 struct CorrectRequest {
   std::string calibration;                   // the file written by `calibrate --out`
@@ -44,10 +41,9 @@ struct CorrectResult {
   Warnings warnings;
 };
 
-// Reads and checks a calibration file. InputError for a file that is not one, or that is refused.
-FullCorrection read_calibration(const std::string& file, bool force, Warnings& warnings);
-// The same checks on the calibration as an object (`name` in messages).
-FullCorrection calibration_of(const Json& document, const std::string& name, bool force, Warnings& warnings);
+// The correction a checked calibration file applies (commands/calibration_file.hpp); InputError for a
+// nonlinear model's, which a 3x3 correction cannot apply.
+FullCorrection linear_correction(const CalibrationFile& calibration);
 
 // --calibration CAL.json --measurements FILE [--format auto|csv|text] [--force] [--out FILE]
 const CommandTable& correct_table();

@@ -1,40 +1,70 @@
-// `scalcal export` (export.hpp): the calibration read as `correct` reads it, then one writer per target.
+// `scalcal export` (export.hpp): the calibration read and checked once, then its registered format.
 #include "commands/export.hpp"
 
-#include <cmath>
-#include <cstdio>
-
 #include "commands/common_options.hpp"
-#include "commands/correct.hpp"
-#include "commands/export_formats.hpp"
 #include "commands/usage_error.hpp"
-#include "numeric/io/csv_table.hpp"
 #include "numeric/io/input_error.hpp"
 
 namespace scalcal::commands {
 namespace {
 
-// The metadata a calibration file carries (calibrate --out), kept in the json target.
-constexpr const char* kKept[] = {"format_version", "created", "tool",   "sensor",   "units",
-                                 "magnitude",      "model",   "region", "converged"};
+// The calibration file's keys the json target keeps (what it is of, in which units, by what).
+constexpr const char* kKept[] = {"created",   "tool",  "sensor", "instrument", "units",
+                                 "magnitude", "model", "region", "converged",  "field_strength"};
 
-void write_json(const ExportRequest& q, ExportResult& r) {
-  Json doc = Json::object();
-  try {
-    doc = parse_json_file_text(read_text_file(q.calibration), q.calibration);
-  } catch (const InputError&) {  // read_calibration has checked it already
+std::vector<std::string> format_choices() {
+  std::vector<std::string> names;
+  for (const auto& f : export_formats()) names.emplace_back(f.name);
+  return names;
+}
+
+std::string format_help() {
+  std::string s = "the target and its convention:";
+  for (const auto& f : export_formats()) s += " " + std::string(f.name) + " (" + std::string(f.what) + ");";
+  s.back() = ' ';
+  return s + "(docs/bench.md, Export)";
+}
+
+Instrument instrument_of(const ExportRequest& q, const CalibrationFile& c) {
+  if (q.instrument && c.instrument && *q.instrument != *c.instrument)
+    throw UsageError("export: --instrument " + std::string(instrument_name(*q.instrument)) + " contradicts the " +
+                     std::string(instrument_name(*c.instrument)) + " calibration in " + display_name(q.calibration));
+  return q.instrument ? *q.instrument : c.instrument ? *c.instrument : Instrument::accel;
+}
+
+ExportInput input_of(const ExportRequest& q, const ExportResult& r) {
+  const CalibrationFile& c = r.calibration;
+  ExportInput in;
+  in.file = c.name;
+  in.correction = c.correction;
+  in.instrument = r.instrument;
+  in.units = c.units;
+  in.instance = q.instance;
+  in.force = q.force;
+  in.sample_rate = c.sample_rate;
+  in.noise = c.noise;
+  if (!q.raw_scale.empty()) {
+    in.raw_scale = parse_amount(q.raw_scale);
+    if (!in.raw_scale)
+      throw UsageError(
+          "export: --raw-scale: expected a positive size with its unit, such as 0.061mg or 1/16384g, got '" +
+          q.raw_scale + "' (units: " + unit_names() + ")");
   }
-  Json out = Json::object();
+  in.kept.emplace_back("format_version", std::to_string(kCalibrationFormatVersion));
   for (const char* key : kKept)
-    if (doc.is_object() && doc.contains(key)) out[key] = doc[key];
-  out["format_version"] = doc.is_object() && doc.contains("format_version") ? doc["format_version"] : Json(1);
-  out["convention"] = "physical = matrix (raw - offset), matrix by rows";
-  const Vec3& o = r.correction.offset;
-  const Mat3& C = r.correction.matrix;
-  out["offset"] = Json{o(0), o(1), o(2)};
-  out["matrix"] =
-      Json{Json{C(0, 0), C(0, 1), C(0, 2)}, Json{C(1, 0), C(1, 1), C(1, 2)}, Json{C(2, 0), C(2, 1), C(2, 2)}};
-  r.text = json_text(out, 2) + "\n";
+    if (c.document.contains(key)) in.kept.emplace_back(key, json_text(c.document[key]));
+  if (!c.document.contains("instrument"))
+    in.kept.emplace_back("instrument", "\"" + std::string(instrument_name(r.instrument)) + "\"");
+  return in;
+}
+
+Option instrument_option() {
+  Option o = choice_option("--instrument", {"accel", "mag", "gyro"},
+                           "the meter: px4 and ardupilot write an accelerometer's offsets and scales, a magnetometer's "
+                           "offsets and symmetric matrix, a gyroscope's offsets",
+                           "");
+  o.fallback_text = "the calibration file's (accel when it names none)";
+  return o;
 }
 
 }  // namespace
@@ -44,24 +74,27 @@ const CommandTable& export_table() {
   calibration.name = "CALIBRATION";
   calibration.kind = OptionKind::positional;
   calibration.what = "a calibration file written by calibrate --out";
-  Option format = choice_option("--format", {"json", "magcal", "imu_tk", "kalibr", "px4", "ardupilot"},
-                                "the target and its convention (docs/bench.md, Export)", kRequired);
+  calibration.takes_document = true;
   static const CommandTable table{
       "export",
-      "a calibration file in another tool's form: PX4, ArduPilot, IMU-TK, Kalibr, MATLAB magcal, or plain JSON",
+      "a calibration file in another tool's form and units: PX4, ArduPilot, IMU-TK, Kalibr/OpenVINS, MATLAB magcal, "
+      "or plain JSON",
       72,
-      {calibration, format,
-       choice_option("--instrument", {"accel", "mag"},
-                     "px4, ardupilot: the accelerometer's parameters (offsets and scales: the non-orthogonality is "
-                     "dropped) or the magnetometer's (offsets and a symmetric matrix)",
-                     "accel"),
-       named(
-           integer_option("--instance", 0, 3,
-                          "px4, ardupilot: which sensor (px4 CAL_ACC0.., ardupilot INS_ACC, INS_ACC2..)", "index", "0"),
-           "N"),
-       flag_option("--force", "export a calibration that correct would refuse (not converged, ill-conditioned)"),
+      {calibration, choice_option("--format", format_choices(), format_help(), kRequired), instrument_option(),
+       named(integer_option("--instance", 0, 4,
+                            "px4, ardupilot: which sensor (px4 CAL_ACC0..3, ardupilot INS_ACC, INS_ACC2, INS_ACC3, "
+                            "INS4_ACC, INS5_ACC; compasses 0..2)",
+                            "index", "0"),
+             "N"),
+       text_option("--raw-scale", "SIZE",
+                   "what one raw unit (count) of the calibrated log is in a physical unit, e.g. 0.061mg or 1/16384g "
+                   "(the driver's scale, from the datasheet): the firmware formats work on the driver's output",
+                   "a size with its unit"),
+       flag_option("--force",
+                   "export a calibration that correct would refuse (not converged, ill-conditioned), or with what "
+                   "the target drops above 1 % or a value outside a parameter's documented range"),
        out_option("write the target's file here instead of standard output"),
-       json_option("print one JSON object (format, instrument, rotation_rad, dropped_relative, text)")}};
+       json_option("print one JSON object (format, instrument, rotation_rad, dropped_relative, parameters, text)")}};
   return table;
 }
 
@@ -69,48 +102,45 @@ ExportRequest export_request(const Values& v) {
   ExportRequest q;
   q.calibration = v.text("CALIBRATION");
   q.format = v.text("--format");
-  q.instrument = v.text("--instrument");
+  if (v.given("--instrument")) q.instrument = parse_instrument(v.text("--instrument"));
   q.instance = static_cast<int>(v.integer("--instance"));
   q.force = v.flag("--force");
+  q.raw_scale = v.text("--raw-scale");
+  if (const auto it = v.documents.find("CALIBRATION"); it != v.documents.end()) q.calibration_document = it->second;
   return q;
 }
 
 ExportResult export_calibration(const ExportRequest& q) {
+  const ExportFormat* format = find_export_format(q.format);
+  if (!format) throw UsageError("export: --format '" + q.format + "' is not one of " + export_format_names());
   ExportResult r;
   r.request = q;
-  if (q.instrument != "accel" && q.format != "px4" && q.format != "ardupilot" && q.format != "kalibr")
-    throw UsageError("--instrument belongs to --format px4 and ardupilot");
-  r.correction = read_calibration(q.calibration, q.force, r.warnings);
-  if (q.format == "json")
-    write_json(q, r);
-  else if (q.format == "magcal")
-    write_magcal(q, r);
-  else if (q.format == "imu_tk")
-    write_imu_tk(q, r);
-  else if (q.format == "kalibr")
-    write_kalibr(q, r);
-  else if (q.format == "px4")
-    write_px4(q, r);
-  else
-    write_ardupilot(q, r);
-  char share[64];
-  if (r.dropped_relative > 1e-7) {  // beyond a float parameter's precision
-    std::snprintf(share, sizeof share, "%.2g", r.dropped_relative);
-    r.warnings.push_back(
-        {q.calibration, std::string("--format ") + q.format +
-                            " has no non-orthogonality terms for an accelerometer: dropping them moves a "
-                            "corrected vector by up to " +
-                            share + " of its length"});
+  r.calibration = q.calibration_document
+                      ? calibration_file_of(*q.calibration_document, q.calibration, q.force, r.warnings)
+                      : read_calibration_file(q.calibration, q.force, r.warnings);
+  if (r.calibration.nonlinear)
+    throw InputError(q.calibration, 0,
+                     "the " + r.calibration.model +
+                         " calibration's correction is nonlinear (a cubic term): no export format carries it");
+  r.instrument = instrument_of(q, r.calibration);
+  try {
+    r.output = export_with(*format, input_of(q, r));
+  } catch (const RequestError& e) {
+    throw UsageError("export: --" + e.field + ": " + e.what());
   }
+  for (const auto& w : r.output.warnings) r.warnings.push_back({q.calibration, w});
   return r;
 }
 
 Json to_json(const ExportResult& r) {
+  Json parameters = Json::object();
+  for (const auto& p : r.output.parameters) parameters[p.name] = p.value;
   return Json{{"format", r.request.format},
-              {"instrument", r.request.instrument},
-              {"rotation_rad", r.rotation_rad},
-              {"dropped_relative", r.dropped_relative},
-              {"text", r.text}};
+              {"instrument", std::string(instrument_name(r.instrument))},
+              {"rotation_rad", r.output.rotation_rad},
+              {"dropped_relative", r.output.dropped_relative},
+              {"parameters", parameters},
+              {"text", r.output.text}};
 }
 
 }  // namespace scalcal::commands

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "commands/tumbling_rehearsal.hpp"
 #include "commands/usage_error.hpp"
 #include "numeric/io/csv_table.hpp"
 #include "numeric/io/input_error.hpp"
@@ -84,20 +85,27 @@ class LogWriter {
 
 }  // namespace
 
-RehearsalResult rehearse(const RehearsalRequest& q) {
-  RehearsalResult r;
-  r.request = q;
-  GaussianSource gauss(q.seed);
+Meter rehearsal_meter(const RehearsalRequest& q, GaussianSource& gauss) {
+  Meter meter;
   if (!q.meter_file.empty()) {
-    r.meter = meter_from_file(q);
+    meter = meter_from_file(q);
   } else {
     Vec9 X;
     for (int k = 0; k < 9; ++k) X(k) = q.size * gauss();
-    r.meter = Meter::from_parameters(X, q.magnitude);
+    meter = Meter::from_parameters(X, q.magnitude);
   }
-  const Mat3 gain = r.meter.gain();
+  const Mat3 gain = meter.gain();
   if (!gain.allFinite() || std::abs(gain.determinant()) < 1e-6)
     throw UsageError("the meter's axes are degenerate (non-orthogonality or scale deviations too large)");
+  return meter;
+}
+
+RehearsalResult rehearse(const RehearsalRequest& q) {
+  if (q.tumble_s > 0) return rehearse_tumbling(q);
+  RehearsalResult r;
+  r.request = q;
+  GaussianSource gauss(q.seed);
+  r.meter = rehearsal_meter(q, gauss);
   r.correction = correction_of(r.meter);
   LogWriter log(r, r.meter, gauss);
   const auto& p = q.program.positions;
@@ -118,29 +126,41 @@ RehearsalResult rehearse(const RehearsalRequest& q) {
 Json truth_json(const RehearsalResult& r) {
   const auto triple = [](const Vec3& v) { return Json{v(0), v(1), v(2)}; };
   const Mat3& m = r.correction.matrix;
-  return Json{{"bias", triple(r.meter.bias)},
-              {"scale_deviation", triple(r.meter.scale_deviation)},
-              {"nonorthogonality", triple(r.meter.nonorthogonality())},
-              {"offset", triple(r.correction.offset)},
-              {"matrix", Json{triple(m.row(0)), triple(m.row(1)), triple(m.row(2))}},
-              {"magnitude", r.request.magnitude},
-              {"noise", r.request.noise * r.request.magnitude},
-              {"seed", r.request.seed},
-              {"program", r.request.name},
-              {"positions", r.request.program.size()},
-              {"rows", r.t.size()}};
+  Json j{{"bias", triple(r.meter.bias)},
+         {"scale_deviation", triple(r.meter.scale_deviation)},
+         {"nonorthogonality", triple(r.meter.nonorthogonality())},
+         {"offset", triple(r.correction.offset)},
+         {"matrix", Json{triple(m.row(0)), triple(m.row(1)), triple(m.row(2))}},
+         {"magnitude", r.request.magnitude},
+         {"noise", r.request.noise * r.request.magnitude},
+         {"seed", r.request.seed},
+         {"program", r.request.name},
+         {"positions", r.request.program.size()},
+         {"rows", r.t.size()}};
+  if (r.request.tumble_s > 0) {
+    Json disturbed = Json::array();
+    for (const auto& [start, end] : r.disturbed) disturbed.push_back(Json{{"start", start}, {"end", end}});
+    j["instrument"] = r.request.accelerometer ? "accel" : "mag";
+    j["tumble_s"] = r.request.tumble_s;
+    j["disturbed"] = disturbed;
+  }
+  return j;
 }
 
 void write_raw_log(std::ostream& out, const RehearsalResult& r, bool text_format) {
   const RehearsalRequest& q = r.request;
-  if (!q.region.empty()) {
-    out << "# region: ";
-    for (std::size_t k = 0; k < q.region.size(); ++k) out << (k ? ";" : "") << q.region[k];
-    out << "\n";
+  // The text form is IMU-TK's: numbers only (its reader takes no comment line); what the CSV's
+  // comments say is in the truth file.
+  if (!text_format) {
+    if (!q.region.empty()) {
+      out << "# region: ";
+      for (std::size_t k = 0; k < q.region.size(); ++k) out << (k ? ";" : "") << q.region[k];
+      out << "\n";
+    }
+    out << "# rehearsal of " << display_name(q.name) << " (scalcal simulate, seed " << q.seed
+        << "): " << q.program.size() << " positions, " << q.rate_hz << " Hz\n";
+    out << "t,ix,iy,iz\n";
   }
-  out << "# rehearsal of " << display_name(q.name) << " (scalcal simulate, seed " << q.seed << "): " << q.program.size()
-      << " positions, " << q.rate_hz << " Hz\n";
-  if (!text_format) out << "t,ix,iy,iz\n";
   const char sep = text_format ? ' ' : ',';
   char line[160];
   for (std::size_t i = 0; i < r.t.size(); ++i) {

@@ -37,22 +37,31 @@ struct RehearsalRequest {
   double size = 1e-3;      // scale of a random meter's errors
   std::string meter_file;  // a JSON file with bias, scale_deviation, nonorthogonality ("": random)
   std::uint64_t seed = 1;
+  // A tumbling log (tumbling_rehearsal.hpp) instead of still poses: this many seconds of continuous
+  // turning (0: none), of a magnetometer (the field keeps its modulus) or an accelerometer (the
+  // motion adds acceleration), with this many disturbed stretches (a magnet passing).
+  double tumble_s = 0;
+  bool accelerometer = false;
+  int disturbances = 0;
 };
 
 struct RehearsalResult {
   RehearsalRequest request;
-  Meter meter;                                   // the truth
-  FullCorrection correction;                     // its correction: physical = matrix (raw - offset)
-  std::vector<double> t;                         // seconds (the raw log)
-  std::vector<Vec3> samples;                     // raw outputs, one per row
-  std::vector<int> position;                     // 1-based position of each row, 0 while moving
-  std::vector<std::pair<double, double>> rests;  // each position's resting time span (seconds)
+  Meter meter;                                       // the truth
+  FullCorrection correction;                         // its correction: physical = matrix (raw - offset)
+  std::vector<double> t;                             // seconds (the raw log)
+  std::vector<Vec3> samples;                         // raw outputs, one per row
+  std::vector<int> position;                         // 1-based position of each row, 0 while moving
+  std::vector<std::pair<double, double>> rests;      // each position's resting time span (seconds)
+  std::vector<std::pair<double, double>> disturbed;  // a tumbling log's disturbed stretches (seconds)
   Warnings warnings;
 };
 
 // Throws InputError for a meter file that cannot be read or lacks a key, UsageError for a meter
-// whose axes are degenerate.
+// whose axes are degenerate. A request with tumble_s > 0 is a tumbling log's (rehearse_tumbling).
 RehearsalResult rehearse(const RehearsalRequest& request);
+// The meter of a rehearsal: the file's, or random from the seed's first draws.
+Meter rehearsal_meter(const RehearsalRequest& request, GaussianSource& gauss);
 
 // The true parameters: bias (file units), scale_deviation, nonorthogonality (rad), offset, matrix
 // (rows; physical = matrix (raw - offset)), magnitude, as calibrate --json has them; with noise

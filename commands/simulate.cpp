@@ -70,9 +70,10 @@ const char* modulus_name(Modulus m) { return m == Modulus::norm ? "norm" : "proj
 
 namespace {
 
-// The rehearsal writes files: its options are the CLI's (the Python module runs the Monte-Carlo).
+// The rehearsal writes files: the CLI and the Python module both write them (a rehearsal's options
+// are Python arguments too: simulate(log=..., truth=...)).
 Option rehearsal(Option o) {
-  o.cli_only = true;
+  o.cli_only = false;
   return o;
 }
 
@@ -80,6 +81,8 @@ Option rehearsal(Option o) {
 
 const CommandTable& simulate_table() {
   Option program = text_option("--program", "P", "a catalogue name or a CSV file", "none", kRequired);
+  program.fallback = "";
+  program.fallback_text = "required, unless --tumble";
   program.takes_positions = true;
   Option modulus = choice_option("--modulus", {"norm", "projection"}, "the modulus the estimator fits", "");
   modulus.fallback_text = "both, one after the other";
@@ -87,12 +90,15 @@ const CommandTable& simulate_table() {
       "rehearsal: write the raw log (t,ix,iy,iz) a meter would give on the program run in its "
       "order, motion included (no Monte-Carlo)");
   log.name = "--log";
+  log.cli_only = false;
   Option bench_file = out_option("rehearsal: write the grouped bench file (position,x,y,z,ix,iy,iz) instead");
   bench_file.name = "--bench-file";
+  bench_file.cli_only = false;
   Option truth = out_option(
       "with --log or --bench-file: write the meter's true parameters as JSON (calibrate "
       "--json's keys and units)");
   truth.name = "--truth";
+  truth.cli_only = false;
   static const CommandTable table{
       "simulate",
       "Monte-Carlo calibration of simulated meters (empirical covariance against sigma^2 K, bias, bench errors), or "
@@ -128,7 +134,22 @@ const CommandTable& simulate_table() {
                                "30")),
        rehearsal(positive_option("--magnitude", "rehearsal: |I| in the log's units", "log units", "1")),
        rehearsal(choice_option("--format", {"csv", "text"},
-                               "rehearsal: the raw log as CSV with a header, or text t ix iy iz", "csv")),
+                               "rehearsal: the raw log as CSV with a header, or text t ix iy iz (IMU-TK's reader: "
+                               "numbers only)",
+                               "csv")),
+       rehearsal(number_option("--tumble", 0, 86400,
+                               "rehearsal: a tumbling log of this many seconds, the meter turned continuously (through "
+                               "the program's positions, or random directions without --program) and never still",
+                               "seconds", "0")),
+       rehearsal(choice_option("--instrument", {"mag", "accel"},
+                               "rehearsal --tumble: a magnetometer (the field keeps its modulus) or an accelerometer "
+                               "(the motion adds 5 % of |I| of acceleration)",
+                               "mag")),
+       rehearsal(named(integer_option("--disturbances", 0, 100,
+                                      "rehearsal --tumble: disturbed stretches of 2 s (a field of up to 0.3 |I| "
+                                      "passing), at random times",
+                                      "stretches", "0"),
+                       "K")),
        json_option("print one JSON object")}};
   return table;
 }
@@ -140,7 +161,8 @@ namespace {
 void read_rehearsal(const Values& v, SimulateRequest& q) {
   const bool rehearsal = v.given("--log") || v.given("--bench-file");
   const char* monte_carlo[] = {"--trials", "--bench-error", "--modulus", "--samples", "--model", "--out"};
-  const char* own[] = {"--truth", "--meter", "--rate", "--dwell", "--still", "--magnitude", "--format"};
+  const char* own[] = {"--truth",     "--meter",  "--rate",   "--dwell",      "--still",
+                       "--magnitude", "--format", "--tumble", "--instrument", "--disturbances"};
   if (!rehearsal) {
     for (const char* o : own)
       if (v.given(o)) throw UsageError(std::string(o) + " belongs to a rehearsal (--log FILE or --bench-file FILE)");
@@ -155,7 +177,7 @@ void read_rehearsal(const Values& v, SimulateRequest& q) {
   r.name = q.name;
   r.program = q.program;
   Warnings unused;
-  if (!v.program) r.region = regions_for({}, q.name, unused);
+  if (!v.program && v.given("--program")) r.region = regions_for({}, q.name, unused);
   r.grouped = v.given("--bench-file");
   r.rate_hz = v.number("--rate");
   r.dwell_s = v.number("--dwell");
@@ -165,6 +187,14 @@ void read_rehearsal(const Values& v, SimulateRequest& q) {
   r.size = v.number("--size");
   r.meter_file = v.text("--meter");
   r.seed = static_cast<std::uint64_t>(v.integer("--seed"));
+  r.tumble_s = v.number("--tumble");
+  r.accelerometer = v.text("--instrument") == "accel";
+  r.disturbances = static_cast<int>(v.integer("--disturbances"));
+  if (r.tumble_s == 0)
+    for (const char* o : {"--instrument", "--disturbances"})
+      if (v.given(o)) throw UsageError(std::string(o) + " belongs to a tumbling rehearsal (--tumble SECONDS)");
+  if (r.tumble_s > 0 && r.grouped) throw UsageError("--tumble writes a raw log (--log), not a bench file");
+  if (r.tumble_s > 0 && r.rate_hz * r.tumble_s > 2e7) throw UsageError("--rate x --tumble asks for more than 2e7 rows");
   if (r.noise >= kNoiseRefuseAbove)
     throw UsageError("option --noise: must be below 1 |I| (noise as large as the measured vector)");
   if (r.rate_hz * (r.dwell_s + r.still_s) * r.program.size() > 2e7)
@@ -177,7 +207,12 @@ void read_rehearsal(const Values& v, SimulateRequest& q) {
 SimulateRequest simulate_request(const Values& v) {
   SimulateRequest q;
   q.name = v.text("--program");
-  q.program = program_of(v, "--program");
+  if (v.given("--program") || v.program)
+    q.program = program_of(v, "--program");
+  else if (!(v.given("--tumble") && v.number("--tumble") > 0))
+    throw UsageError("--program P is required (unless --log with --tumble SECONDS)");
+  else
+    q.name = "a random tumble";
   read_rehearsal(v, q);
   if (q.rehearsal) return q;
   q.trials = static_cast<int>(v.integer("--trials"));

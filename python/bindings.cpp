@@ -1,6 +1,8 @@
 // The commands the Python module binds (bindings.hpp): one line each, the same functions the CLI calls.
 #include "python/bindings.hpp"
 
+#include <fstream>
+#include <functional>
 #include <stdexcept>
 #include <type_traits>
 
@@ -21,6 +23,8 @@
 #include "commands/random.hpp"
 #include "commands/simulate.hpp"
 #include "commands/sweep.hpp"
+#include "commands/usage_error.hpp"
+#include "numeric/io/input_error.hpp"
 #ifdef SCALCAL_PYTHON_REPRODUCE
 #include "experiments/reproduce/command.hpp"
 #endif
@@ -68,11 +72,46 @@ Binding sweep_binding() {
           }};
 }
 
-// A calibration's status is the CLI's: 1 when the fit did not converge.
+// A calibration's status is the CLI's: 1 when the fit did not converge. Python gets the calibration
+// file's object (the header, units and instrument included), which saves to and loads from cal.json.
 Binding calibrate_binding() {
   return {&commands::calibrate_table(), [](const Values& v, const Progress& p) {
             const auto r = commands::calibrate(commands::calibrate_request(v), p);
-            return Output{commands::to_json(r), r.warnings, r.status()};
+            return Output{commands::calibration_file_json(r), r.warnings, r.status()};
+          }};
+}
+
+// A file the Python module writes for a command (a rehearsal's log and truth): never standard
+// output, whose stream is the interpreter's.
+void write_file(const std::string& path, const std::string& option, const std::function<void(std::ostream&)>& write) {
+  if (path == "-") throw UsageError(option + ": Python writes files, not standard output ('-')");
+  std::ofstream out(path, std::ios::binary);
+  if (out) write(out);
+  out.flush();
+  if (!out) throw InputError(path, 0, "cannot be written (" + option + ")");
+}
+
+// simulate: the Monte-Carlo's table, or a rehearsal's files (log or bench file, truth) with the
+// truth returned, as the CLI's --json prints it.
+Binding simulate_binding() {
+  return {&commands::simulate_table(), [](const Values& v, const Progress& p) {
+            const auto q = commands::simulate_request(v);
+            if (!q.rehearsal) {
+              const auto r = commands::simulate(q, p);
+              return Output{commands::to_json(r), r.warnings, 0};
+            }
+            const auto r = commands::rehearse(*q.rehearsal);
+            if (q.rehearsal->grouped)
+              write_file(v.text("--bench-file"), "bench_file",
+                         [&](std::ostream& out) { commands::write_bench_file(out, r); });
+            else
+              write_file(v.text("--log"), "log",
+                         [&](std::ostream& out) { commands::write_raw_log(out, r, v.text("--format") == "text"); });
+            const commands::Json truth = commands::truth_json(r);
+            if (v.given("--truth"))
+              write_file(v.text("--truth"), "truth",
+                         [&](std::ostream& out) { out << commands::json_text(truth, 2) << "\n"; });
+            return Output{truth, r.warnings, 0};
           }};
 }
 
@@ -88,7 +127,7 @@ const std::vector<Binding>& bindings() {
            [](const commands::CorrectRequest& q) { return commands::correct(q); }),
       bind(commands::optimize_table(), commands::optimize_request, commands::optimize),
       bind(commands::random_table(), commands::random_request, commands::random_programs),
-      bind(commands::simulate_table(), commands::simulate_request, commands::simulate),
+      simulate_binding(),
       sweep_binding(),
       polish_binding(),
       bind(commands::certify_table(), commands::certify_request, commands::certify),

@@ -14,11 +14,11 @@ namespace {
 int run(const commands::Values& v) {
   const commands::ExportResult r = commands::export_calibration(commands::export_request(v));
   print_warnings("export", r.warnings);
-  if (v.given("--out")) write_output_file(v.text("--out"), [&](std::ostream& out) { out << r.text; });
+  if (v.given("--out")) write_output_file(v.text("--out"), [&](std::ostream& out) { out << r.output.text; });
   if (v.flag("--json"))
     print_json(commands::to_json(r));
   else if (!v.given("--out"))
-    std::cout << r.text;
+    std::cout << r.output.text;
   return 0;
 }
 

@@ -6,7 +6,10 @@ Written separately from the C++ code so the two can be compared: its own static-
 windows, or from an initial still period), then a direct nonlinear least-squares fit of
 |T (m_i - o)| = g on the interval means with scipy.optimize.least_squares, T upper triangular for
 the 9-parameter model (paper9), diagonal for bias and scale only (axis6), a multiple of the
-identity for offsets only (bias3). Run with Debian's /usr/bin/python3 (NumPy + SciPy).
+identity for offsets only (bias3). A magnetometer's tumbling log (every="sample") is fitted as MATLAB's
+magcal fits one: every sample, then again without the samples beyond 5 robust scales of the residuals
+(1.4826 times their median absolute value), until none is. Run with Debian's /usr/bin/python3 (NumPy +
+SciPy).
 Deterministic, no network. `--json` prints one object: per log, the intervals, the fit and the RMS.
 """
 import argparse
@@ -30,7 +33,7 @@ LOGS = {
     "mpu6050": dict(file="mpu6050_acc.csv", kind="csv", rate=100.0, magnitude=9.80665, model="axis6"),
     "nilspod_ferraris": dict(file="nilspod_ferraris_acc.csv", kind="csv", rate=102.4, magnitude=9.80665,
                              model="axis6"),
-    "qmc5883l": dict(file="qmc5883l_mag.csv", kind="csv", rate=50.0, magnitude=None, model="paper9"),
+    "qmc5883l": dict(file="qmc5883l_mag.csv", kind="csv", rate=50.0, magnitude=None, model="paper9", every="sample"),
 }
 
 
@@ -120,12 +123,36 @@ def design_condition(directions, model):
     return float(e[-1] / e[0])
 
 
+def run_every_sample(spec, t, x):
+    """A tumbling magnetometer's log: every sample a position, the outliers left out until none is."""
+    g = spec["magnitude"] or 1.0
+    keep = np.ones(len(x), dtype=bool)
+    for _ in range(10):
+        res, rel = fit(x[keep], g, spec["model"])
+        o, T = unpack(res.x, spec["model"])
+        rel_all = (np.linalg.norm((x - o) @ T.T, axis=1) - g) / g
+        scale = 1.4826 * np.median(np.abs(rel_all[keep]))
+        new = np.abs(rel_all) <= 5 * scale
+        if np.array_equal(new, keep):
+            break
+        keep = new
+    return {
+        "file": spec["file"], "rate": spec["rate"], "magnitude": spec["magnitude"], "model": spec["model"],
+        "every": "sample", "rows": int(len(x)), "samples_used": int(keep.sum()), "intervals": int(keep.sum()),
+        "offset": o.tolist(), "matrix": T.tolist(), "gains_geometric_mean": float(np.linalg.det(T) ** (-1 / 3)),
+        "rms_means_relative": float(np.sqrt(np.mean(rel_all[keep] ** 2))),
+        "nfev": int(res.nfev), "status": int(res.status),
+    }
+
+
 def run(name, spec):
     path = find(spec["file"])
     if path is None:
         return {"file": spec["file"], "missing": True}
     t, x = load(spec, path)
     keep = np.all(np.isfinite(x), axis=1)
+    if spec.get("every") == "sample":
+        return run_every_sample(spec, t[keep], x[keep])
     iv, floor, window = static_intervals(t[keep], x[keep])
     x = x[keep]
     means = np.array([x[a:b + 1].mean(axis=0) for a, b in iv])
@@ -160,6 +187,10 @@ def main():
     for name, r in out["logs"].items():
         if r.get("missing"):
             print(f"{name}: {r['file']} not found in {DATA_DIRS}", file=sys.stderr)
+            continue
+        if r.get("every") == "sample":
+            print(f"{name}: every sample, {r['samples_used']} of {r['rows']} used, model {r['model']}, RMS "
+                  f"|m| - 1 {r['rms_means_relative']:.4e}, offset {np.round(r['offset'], 2).tolist()}")
             continue
         print(f"{name}: {r['intervals']} intervals, model {r['model']}, RMS |a| - g over the interval means "
               f"{r['rms_means_relative']:.4e} of |I|; condition paper9 {r['condition']['paper9']:.3g}, "

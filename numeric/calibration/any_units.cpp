@@ -8,6 +8,7 @@
 #include <Eigen/Dense>
 #include <boost/math/distributions/chi_squared.hpp>
 
+#include "numeric/calibration/between_poses.hpp"
 #include "numeric/criteria/identifiability.hpp"
 #include "numeric/criteria/model_evaluation.hpp"
 #include "numeric/io/input_error.hpp"
@@ -17,6 +18,10 @@ namespace {
 
 // Within this of the magnitude (median over positions) the data are in the field's units.
 constexpr double kInUnits = 0.1;
+// Degrees of freedom from which the between-pose variance is estimated (REML): with fewer, one
+// variance from a handful of residuals would be guessed, and the larger of the noise-based and the
+// residual-based standard errors stands (with Student's t).
+constexpr int kErrorModelDof = 5;
 
 double median_modulus_ratio(const std::vector<PositionSamples>& data, double magnitude) {
   std::vector<double> r;
@@ -136,22 +141,19 @@ void compose(const std::string& file, AnyUnitsCalibration& out) {
 // estimable).
 double larger(double p, double a) { return std::isnan(p) ? a : std::isnan(a) ? p : std::max(p, a); }
 
-// The gains' standard errors: the scale deviations' with their common part when |I| is known (it
-// fixes the gain), relative to their geometric mean otherwise; and the nominal gain's (the field's
-// strength in file units with magnitude auto), which moves with the mean scale deviation:
+// The gains' standard errors by the delta method: gain_i = nominal gain (1 + dk_i), so its relative
+// error is dk_i's, common part included; with --magnitude auto too (|corrected| = 1 fixes the gains'
+// common scale: the field's strength in file units), where only the scale deviations, relative to
+// the gains' geometric mean, lose the common part (reported_std's projection). The nominal gain's
+// (the field's strength in file units with magnitude auto) moves with the mean scale deviation:
 // var = 1^T C 1 / 9. Each the larger of the two covariances given (empty: not estimable).
-void gain_errors(AnyUnitsCalibration& out, const std::vector<int>& index, bool magnitude_auto,
-                 const Eigen::MatrixXd& predicted, const Eigen::MatrixXd& achieved) {
+void gain_errors(AnyUnitsCalibration& out, const std::vector<int>& index, const Eigen::MatrixXd& predicted,
+                 const Eigen::MatrixXd& achieved) {
   const auto sb = block_of(index, 3);
   if (sb.empty()) return;
   const auto gain_std = [&](const Eigen::MatrixXd& cov) {
     if (cov.size() == 0) return Vec3(Vec3::Constant(NAN));
-    Mat3 c = block(cov, sb);
-    if (magnitude_auto) {
-      const Mat3 Pr = Mat3::Identity() - Mat3::Constant(1.0 / 3);
-      c = Pr * c * Pr.transpose();
-    }
-    return Vec3(out.gain.cwiseProduct(c.diagonal().cwiseMax(0.0).cwiseSqrt()));
+    return Vec3(out.gain.cwiseProduct(block(cov, sb).diagonal().cwiseMax(0.0).cwiseSqrt()));
   };
   const auto mean_std = [&](const Eigen::MatrixXd& cov) {
     return cov.size() == 0 ? NAN : out.nominal_gain * std::sqrt(std::max(block(cov, sb).sum(), 0.0)) / 3;
@@ -162,6 +164,34 @@ void gain_errors(AnyUnitsCalibration& out, const std::vector<int>& index, bool m
 }
 
 }  // namespace
+
+void assign_errors(AnyUnitsCalibration& out, const Eigen::MatrixXd& predicted, const Eigen::MatrixXd& achieved,
+                   const Eigen::MatrixXd& model) {
+  const std::vector<int> index = meter_indices(out.model);
+  const auto P = static_cast<Eigen::Index>(index.size());
+  const Eigen::VectorXd nan = Eigen::VectorXd::Constant(P, NAN);
+  out.predicted_std = predicted.size() ? reported_std(predicted, index, out) : nan;
+  out.achieved_std = achieved.size() ? reported_std(achieved, index, out) : nan;
+  out.model_std = model.size() ? reported_std(model, index, out) : Eigen::VectorXd();
+  out.covariance = model.size() ? model : achieved.size() ? achieved : predicted;
+  out.noise_covariance = predicted;
+  out.standard_error =
+      model.size() ? out.model_std
+                   : out.predicted_std.binaryExpr(out.achieved_std, [](double p, double a) { return larger(p, a); });
+  for (Eigen::Index k = 0; k < P; ++k) {
+    const int m = index[static_cast<std::size_t>(k)];
+    if (m < 3)
+      out.bias_std(m) = out.standard_error(k);
+    else if (m < 6)
+      out.scale_deviation_std(m - 3) = out.standard_error(k);
+    else if (m < 9)
+      out.nonorthogonality_std(m - 6) = out.standard_error(k);
+  }
+  if (model.size())
+    gain_errors(out, index, model, Eigen::MatrixXd());
+  else
+    gain_errors(out, index, predicted, achieved);
+}
 
 AnyUnitsCalibration calibrate_any_units(const std::string& file, const std::vector<PositionSamples>& data,
                                         const AnyUnitsOptions& options) {
@@ -212,28 +242,23 @@ AnyUnitsCalibration calibrate_any_units(const std::string& file, const std::vect
   const Eigen::MatrixXd K = info.ldlt().solve(Eigen::MatrixXd::Identity(P, P));
   out.dof = n - P;
   const double s = out.dof > 0 ? std::sqrt(weighted / out.dof) : 0;
-  const Eigen::VectorXd nan = Eigen::VectorXd::Constant(P, NAN);
-  out.predicted_std =
-      r.noise_source != NoiseSource::none ? reported_std((r.noise / M) * (r.noise / M) * r.K, index, out) : nan;
-  out.achieved_std = out.dof > 0 ? reported_std(s * s * K, index, out) : nan;
-  out.standard_error = out.predicted_std.binaryExpr(out.achieved_std, [](double p, double a) { return larger(p, a); });
+  const Eigen::MatrixXd none;
+  Eigen::MatrixXd model;
+  if (r.noise_source == NoiseSource::scatter && out.dof >= kErrorModelDof) {
+    std::vector<double> counts;
+    for (const auto& p : y) counts.push_back(static_cast<double>(p.samples.size()));
+    const BetweenPoses bp = between_poses(rows, J, counts, w, (r.noise / M) * (r.noise / M));
+    model = bp.covariance;
+    out.between_std = std::sqrt(bp.between) * M;
+    out.within_std = r.noise;
+    out.model_standardised = bp.standardised;
+  }
+  assign_errors(out, r.noise_source != NoiseSource::none ? Eigen::MatrixXd((r.noise / M) * (r.noise / M) * r.K) : none,
+                out.dof > 0 ? Eigen::MatrixXd(s * s * K) : none, model);
   if (r.noise_source == NoiseSource::scatter && r.noise > 0 && out.dof > 0) {
     out.chi_square = chi;
     out.chi_square_p = boost::math::cdf(boost::math::complement(boost::math::chi_squared(out.dof), chi));
   }
-  for (int k = 0; k < P; ++k) {
-    const int m = index[static_cast<std::size_t>(k)];
-    if (m < 3)
-      out.bias_std(m) = out.standard_error(k);
-    else if (m < 6)
-      out.scale_deviation_std(m - 3) = out.standard_error(k);
-    else if (m < 9)
-      out.nonorthogonality_std(m - 6) = out.standard_error(k);
-  }
-  const Eigen::MatrixXd none;
-  gain_errors(out, index, options.magnitude_auto,
-              r.noise_source != NoiseSource::none ? Eigen::MatrixXd((r.noise / M) * (r.noise / M) * r.K) : none,
-              out.dof > 0 ? Eigen::MatrixXd(s * s * K) : none);
   for (int i = 0; i < n; ++i) {
     const auto k = static_cast<std::size_t>(i);
     const Eigen::VectorXd& h = rows[k];

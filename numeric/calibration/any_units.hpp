@@ -62,6 +62,19 @@ struct AnyUnitsCalibration {
   // when the noise comes from the scatter of repeated samples and dof > 0).
   std::optional<double> chi_square;
   double chi_square_p = 1;
+  // The error model (between_poses.hpp), when the noise comes from the scatter within positions and
+  // positions outnumber parameters: the between-pose scatter sigma_b and the within one sigma_w (of
+  // one sample), both in the units of the magnitude; each residual standardised under the model. Its
+  // covariance gives standard_error (model_std) where it exists.
+  double between_std = NAN, within_std = NAN;
+  std::vector<double> model_standardised;
+  Eigen::VectorXd model_std;  // empty without the error model
+  // The noise-based covariance (the scatter within positions, or a tumbling log's second
+  // differences), empty when there is none; the estimator's units.
+  Eigen::MatrixXd noise_covariance;
+  // The covariance standard_error comes from, in the estimator's units (bias / |I|, dk, gamma,
+  // c |I|): the error model's, else the residual-based, else the noise-based one.
+  Eigen::MatrixXd covariance;
 };
 
 // Throws InputError (file, 0, reason): fewer positions than parameters, no start (no ellipsoid
@@ -69,5 +82,13 @@ struct AnyUnitsCalibration {
 // rank-deficient or ill-conditioned layout (beyond kIllConditioned), a degenerate correction.
 AnyUnitsCalibration calibrate_any_units(const std::string& file, const std::vector<PositionSamples>& data,
                                         const AnyUnitsOptions& options);
+
+// The standard errors from covariances of the estimator's parameters (bias / |I|, dk, gamma, c |I|;
+// empty: not estimable): predicted_std, achieved_std, model_std, then standard_error: the error
+// model's where it is given, else the larger of the other two; the meter's nine and the gains' from
+// the same. calibrate_any_units calls it; a caller with a better covariance (residuals correlated in
+// time) calls it again.
+void assign_errors(AnyUnitsCalibration& fit, const Eigen::MatrixXd& predicted, const Eigen::MatrixXd& achieved,
+                   const Eigen::MatrixXd& model = Eigen::MatrixXd());
 
 }  // namespace scalcal

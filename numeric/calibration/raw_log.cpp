@@ -1,6 +1,7 @@
 // A raw instrument log: time and the three raw outputs, sample by sample (raw_log.hpp).
 #include "numeric/calibration/raw_log.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <sstream>
@@ -71,6 +72,27 @@ RawLog raw_log_from_table(const CsvTable& table, double rate) {
   }
   if (finite_rows < 2) throw InputError(table.file, 0, "fewer than two rows with finite t, ix, iy, iz");
   return log;
+}
+
+bool rows_change_like_a_log(const CsvTable& table) {
+  if (!table.has("ix") || !table.has("iy") || !table.has("iz") || table.rows.size() < 30) return false;
+  const auto at = [&](std::size_t k) {
+    const auto& v = table.rows[k].values;
+    return Vec3(v[static_cast<std::size_t>(table.column("ix"))], v[static_cast<std::size_t>(table.column("iy"))],
+                v[static_cast<std::size_t>(table.column("iz"))]);
+  };
+  const std::size_t n = table.rows.size(), half = n / 2;
+  std::vector<double> step, far;
+  for (std::size_t k = 0; k + 1 < n; ++k)
+    if (const double d = (at(k + 1) - at(k)).norm(); std::isfinite(d)) step.push_back(d);
+  for (std::size_t k = 0; k + half < n; ++k)
+    if (const double d = (at(k + half) - at(k)).norm(); std::isfinite(d)) far.push_back(d);
+  if (step.empty() || far.empty()) return false;
+  const auto median = [](std::vector<double>& v) {
+    std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
+    return v[v.size() / 2];
+  };
+  return median(step) < 0.2 * median(far);
 }
 
 RawLog read_raw_log(const std::string& path, LogFormat format, double rate) {

@@ -34,6 +34,10 @@ struct RawLog {
 int time_column(const CsvTable& table);
 // Whether a measurements table is a raw log: a time column and no position column.
 bool is_raw_log(const CsvTable& table);
+// Whether a table of ix, iy, iz rows changes as a raw log does: consecutive rows close together
+// (the median step under a fifth of the median distance between rows half the table apart), over
+// at least 30 rows. Bench data (a position per row, or a position column) do not.
+bool rows_change_like_a_log(const CsvTable& table);
 // Whether a file's text is a header-less text log: its first line that is neither blank nor a
 // comment starts with a number.
 bool looks_like_text_log(const std::string& text);

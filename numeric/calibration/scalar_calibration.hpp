@@ -47,7 +47,8 @@ struct CalibrationOptionsTpl {
   Scalar tolerance = Scalar(1e4) * Eigen::NumTraits<Scalar>::epsilon();
 };
 
-enum class NoiseSource { scatter, residuals, none };
+// differences: from the log's second differences (a tumbling log's one-sample positions).
+enum class NoiseSource { scatter, residuals, none, differences };
 
 template <class Scalar>
 struct CalibrationResultTpl {

@@ -101,6 +101,8 @@ void check_powers_fit(const RawLog& log, const std::vector<char>& usable) {
   throw InputError(log.file, 0, text);
 }
 
+}  // namespace
+
 // The variance norm of the window of w samples centred on each sample, by prefix sums (shifted
 // by `shift`: raw sums of counts near 32768 would cancel badly); NaN where the window is incomplete
 // or holds an unusable sample.
@@ -130,6 +132,8 @@ std::vector<double> window_variances(const RawLog& log, const std::vector<char>&
   }
   return out;
 }
+
+namespace {
 
 // The noise floor of the first still_seconds (--still): IMU-TK's way, for logs known to start still.
 double still_floor(const RawLog& log, const std::vector<char>& usable, int first, const StaticIntervalOptions& o,
@@ -188,12 +192,79 @@ std::vector<char> usable_samples(const RawLog& log, const StaticIntervalOptions&
   return usable;
 }
 
+// Still runs a short break apart whose means agree within the noise are one pose: a window whose
+// noise happened to cross the threshold must not split it (a short window and a low threshold would
+// otherwise count one pose as several, each an independent position to the fit). A break of at
+// most a second; means within 6 standard errors of their difference, one sample's variance per axis
+// taken from the floor (its norm over three equal variances is sqrt(3) sigma^2).
+std::vector<std::pair<int, int>> merged_runs(const RawLog& log, const std::vector<char>& usable, const Vec3& shift,
+                                             const std::vector<std::pair<int, int>>& runs, double floor,
+                                             double period) {
+  const auto mean_of = [&](int i, int j, int& count) {
+    Vec3 s = Vec3::Zero();
+    count = 0;
+    for (int k = i; k <= j; ++k)
+      if (usable[static_cast<std::size_t>(k)]) s += log.samples[static_cast<std::size_t>(k)] - shift, ++count;
+    return Vec3(s / std::max(count, 1));
+  };
+  const double sigma2 = floor / std::sqrt(3.0);
+  const int longest_break = std::max(1, static_cast<int>(std::lround(1.0 / period)));
+  std::vector<std::pair<int, int>> out;
+  for (const auto& run : runs) {
+    if (!out.empty() && run.first - out.back().second - 1 <= longest_break) {
+      int na = 0, nb = 0;
+      const Vec3 a = mean_of(out.back().first, out.back().second, na), b = mean_of(run.first, run.second, nb);
+      if ((a - b).norm() <= 6 * std::sqrt(3 * sigma2 * (1.0 / na + 1.0 / nb))) {
+        out.back().second = run.second;
+        continue;
+      }
+    }
+    out.push_back(run);
+  }
+  return out;
+}
+
+// Half the spread of the outputs, the median over the three: the field's radius in raw units where
+// the log turns the meter round (less where it covers less, which only makes drifts() stricter).
+double field_radius(const RawLog& log, const std::vector<char>& usable) {
+  std::vector<double> half;
+  for (int c = 0; c < 3; ++c) {
+    double lo = INFINITY, hi = -INFINITY;
+    for (int i = 0; i < log.size(); ++i)
+      if (usable[static_cast<std::size_t>(i)]) {
+        lo = std::min(lo, log.samples[static_cast<std::size_t>(i)](c));
+        hi = std::max(hi, log.samples[static_cast<std::size_t>(i)](c));
+      }
+    half.push_back((hi - lo) / 2);
+  }
+  std::sort(half.begin(), half.end());
+  return half[1];
+}
+
+// Whether a still run turns: its first and last thirds' means more than kPoseDriftRad of the radius
+// apart. A slow motion (a short window and a high threshold take a second of a turn at 10 degrees
+// per second for a pose) turns by degrees; a hand-held pose settles by less (the public logs' poses:
+// at most 0.16 degrees on the Xsens, 0.55 on the noisier MPU-6050).
+bool drifts(const RawLog& log, const std::vector<char>& usable, int i, int j, double radius) {
+  const int third = (j - i + 1) / 3;
+  if (third < 2 || !(radius > 0)) return false;
+  const auto mean = [&](int a, int b) {
+    Vec3 s = Vec3::Zero();
+    int n = 0;
+    for (int k = a; k <= b; ++k)
+      if (usable[static_cast<std::size_t>(k)]) s += log.samples[static_cast<std::size_t>(k)], ++n;
+    return Vec3(s / std::max(n, 1));
+  };
+  return (mean(i, i + third - 1) - mean(j - third + 1, j)).norm() > kPoseDriftRad * radius;
+}
+
 }  // namespace
 
 IntervalDetection detect_static_intervals(const RawLog& log, const StaticIntervalOptions& options) {
   IntervalDetection d;
   const int n = log.size();
-  const std::vector<char> usable = usable_samples(log, options, d);
+  d.usable = usable_samples(log, options, d);
+  const std::vector<char>& usable = d.usable;
   int first = 0;
   while (first < n && !usable[static_cast<std::size_t>(first)]) ++first;
   if (first == n && options.still_seconds > 0)
@@ -225,6 +296,7 @@ IntervalDetection detect_static_intervals(const RawLog& log, const StaticInterva
   };
   const int min_samples =
       static_cast<int>(std::clamp(std::ceil(options.min_seconds / d.sample_period), 1.0, static_cast<double>(n) + 1));
+  std::vector<std::pair<int, int>> runs;
   for (int i = 0; i < n;) {
     if (!is_static(i)) {
       ++i;
@@ -232,13 +304,21 @@ IntervalDetection detect_static_intervals(const RawLog& log, const StaticInterva
     }
     int j = i;
     while (j + 1 < n && is_static(j + 1)) ++j;
+    runs.emplace_back(i, j);
+    i = j + 1;
+  }
+  const double radius = field_radius(log, usable);
+  for (const auto& [i, j] : merged_runs(log, usable, shift, runs, d.still_variance, d.sample_period)) {
+    if (j - i + 1 >= min_samples && drifts(log, usable, i, j, radius)) {
+      ++d.drifting_runs;
+      continue;
+    }
     if (j - i + 1 >= min_samples) {
       d.intervals.push_back({i, j, log.t[static_cast<std::size_t>(i)], log.t[static_cast<std::size_t>(j)]});
       d.longest_fraction = std::max(d.longest_fraction, static_cast<double>(j - i + 1) / n);
     } else {
       ++d.short_runs;
     }
-    i = j + 1;
   }
   return d;
 }

@@ -17,6 +17,12 @@
 
 namespace scalcal {
 
+// A still run whose direction turns by more than this (radians, two degrees) between its first and
+// last thirds is slow motion, not a pose. A pose that turns less is still a pose for the modulus: the
+// mean of an arc of 2 degrees falls short of the sphere by 5e-5 of the radius (theta^2 / 24), below
+// the scatter between hand-held poses (1e-4 on the Xsens log).
+inline constexpr double kPoseDriftRad = 2 * 3.14159265358979323846 / 180;
+
 struct StaticIntervalOptions {
   double still_seconds = 0;     // > 0: the initial still period of this length sets the floor; 0: the quiet windows
   double window_seconds = 1;    // the moving variance's window (an odd number of samples, at least 11)
@@ -38,11 +44,18 @@ struct IntervalDetection {
   bool floor_from_still = false;  // the floor came from the initial still period (--still), not the quiet windows
   double threshold = 0;           // what a window's variance norm must stay below
   int short_runs = 0;             // static runs shorter than min_seconds (not positions)
+  int drifting_runs = 0;          // runs long enough that turn while "still" (slow motion, not poses)
   double longest_fraction = 0;    // the longest interval's share of the log's samples
   int nonfinite = 0;              // rows with a NaN or infinite value
   int saturated = 0;  // samples at an output's extreme and at an ADC rail (0, 2^k or 2^k - 1), three or more in a row
   std::vector<int> nonfinite_lines, saturated_lines;  // the first few of each, for messages
+  std::vector<char> usable;                           // per sample: finite and not saturated
 };
+
+// The variance norm of the window of w samples centred on each sample (the sum of squares shifted
+// by `shift`, a sample of the log, for accuracy); NaN where the window is incomplete or holds an
+// unusable sample.
+std::vector<double> window_variances(const RawLog& log, const std::vector<char>& usable, int w, const Vec3& shift);
 
 // Throws InputError (the log's file) when the log is shorter than the window, when the still period
 // (still_seconds > 0) is, or when no window has any noise (a constant or clipped signal).

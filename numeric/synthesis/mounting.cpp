@@ -130,9 +130,12 @@ MountingResult best_mounting(const Program& normals, const MountingOptions& opti
     ends.push_back(nelder_mead(f, O0, 0.3));
     if (options.progress) options.progress(k + 1, options.starts);
   }
+  // The first start within kHitTolerance of the lowest value: equivalent mountings (the jig's and the
+  // program's symmetries) reach one value to the last bits, which must not choose between them.
+  double lowest = ends[0].value;
+  for (const auto& e : ends) lowest = std::min(lowest, e.value);
   std::size_t best = 0;
-  for (std::size_t k = 1; k < ends.size(); ++k)
-    if (ends[k].value < ends[best].value) best = k;
+  while (best + 1 < ends.size() && !(ends[best].value <= lowest + kHitTolerance * std::abs(lowest))) ++best;
   out.orientation = ends[best].orientation;
   out.value = ends[best].value;
   out.starts = options.starts;

@@ -10,6 +10,7 @@ input raises ``InputError``, bad options ``UsageError``, a result that did not c
 unit of work (a start of a multistart).
 """
 import inspect
+import json as _json
 import os as _os
 import warnings as _warnings
 
@@ -21,7 +22,7 @@ if _os.path.isfile(_os.path.join(_DATA, "table1_A.csv")):
     _os.environ.setdefault("SCALCAL_DATA", _DATA)
 
 __version__ = _scalcal.__version__
-__all__ = ["Error", "InputError", "UsageError", "ConvergenceError", "ScalcalWarning", "program"]
+__all__ = ["Error", "InputError", "UsageError", "ConvergenceError", "ScalcalWarning", "Calibration", "program"]
 
 
 class Error(Exception):
@@ -104,9 +105,71 @@ def _make(table):
     return command
 
 
+def _plain(value):
+    """A result as JSON's own types (lists for NumPy arrays), so that it json.dumps as it is."""
+    if hasattr(value, "tolist"):
+        return value.tolist()
+    if isinstance(value, dict):
+        return {k: _plain(v) for k, v in value.items()}
+    if isinstance(value, list):
+        return [_plain(v) for v in value]
+    return value
+
+
+class Calibration(dict):
+    """A calibration: the object ``scalcal calibrate --out CAL.json`` writes, as a dict of JSON's own
+    types (``json.dump(calibration, f)`` writes a file the CLI reads). ``offset`` and ``matrix`` are
+    also NumPy arrays (physical = matrix (raw - offset)); ``save``/``load`` write and read cal.json;
+    ``correct`` and ``export`` are ``scalcal.correct(calibration=self, ...)`` and
+    ``scalcal.export(self, ...)``."""
+
+    @property
+    def offset(self):
+        import numpy
+        return numpy.asarray(self["offset"], dtype=float)
+
+    @property
+    def matrix(self):
+        import numpy
+        return None if self.get("matrix") is None else numpy.asarray(self["matrix"], dtype=float)
+
+    def save(self, path):
+        """Write the calibration as cal.json (what ``scalcal correct`` and ``export`` read)."""
+        with open(path, "w", encoding="utf-8") as f:
+            _json.dump(self, f, indent=2, allow_nan=False)
+            f.write("\n")
+
+    @classmethod
+    def load(cls, path):
+        """Read a calibration file (as ``scalcal correct`` would: checked when it is used)."""
+        with open(path, encoding="utf-8") as f:
+            return cls(_json.load(f))
+
+    def correct(self, measurements, **kwargs):
+        """The corrected measurements (``scalcal.correct(calibration=self, measurements=...)``)."""
+        return globals()["correct"](calibration=dict(self), measurements=measurements, **kwargs)
+
+    def export(self, format, **kwargs):
+        """The calibration in another tool's form (``scalcal.export(self, format=...)``)."""
+        return globals()["export"](dict(self), format=format, **kwargs)
+
+
 for _table in _scalcal.tables():
     globals()[_table["name"]] = _make(_table)
     __all__.append(_table["name"])
+
+_calibrate_command = calibrate  # noqa: F821 (made from its table above)
+
+
+def calibrate(*args, **kwargs):
+    result = _calibrate_command(*args, **kwargs)
+    return Calibration(_plain(result))
+
+
+calibrate.__signature__ = _calibrate_command.__signature__
+calibrate.__doc__ = (_calibrate_command.__doc__.replace("returns its --json object",
+                                                        "returns the calibration file's object, a Calibration")
+                     if _calibrate_command.__doc__ else None)
 
 
 def program(name):

@@ -1,15 +1,17 @@
 // scalcal export round trips: each target's file is read here the way that tool reads it and applied
 // by that tool's own formula (written out below from its source: PX4's Accelerometer::Correct and
 // Magnetometer::Correct, ArduPilot's _rotate_and_correct_accel and AP_Compass_Backend::correct_field,
-// IMU-TK's CalibratedTriad::unbiasNormalize, Kalibr's scale-misalignment model, MATLAB's magcal), to
-// the raw rows of a rehearsal log, and compared with `scalcal correct` on the same rows:
+// IMU-TK's CalibratedTriad::unbiasNormalize, OpenVINS's Propagator (a = R_ACCtoIMU Ta^-1 (a_m - b)),
+// MATLAB's magcal), to the raw rows of a rehearsal log in the target's units, and compared with
+// `scalcal correct` on the same rows, converted to the target's units:
 //   json, magcal, imu_tk (17 digits)          the same vectors to 1e-12 relative
-//   kalibr                                    R times correct's vectors to 1e-12 (R: its rotation)
+//   kalibr                                    the same vectors to 1e-12 (its rotation R_IMUtoACC is in
+//                                             the file: no part of the correction is lost)
 //   px4, ardupilot accel (9 digits, float32)  correct's vectors without the dropped off-diagonal
 //                                             terms to 1e-7; a calibration with a diagonal matrix
 //                                             gives correct's vectors themselves
-//   px4, ardupilot mag (symmetric matrix)     the same moduli to 1e-7, vectors within the reported
-//                                             rotation of correct's
+//   px4 (gauss), ardupilot (milligauss) mag   a tumbling magnetometer's log in uT: the same moduli,
+//                                             converted, to 1e-7, vectors within the reported rotation
 #include <cmath>
 #include <map>
 #include <regex>
@@ -132,7 +134,7 @@ TEST(ExportCli, ExactFormsGiveCorrectsVectors) {
     o(i) = j["offset"][i];
     for (int k = 0; k < 3; ++k) C(i, k) = j["matrix"][i][k];
   }
-  EXPECT_EQ(j["format_version"], 1);
+  EXPECT_EQ(j["format_version"], 2);
   expect_vectors(
       [&](const V3& r) {
         V3 v = C * (r - o);
@@ -166,21 +168,24 @@ TEST(ExportCli, ExactFormsGiveCorrectsVectors) {
       1e-12, "imu_tk");
 }
 
-TEST(ExportCli, KalibrIsCorrectTurnedByItsRotation) {
+TEST(ExportCli, KalibrIsCorrectItself) {
   const std::string k = exported("--format kalibr");
-  const auto mv = numbers_after(k, "M:", 9), bv = numbers_after(k, "b:", 3), rv = numbers_after(k, "R:", 9);
-  const Eigen::Matrix<double, 3, 3, Eigen::RowMajor> M(mv.data()), R(rv.data());
-  EXPECT_EQ(M(0, 1), 0);
-  EXPECT_EQ(M(0, 2), 0);
-  EXPECT_EQ(M(1, 2), 0);  // lower triangular
+  EXPECT_NE(k.find("imu0:"), std::string::npos);
+  const auto tv = numbers_after(k, "  Ta:", 9), rv = numbers_after(k, "R_IMUtoACC:", 9),
+             mv = numbers_after(k, "accelerometers:\n    M:", 9);
+  const Eigen::Matrix<double, 3, 3, Eigen::RowMajor> Ta(tv.data()), R(rv.data()), M(mv.data());
+  EXPECT_EQ(Ta(0, 1), 0);
+  EXPECT_EQ(Ta(0, 2), 0);
+  EXPECT_EQ(Ta(1, 2), 0);    // lower triangular, as OpenVINS's kalibr model keeps it
+  EXPECT_EQ(M3(M), M3(Ta));  // Kalibr's accelerometers M is OpenVINS's Ta
   EXPECT_LT((R * R.transpose() - M3::Identity()).norm(), 1e-12);
   EXPECT_NEAR(R.determinant(), 1, 1e-12);
-  const V3 b(bv[0], bv[1], bv[2]);
-  // raw = M a + b, so a = M^-1 (raw - b); it must be R times correct's vector.
+  // OpenVINS: Da = Ta^-1, R_ACCtoIMU = R_IMUtoACC^T, a = R_ACCtoIMU Da (a_m - b_a); the bias is its own
+  // online state, here the calibration's offset.
   const Data& d = data();
   for (std::size_t i = 0; i < d.raw.size(); ++i) {
-    const V3 a = M.triangularView<Eigen::Lower>().solve(d.raw[i] - b);
-    ASSERT_LT((a - R * d.corrected[i]).norm(), 1e-12 * a.norm()) << i;
+    const V3 a = R.transpose() * M3(Ta).triangularView<Eigen::Lower>().solve(d.raw[i] - d.o);
+    ASSERT_LT((a - d.corrected[i]).norm(), 1e-12 * a.norm()) << i;
   }
 }
 
@@ -188,10 +193,10 @@ TEST(ExportCli, AccelerometerParametersDropOnlyTheOffDiagonalTerms) {
   const Data& d = data();
   M3 off = d.C;
   off.diagonal().setZero();
-  const auto px4 = parameters(exported("--format px4"));
+  const auto px4 = parameters(exported("--format px4 --force"));
   const V3 off_px4(px4.at("CAL_ACC0_XOFF"), px4.at("CAL_ACC0_YOFF"), px4.at("CAL_ACC0_ZOFF"));
   const V3 scale_px4(px4.at("CAL_ACC0_XSCALE"), px4.at("CAL_ACC0_YSCALE"), px4.at("CAL_ACC0_ZSCALE"));
-  const auto ap = parameters(exported("--format ardupilot --instance 1"));
+  const auto ap = parameters(exported("--format ardupilot --instance 1 --force"));
   const V3 off_ap(ap.at("INS_ACC2OFFS_X"), ap.at("INS_ACC2OFFS_Y"), ap.at("INS_ACC2OFFS_Z"));
   const V3 scale_ap(ap.at("INS_ACC2SCAL_X"), ap.at("INS_ACC2SCAL_Y"), ap.at("INS_ACC2SCAL_Z"));
   for (std::size_t i = 0; i < d.raw.size(); ++i) {
@@ -199,12 +204,16 @@ TEST(ExportCli, AccelerometerParametersDropOnlyTheOffDiagonalTerms) {
     ASSERT_LT(((d.raw[i] - off_px4).cwiseProduct(scale_px4) - without).norm(), 1e-7 * without.norm()) << i;
     ASSERT_LT(((d.raw[i] - off_ap).cwiseProduct(scale_ap) - without).norm(), 1e-7 * without.norm()) << i;
   }
-  // The dropped share is reported and warned about.
-  const CliResult w = run_cli("export " + d.calibration + " --format px4 --json");
-  EXPECT_GT(Json::parse(w.out)["dropped_relative"].get<double>(), 1e-4);
-  EXPECT_NE(w.err.find("no non-orthogonality terms"), std::string::npos) << w.err;
+  // The dropped share is reported: beyond 1 % refused without --force, and warned about with it.
+  const CliResult w = run_cli("export " + d.calibration + " --format px4 --force --json");
+  const double dropped = Json::parse(w.out)["dropped_relative"].get<double>();
+  EXPECT_GT(dropped, 1e-4);
+  EXPECT_NE(w.err.find("cannot carry an accelerometer's non-orthogonality"), std::string::npos) << w.err;
+  const CliResult refused = run_cli("export " + d.calibration + " --format px4");
+  EXPECT_EQ(refused.status, dropped > 0.01 ? 2 : 0) << refused.err;
   // With a diagonal matrix nothing is dropped: the parameters give correct's vectors themselves.
   const std::string diagonal = write_file("diagonal_cal.json", R"({"converged": true, "offset": [0.01, -0.02, 0.03],
+      "units": {"raw": "m/s^2", "physical": "m/s^2"},
       "matrix": [[1.001, 0, 0], [0, 0.998, 0], [0, 0, 1.0004]]})");
   const CliResult k = run_cli("correct --calibration " + diagonal + " --measurements " + d.log);
   const auto rows = csv_numbers(k.out);
@@ -217,42 +226,77 @@ TEST(ExportCli, AccelerometerParametersDropOnlyTheOffDiagonalTerms) {
   }
 }
 
-TEST(ExportCli, MagnetometerParametersKeepTheModuliAndTurnByTheReportedRotation) {
-  const Data& d = data();
-  const auto px4 = parameters(exported("--format px4 --instrument mag --instance 2"));
+// A magnetometer turned continuously, its log in uT, calibrated with the Earth's field of 50 uT: PX4
+// works in gauss, ArduPilot in milligauss, so the driver's output is 0.01 or 10 times the log's.
+TEST(ExportCli, MagnetometerParametersKeepTheModuliInTheirUnitsAndTurnByTheReportedRotation) {
+  const std::string log = (scratch_dir() / "export_mag.csv").string(),
+                    cal = (scratch_dir() / "export_mag.json").string();
+  ASSERT_EQ(
+      run_cli("simulate --tumble 60 --rate 50 --noise 2e-3 --magnitude 50 --size 0.05 --seed 5 --log " + log).status,
+      0);
+  const CliResult c = run_cli("calibrate --measurements " + log + " --magnitude 50 --suggest 0 --out " + cal);
+  ASSERT_EQ(c.status, 0) << c.err;
+  const Json file = Json::parse(slurp(cal));
+  EXPECT_EQ(file["instrument"], "mag");
+  EXPECT_EQ(file["units"]["physical"], "uT");
+  EXPECT_EQ(file["units"]["raw"], "uT");
+  const CliResult k = run_cli("correct --calibration " + cal + " --measurements " + log);
+  std::vector<V3> raw, corrected;
+  for (const auto& r : csv_numbers(slurp(log))) raw.push_back(V3(r[1], r[2], r[3]));
+  for (const auto& r : csv_numbers(k.out)) corrected.push_back(V3(r[1], r[2], r[3]));
+  ASSERT_EQ(raw.size(), corrected.size());
+  const auto px4 = parameters(exported("--format px4 --instance 2", cal));
   M3 S;
   S << px4.at("CAL_MAG2_XSCALE"), px4.at("CAL_MAG2_XODIAG"), px4.at("CAL_MAG2_YODIAG"), px4.at("CAL_MAG2_XODIAG"),
       px4.at("CAL_MAG2_YSCALE"), px4.at("CAL_MAG2_ZODIAG"), px4.at("CAL_MAG2_YODIAG"), px4.at("CAL_MAG2_ZODIAG"),
       px4.at("CAL_MAG2_ZSCALE");
   const V3 off(px4.at("CAL_MAG2_XOFF"), px4.at("CAL_MAG2_YOFF"), px4.at("CAL_MAG2_ZOFF"));
-  const auto ap = parameters(exported("--format ardupilot --instrument mag"));
+  const auto ap = parameters(exported("--format ardupilot", cal));
   M3 A;
   A << ap.at("COMPASS_DIA_X"), ap.at("COMPASS_ODI_X"), ap.at("COMPASS_ODI_Y"), ap.at("COMPASS_ODI_X"),
       ap.at("COMPASS_DIA_Y"), ap.at("COMPASS_ODI_Z"), ap.at("COMPASS_ODI_Y"), ap.at("COMPASS_ODI_Z"),
       ap.at("COMPASS_DIA_Z");
   const V3 ofs(ap.at("COMPASS_OFS_X"), ap.at("COMPASS_OFS_Y"), ap.at("COMPASS_OFS_Z"));
   const double turn =
-      Json::parse(run_cli("export " + d.calibration + " --format px4 --instrument mag --json").out)["rotation_rad"];
+      Json::parse(run_cli("export " + cal + " --format px4 --instrument mag --json").out)["rotation_rad"];
   EXPECT_GT(turn, 0);
-  EXPECT_LT(turn, 1e-3);  // of order gamma^2
-  for (std::size_t i = 0; i < d.raw.size(); ++i) {
-    const V3& ours = d.corrected[i];
-    for (const V3& theirs : {V3(S * (d.raw[i] - off)), V3(A * (d.raw[i] + ofs))}) {
+  EXPECT_LT(turn, 1e-2);  // of order gamma^2
+  for (std::size_t i = 0; i < raw.size(); ++i) {
+    const V3 gauss = S * (0.01 * raw[i] - off), milligauss = A * (10 * raw[i] + ofs);
+    for (const auto& [theirs, per_uT] : {std::pair{gauss, 0.01}, std::pair{milligauss, 10.0}}) {
+      const V3 ours = per_uT * corrected[i];
       ASSERT_NEAR(theirs.norm(), ours.norm(), 1e-7 * ours.norm()) << i;
       ASSERT_LT(std::atan2(theirs.cross(ours).norm(), theirs.dot(ours)), turn + 1e-7) << i;
     }
   }
+  // An accelerometer's form of a magnetometer's calibration is refused: the file says what it is.
+  EXPECT_EQ(run_cli("export " + cal + " --format px4 --instrument accel").status, 2);
 }
 
 TEST(ExportCli, TheCalibrationFileSaysWhatItIs) {
   const Json cal = Json::parse(slurp(data().calibration));
-  EXPECT_EQ(cal["format_version"], 1);
+  EXPECT_EQ(cal["format_version"], 2);
   EXPECT_TRUE(std::regex_match(cal["created"].get<std::string>(), std::regex(R"(\d{4}-\d\d-\d\dT\d\d:\d\d:\d\dZ)")));
   EXPECT_EQ(cal["tool"]["name"], "scalcal");
+  EXPECT_EQ(cal["instrument"], "accel");  // --magnitude 9.80665 is gravity in m/s^2
+  EXPECT_EQ(cal["units"]["physical"], "m/s^2");
+  EXPECT_EQ(cal["units"]["raw"], "m/s^2");  // the log was within 10 % of it: no ellipsoid start
   for (const char* key : {"sensor", "units", "magnitude", "model", "region", "converged", "offset", "matrix"})
     EXPECT_TRUE(cal.contains(key)) << key;
-  const CliResult bad = run_cli("export " + data().calibration + " --format imu_tk --instrument mag");
-  EXPECT_EQ(bad.status, 2);
+  for (const auto& [args, why] : std::vector<std::pair<std::string, std::string>>{
+           {"--format imu_tk --instrument mag", "contradicts the accel calibration"},
+           {"--format ardupilot --instance 4 --force", ""},
+           {"--format px4 --instance 4", "has 4 accelerometer instances"},
+           {"--format PX4", "got 'PX4'"},
+           {"--format px4 --raw-scale 0.01uT", "not a unit of acceleration"},
+           {"--format px4 --raw-scale furlong", "expected a positive size with its unit"}}) {
+    const CliResult r = run_cli("export " + data().calibration + " " + args);
+    EXPECT_EQ(r.status, why.empty() ? 0 : 2) << args << ": " << r.err;
+    if (!why.empty()) {
+      EXPECT_NE(r.err.find(why), std::string::npos) << args << ": " << r.err;
+      EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    }
+  }
 }
 
 }  // namespace

@@ -169,6 +169,7 @@ TEST(CalibrateCommand, ALogWithoutTimeTakesTheRate) {
   CalibrateRequest q = request("9.81");
   q.file = path.string();
   q.rate = 50;
+  q.intervals_given = true;  // the default window, 1 s: the rate sets it in samples
   const CalibrateResult r = commands::calibrate(q);
   EXPECT_EQ(r.positions.size(), 14u);
   EXPECT_EQ(r.detection->window, 51);  // 1 s at 50 Hz

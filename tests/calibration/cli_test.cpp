@@ -164,6 +164,8 @@ TEST(CalibrateCli, BadInputIsOneLineAndExitTwo) {
 // no meter near the start fits it. The fit runs to the edge of the model and says so (exit 1,
 // "converged": false), and names the position that disagrees (issue 31; before, the paper's
 // iteration stopped at its own fixed point and exit 0 applied a calibration with chi-square 1e6).
+// --model auto does not fall back to a simpler model here: the positions carry paper9, so the data,
+// not the layout, are at fault (issue 49).
 TEST(CalibrateCli, MislabelledPositionsDoNotConverge) {
   std::ostringstream s;
   s.precision(17);
@@ -183,7 +185,9 @@ TEST(CalibrateCli, MislabelledPositionsDoNotConverge) {
   const CliRun r = scalcal("calibrate --magnitude 1 --measurements " + file.string() + " --out " + cal.string());
   EXPECT_EQ(r.status, 1) << r.err;
   EXPECT_NE(r.err.find("did not converge"), std::string::npos) << r.err;
-  EXPECT_NE(r.err.find("the fit contradicts its own noise estimate"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("disagree beyond what the noise within poses and the scatter between them allow"),
+            std::string::npos)
+      << r.err;
   EXPECT_NE(r.err.find("line 2 ("), std::string::npos) << r.err;
   std::ifstream in(cal);
   const std::string written((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());

@@ -24,7 +24,7 @@ TEST(RawCalibrateCli, XsensEndToEnd) {
   const Json j = Json::parse(r.out);
   // --out holds the same object after the calibration file's header (issue 32).
   Json file = Json::parse(slurp(cal));
-  for (const char* key : {"format_version", "created", "tool", "sensor", "units", "region"}) {
+  for (const char* key : {"format_version", "created", "tool", "sensor", "units", "units_reason", "region"}) {
     EXPECT_TRUE(file.contains(key)) << key;
     if (!j.contains(key)) file.erase(key);
   }
@@ -35,7 +35,7 @@ TEST(RawCalibrateCli, XsensEndToEnd) {
   ASSERT_GE(j["intervals"].size(), 30u);
   for (const auto& iv : j["intervals"]) {
     EXPECT_LE(iv["start"].get<double>(), iv["end"].get<double>());
-    EXPECT_GE(iv["samples"].get<int>(), 100);
+    EXPECT_GE(iv["samples"].get<int>(), 30);  // 0.3 s poses at 100 Hz at the shortest (adaptive_detection.hpp)
   }
   EXPECT_EQ(j["matrix"].size(), 3u);
   EXPECT_EQ(j["program"]["positions"].get<int>(), static_cast<int>(j["intervals"].size()));

@@ -3,7 +3,9 @@
 An example is a line starting with "$ " inside a ```text or ```console block; the lines after it, up
 to the next "$ " line or the end of the block, are what it prints (stdout and stderr as a terminal
 shows them). In the expected text a line "..." stands for any number of lines, and "…" inside a line
-for any text (a timing, a path). Commands run in bash in a scratch folder that holds links to the
+for any text (a timing, a path); a number printed with a decimal point or an exponent matches within
+one unit of its last printed digit (line_fits), so a value rounded the other way on another CPU still
+matches, and nothing else does. Commands run in bash in a scratch folder that holds links to the
 repository's data/ and experiments/, with the build's `scalcal` first on PATH, so a page reads as a
 user types. Usage: run_examples.py SOURCE_DIR BUILD_DIR PAGE.md... (exit 1 on the first mismatch
 of each page, with both texts).
@@ -39,12 +41,45 @@ def examples(path):
     return out
 
 
+# A number as the pages print them: an optional sign, digits with a decimal point or an exponent
+# (an integer is text: counts, line numbers and N compare exactly).
+NUMBER = r"[-+]?(?:\d+\.\d*|\.\d+|\d+(?=[eE]))(?:[eE][-+]?\d+)?"
+
+
+def last_digit_unit(text):
+    """One unit in the last digit a number is printed with: 0.001 for 1.234, 100 for 1.70159e+07."""
+    mantissa, _, exponent = text.lower().partition("e")
+    decimals = len(mantissa.split(".")[1]) if "." in mantissa else 0
+    return 10.0 ** (int(exponent or 0) - decimals)
+
+
+def line_fits(pattern, text):
+    """Whether a line fits a page's line: text exactly, "…" any text, and each number printed with a
+    decimal point or an exponent within one unit of its last printed digit (the last digit of a
+    value may round either way on another CPU or BLAS kernel). A number followed by "…" is a prefix,
+    as the page wrote it."""
+    regex, numbers = "", []
+    for k, part in enumerate(pattern.rstrip().split("…")):
+        before_ellipsis = k < len(pattern.rstrip().split("…")) - 1
+        pos = 0
+        for m in re.finditer(NUMBER, part):
+            if before_ellipsis and m.end() == len(part):
+                break  # a prefix: compared as text
+            regex += re.escape(part[pos:m.start()]) + "(" + NUMBER + ")"
+            numbers.append(m.group(0))
+            pos = m.end()
+        regex += re.escape(part[pos:]) + (".*" if before_ellipsis else "")
+    found = re.fullmatch(regex, text.rstrip())
+    if not found:
+        return False
+    for want, got in zip(numbers, found.groups()):
+        if abs(float(want) - float(got)) > 1.000001 * last_digit_unit(want):
+            return False
+    return True
+
+
 def matches(expected, actual):
     """True when the actual lines fit the expected ones ("..." lines, "…" inside lines)."""
-    def line_fits(pattern, text):
-        parts = [re.escape(p) for p in pattern.rstrip().split("…")]
-        return re.fullmatch(".*".join(parts), text.rstrip()) is not None
-
     def fits(i, j):
         if i == len(expected):
             return j == len(actual)

@@ -16,7 +16,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const scalcal::commands::Json document = scalcal::commands::parse_json_file_text(text, "fuzz.json");
     for (const bool force : {false, true}) {
       scalcal::commands::Warnings warnings;
-      (void)scalcal::commands::calibration_of(document, "fuzz.json", force, warnings);
+      (void)scalcal::commands::calibration_file_of(document, "fuzz.json", force, warnings);
     }
   } catch (const scalcal::InputError&) {
   }

@@ -1,0 +1,116 @@
+// The ardupilot target: a parameter file of NAME,VALUE lines. Accelerometer (m/s^2):
+// corrected = (v - OFFS) .* SCAL (AP_InertialSensor_Backend::_rotate_and_correct_accel), instances
+// INS_ACC, INS_ACC2, INS_ACC3, INS4_ACC, INS5_ACC; ranges OFFS -3.5 .. 3.5, SCAL 0.8 .. 1.2
+// (AP_InertialSensor.cpp). Magnetometer (milligauss): corrected = M (v + OFS) with M symmetric
+// (AP_Compass_Backend::correct_field): OFS = -offset, M = the symmetric factor of C, DIA its
+// diagonal and ODI (M01, M02, M12); instances COMPASS_OFS, OFS2, OFS3; OFS -400 .. 400
+// (AP_Compass.cpp), DIA 0.2 .. 5 and |ODI| < 1 (CompassCalibrator::fit_acceptable). Gyroscope
+// (rad/s): gyro -= GYROFFS, offsets only.
+#include "numeric/export/formats.hpp"
+#include "numeric/export/matrix_forms.hpp"
+#include "numeric/export/target_units.hpp"
+
+namespace scalcal {
+namespace {
+
+const char* const kAxes[3] = {"X", "Y", "Z"};
+
+// INS_ACC, INS_ACC2, INS_ACC3, then the groups INS4_ and INS5_ (ArduPilot 4.5 and later).
+std::string ins_prefix(int instance, const std::string& kind) {
+  if (instance == 0) return "INS_" + kind;
+  if (instance < 3) return "INS_" + kind + std::to_string(instance + 1);
+  return "INS" + std::to_string(instance + 1) + "_" + kind;
+}
+
+struct Writer {
+  const ExportInput& in;
+  ExportOutput& out;
+  std::string text;
+  void param(const std::string& name, double v) {
+    check_float32(in, name, v);
+    text += name + "," + float_text(v) + "\n";
+    out.parameters.push_back({name, v});
+  }
+};
+
+void write_accel(const ExportInput& in, ExportOutput& out, Writer& w) {
+  check_instance(in, "ardupilot", 5);
+  const TargetCorrection t = in_target_units(in, *parse_unit("m/s^2"), "ardupilot");
+  check_dropped(in, out, "ardupilot", "an accelerometer's non-orthogonality (off-diagonal terms)",
+                dropped_share(t.matrix, Mat3(t.matrix.diagonal().asDiagonal())));
+  const std::string p = ins_prefix(in.instance, "ACC");
+  w.text += "# corrected = (v - " + p + "OFFS_?) .* " + p + "SCAL_?, offsets in m/s^2\n";
+  const std::string source = "AP_InertialSensor.cpp";
+  for (int k = 0; k < 3; ++k) {
+    const std::string name = p + "OFFS_" + kAxes[k];
+    check_range(in, out, name, t.offset(k), -3.5, 3.5, source);
+    w.param(name, t.offset(k));
+  }
+  for (int k = 0; k < 3; ++k) {
+    const std::string name = p + "SCAL_" + kAxes[k];
+    check_range(in, out, name, t.matrix(k, k), 0.8, 1.2, source);
+    w.param(name, t.matrix(k, k));
+  }
+}
+
+void write_mag(const ExportInput& in, ExportOutput& out, Writer& w) {
+  check_instance(in, "ardupilot", 3);
+  const TargetCorrection t = in_target_units(in, *parse_unit("mG"), "ardupilot");
+  const Mat3 S = symmetric_factor(t.matrix);
+  out.rotation_rad = rotation_angle(t.matrix * S.inverse());
+  check_dropped(in, out, "ardupilot", "the rotation part of the magnetometer's matrix", dropped_share(t.matrix, S));
+  const std::string n = in.instance == 0 ? "" : std::to_string(in.instance + 1);
+  w.text += "# corrected = M (v + COMPASS_OFS" + n + "_?), M symmetric: diagonal COMPASS_DIA" + n + "_?, COMPASS_ODI" +
+            n + "_X = M01, _Y = M02, _Z = M12; offsets in milligauss\n";
+  for (int k = 0; k < 3; ++k) {
+    const std::string name = "COMPASS_OFS" + n + "_" + kAxes[k];
+    check_range(in, out, name, -t.offset(k), -400, 400, "AP_Compass.cpp");
+    w.param(name, -t.offset(k));
+  }
+  const std::string fit = "CompassCalibrator::fit_acceptable";
+  for (int k = 0; k < 3; ++k) {
+    const std::string name = "COMPASS_DIA" + n + "_" + kAxes[k];
+    check_range(in, out, name, S(k, k), 0.2, 5.0, fit);
+    w.param(name, S(k, k));
+  }
+  const double odi[3] = {S(0, 1), S(0, 2), S(1, 2)};
+  for (int k = 0; k < 3; ++k) {
+    const std::string name = "COMPASS_ODI" + n + "_" + kAxes[k];
+    check_range(in, out, name, odi[k], -1, 1, fit);
+    w.param(name, odi[k]);
+  }
+}
+
+void write_gyro(const ExportInput& in, ExportOutput& out, Writer& w) {
+  check_instance(in, "ardupilot", 5);
+  const TargetCorrection t = in_target_units(in, *parse_unit("rad/s"), "ardupilot");
+  check_dropped(in, out, "ardupilot", "a gyroscope's scale factors and misalignment (ArduPilot stores offsets only)",
+                dropped_share(t.matrix, Mat3::Identity()), false);
+  const std::string p = ins_prefix(in.instance, "GYR");
+  w.text += "# corrected = v - " + p + "OFFS_?, in rad/s\n";
+  for (int k = 0; k < 3; ++k) w.param(p + "OFFS_" + kAxes[k], t.offset(k));
+}
+
+void write(const ExportInput& in, ExportOutput& out) {
+  Writer w{in, out,
+           "# scalcal export --format ardupilot --instrument " + std::string(instrument_name(in.instrument)) +
+               " (parameter file NAME,VALUE)\n"};
+  if (in.instrument == Instrument::accel)
+    write_accel(in, out, w);
+  else if (in.instrument == Instrument::mag)
+    write_mag(in, out, w);
+  else
+    write_gyro(in, out, w);
+  out.text = w.text;
+}
+
+}  // namespace
+
+ExportFormat ardupilot_format() {
+  return {"ardupilot",
+          "ArduPilot's INS_ACC*, COMPASS_* and INS_GYR* parameters (m/s^2, milligauss, rad/s)",
+          {Instrument::accel, Instrument::mag, Instrument::gyro},
+          write};
+}
+
+}  // namespace scalcal

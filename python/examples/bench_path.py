@@ -1,0 +1,28 @@
+"""The bench path from Python, end to end: design a program for a tilt table, plan its settings,
+rehearse the log a meter would write, calibrate it, save and reload the calibration, export it to
+PX4 and apply it (docs/python.md; run by ctest -L docs). Usage: bench_path.py [FOLDER]"""
+import json
+import os
+import sys
+
+import numpy as np
+import scalcal
+
+folder = sys.argv[1] if len(sys.argv) > 1 else "."
+path = lambda name: os.path.join(folder, name)  # noqa: E731
+
+design = scalcal.optimize(positions=12, criterion="D", region="cap:40", seed=1)        # the bench reaches 40 deg
+plan = scalcal.plan(design["program"], bench="tilt:40:flip", resolution=0.1)           # the operator's settings
+truth = scalcal.simulate(program=design["program"], noise=1e-3, magnitude=9.80665, seed=2,
+                         log=path("log.csv"), truth=path("truth.json"))               # a rehearsal log
+cal = scalcal.calibrate(measurements=path("log.csv"), magnitude=9.80665, suggest=0)    # a Calibration
+cal.save(path("cal.json"))                                                             # what the CLI writes
+again = scalcal.Calibration.load(path("cal.json"))
+json.dumps(again)                                                                       # plain JSON values
+px4 = scalcal.export(again, format="px4")                                              # PX4's parameters, m/s^2
+rows = scalcal.correct(calibration=again, measurements=path("log.csv"))
+print(f"design D efficiency on cap:40: {design['efficiency']:.4f}; plan: {len(plan['settings'])} settings")
+print(f"{cal['instrument']} calibration in {cal['units']['physical']}: bias_x {cal['bias'][0]:.5f} "
+      f"+- {cal['bias_std'][0]:.5f} (truth {truth['bias'][0]:.5f})")
+print("CAL_ACC0_XOFF", px4["parameters"]["CAL_ACC0_XOFF"])
+print(f"corrected modulus: mean {np.mean(rows['modulus']):.5f}")
