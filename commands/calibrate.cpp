@@ -377,7 +377,8 @@ CalibrateResult calibrate(const CalibrateRequest& q, CalibrationInput in, const 
     out.chosen = in.chosen;
     out.rows = in.log->size();
     out.motion = in.motion;
-    out.sample_rate = 1 / in.detection.sample_period;
+    // The median time step's reciprocal, to 12 digits (a log's time stamps carry no more).
+    out.sample_rate = std::stod(number(1 / in.detection.sample_period, 12));
   }
   collect_positions(in, out);
   check_finite(out);

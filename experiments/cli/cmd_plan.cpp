@@ -27,7 +27,10 @@ std::string fixed(double v, int places, int width) {
   return s;
 }
 
+// A share below 1e-12 is rounding (the criteria carry about 15 digits): it prints as such, not as a
+// number that changes from one CPU to another.
 std::string percent(double share) {
+  if (std::abs(share) < 1e-12) return "< 1e-10 %";
   char s[32];
   std::snprintf(s, sizeof s, "%.3g %%", 100 * share);
   return s;

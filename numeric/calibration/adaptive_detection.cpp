@@ -13,7 +13,7 @@ std::vector<PositionSamples> interval_positions(const RawLog& log, const Interva
     PositionSamples p;
     p.line = log.lines[static_cast<std::size_t>(iv.begin)];
     for (int i = iv.begin; i <= iv.end; ++i) {
-      if (!log.finite(i)) continue;
+      if (!log.finite(i) || iv.in_break(i)) continue;
       p.samples.push_back(log.samples[static_cast<std::size_t>(i)]);
       p.sample_lines.push_back(log.lines[static_cast<std::size_t>(i)]);
     }

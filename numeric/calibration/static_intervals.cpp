@@ -197,9 +197,8 @@ std::vector<char> usable_samples(const RawLog& log, const StaticIntervalOptions&
 // otherwise count one pose as several, each an independent position to the fit). A break of at
 // most a second; means within 6 standard errors of their difference, one sample's variance per axis
 // taken from the floor (its norm over three equal variances is sqrt(3) sigma^2).
-std::vector<std::pair<int, int>> merged_runs(const RawLog& log, const std::vector<char>& usable, const Vec3& shift,
-                                             const std::vector<std::pair<int, int>>& runs, double floor,
-                                             double period) {
+std::vector<StaticInterval> merged_runs(const RawLog& log, const std::vector<char>& usable, const Vec3& shift,
+                                        const std::vector<std::pair<int, int>>& runs, double floor, double period) {
   const auto mean_of = [&](int i, int j, int& count) {
     Vec3 s = Vec3::Zero();
     count = 0;
@@ -209,17 +208,24 @@ std::vector<std::pair<int, int>> merged_runs(const RawLog& log, const std::vecto
   };
   const double sigma2 = floor / std::sqrt(3.0);
   const int longest_break = std::max(1, static_cast<int>(std::lround(1.0 / period)));
-  std::vector<std::pair<int, int>> out;
+  std::vector<StaticInterval> out;
+  int last_begin = 0;  // the last run merged into out.back(), whose mean the next run is judged against
   for (const auto& run : runs) {
-    if (!out.empty() && run.first - out.back().second - 1 <= longest_break) {
+    if (!out.empty() && run.first - out.back().end - 1 <= longest_break) {
       int na = 0, nb = 0;
-      const Vec3 a = mean_of(out.back().first, out.back().second, na), b = mean_of(run.first, run.second, nb);
+      const Vec3 a = mean_of(last_begin, out.back().end, na), b = mean_of(run.first, run.second, nb);
       if ((a - b).norm() <= 6 * std::sqrt(3 * sigma2 * (1.0 / na + 1.0 / nb))) {
-        out.back().second = run.second;
+        out.back().breaks.emplace_back(out.back().end + 1, run.first - 1);
+        out.back().end = run.second;
+        last_begin = run.first;
         continue;
       }
     }
-    out.push_back(run);
+    StaticInterval iv;
+    iv.begin = run.first;
+    iv.end = run.second;
+    out.push_back(iv);
+    last_begin = run.first;
   }
   return out;
 }
@@ -308,14 +314,16 @@ IntervalDetection detect_static_intervals(const RawLog& log, const StaticInterva
     i = j + 1;
   }
   const double radius = field_radius(log, usable);
-  for (const auto& [i, j] : merged_runs(log, usable, shift, runs, d.still_variance, d.sample_period)) {
-    if (j - i + 1 >= min_samples && drifts(log, usable, i, j, radius)) {
+  for (StaticInterval iv : merged_runs(log, usable, shift, runs, d.still_variance, d.sample_period)) {
+    if (iv.samples() >= min_samples && drifts(log, usable, iv.begin, iv.end, radius)) {
       ++d.drifting_runs;
       continue;
     }
-    if (j - i + 1 >= min_samples) {
-      d.intervals.push_back({i, j, log.t[static_cast<std::size_t>(i)], log.t[static_cast<std::size_t>(j)]});
-      d.longest_fraction = std::max(d.longest_fraction, static_cast<double>(j - i + 1) / n);
+    if (iv.samples() >= min_samples) {
+      iv.start = log.t[static_cast<std::size_t>(iv.begin)];
+      iv.stop = log.t[static_cast<std::size_t>(iv.end)];
+      d.longest_fraction = std::max(d.longest_fraction, static_cast<double>(iv.samples()) / n);
+      d.intervals.push_back(std::move(iv));
     } else {
       ++d.short_runs;
     }

@@ -11,6 +11,7 @@
 // positions anyway. `still_seconds` > 0 restores the initial-period floor.
 #pragma once
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "numeric/calibration/raw_log.hpp"
@@ -33,7 +34,19 @@ struct StaticIntervalOptions {
 struct StaticInterval {
   int begin = 0, end = 0;      // sample indices, inclusive
   double start = 0, stop = 0;  // their times (seconds)
-  int samples() const { return end - begin + 1; }
+  // Short breaks inside (sample index ranges, inclusive) where a noisy window crossed the threshold:
+  // the pose goes on, these samples are not its.
+  std::vector<std::pair<int, int>> breaks;
+  int samples() const {
+    int n = end - begin + 1;
+    for (const auto& [a, b] : breaks) n -= b - a + 1;
+    return n;
+  }
+  bool in_break(int i) const {
+    for (const auto& [a, b] : breaks)
+      if (i >= a && i <= b) return true;
+    return false;
+  }
 };
 
 struct IntervalDetection {

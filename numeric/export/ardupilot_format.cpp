@@ -56,9 +56,7 @@ void write_accel(const ExportInput& in, ExportOutput& out, Writer& w) {
 void write_mag(const ExportInput& in, ExportOutput& out, Writer& w) {
   check_instance(in, "ardupilot", 3);
   const TargetCorrection t = in_target_units(in, *parse_unit("mG"), "ardupilot");
-  const Mat3 S = symmetric_factor(t.matrix);
-  out.rotation_rad = rotation_angle(t.matrix * S.inverse());
-  check_dropped(in, out, "ardupilot", "the rotation part of the magnetometer's matrix", dropped_share(t.matrix, S));
+  const Mat3 S = symmetric_form(in, out, "ardupilot", t.matrix);
   const std::string n = in.instance == 0 ? "" : std::to_string(in.instance + 1);
   w.text += "# corrected = M (v + COMPASS_OFS" + n + "_?), M symmetric: diagonal COMPASS_DIA" + n + "_?, COMPASS_ODI" +
             n + "_X = M01, _Y = M02, _Z = M12; offsets in milligauss\n";

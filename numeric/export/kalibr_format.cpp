@@ -7,6 +7,7 @@
 // same way from a gyro calibration (Tw, R_IMUtoGYRO, `gyroscopes: M:`, `C_gyro_i:`). Both tools
 // estimate the biases online and have no key for them: the offset is stated in a comment only.
 #include <cmath>
+#include <cstdio>
 
 #include "numeric/export/formats.hpp"
 #include "numeric/export/matrix_forms.hpp"
@@ -53,11 +54,13 @@ void write(const ExportInput& in, ExportOutput& out) {
   s += std::string("# The ") + (gyro ? "accelerometer" : "gyroscope") +
        "'s blocks are identity: this calibration is not of it.\n";
   s += "imu0:\n  model: kalibr\n  rostopic: /imu0\n  time_offset: 0.0\n";
-  if (std::isfinite(in.sample_rate)) s += "  update_rate: " + exact_text(in.sample_rate) + "\n";
+  if (std::isfinite(in.sample_rate)) s += "  update_rate: " + float_text(in.sample_rate) + "\n";
   if (std::isfinite(in.noise) && std::isfinite(in.sample_rate)) {
     // White noise of one sample sigma at rate f is a density sigma / sqrt(f) per sqrt(Hz).
     const double density = in.noise * t.per_physical / std::sqrt(in.sample_rate);
-    s += std::string("  # ") + (gyro ? "gyroscope" : "accelerometer") + "_noise_density: " + exact_text(density) +
+    char d[32];
+    std::snprintf(d, sizeof d, "%.4g", density);
+    s += std::string("  # ") + (gyro ? "gyroscope" : "accelerometer") + "_noise_density: " + d +
          " (this log's white noise); both readers also need the noise densities and random walks (an Allan "
          "variance)\n";
   }

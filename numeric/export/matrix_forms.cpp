@@ -1,6 +1,8 @@
 // The forms a target stores a correction in (matrix_forms.hpp).
 #include "numeric/export/matrix_forms.hpp"
 
+#include "numeric/calibration/full_correction.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -31,7 +33,18 @@ std::optional<RotationTriangle> rotation_times_lower(const Mat3& C) {
   return f;
 }
 
-double rotation_angle(const Mat3& R) { return std::acos(std::clamp((R.trace() - 1) / 2, -1.0, 1.0)); }
+// atan2 of the sine (from the antisymmetric part) and the cosine: acos of the trace alone loses
+// half the digits near 0 (1e-8 radians for a rotation of none).
+double rotation_angle(const Mat3& R) {
+  const Vec3 s(R(2, 1) - R(1, 2), R(0, 2) - R(2, 0), R(1, 0) - R(0, 1));
+  return std::atan2(s.norm() / 2, (R.trace() - 1) / 2);
+}
+
+double rotation_beyond_convention(const Mat3& C) {
+  const auto canonical = canonical_correction(C, Vec3::Zero());
+  if (!canonical) return NAN;
+  return rotation_angle(C * canonical->matrix.inverse());
+}
 
 double dropped_share(const Mat3& C, const Mat3& kept) {
   const Eigen::JacobiSVD<Mat3> svd(C);

@@ -26,4 +26,10 @@ double rotation_angle(const Mat3& R);
 // The largest |(C - D) v| / |C v| over directions v, for D what the target keeps of C.
 double dropped_share(const Mat3& C, const Mat3& kept);
 
+// The angle of the rotation C holds beyond the paper's convention (the misalignment's rotation part
+// zero, full_correction.hpp), which scalar calibration never determines: 0 for every matrix
+// `calibrate` writes, the angle of a mounting rotation composed into a matrix by hand or by another
+// tool. NaN for a degenerate matrix.
+double rotation_beyond_convention(const Mat3& C);
+
 }  // namespace scalcal

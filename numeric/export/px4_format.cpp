@@ -48,9 +48,7 @@ void write(const ExportInput& in, ExportOutput& out) {
       w.param(name, t.matrix(k, k));
     }
   } else if (in.instrument == Instrument::mag) {
-    const Mat3 S = symmetric_factor(t.matrix);
-    out.rotation_rad = rotation_angle(t.matrix * S.inverse());
-    check_dropped(in, out, "px4", "the rotation part of the magnetometer's matrix", dropped_share(t.matrix, S));
+    const Mat3 S = symmetric_form(in, out, "px4", t.matrix);
     w.text += "# corrected = S (v - CAL_MAG" + n + "_?OFF), S symmetric: diagonal CAL_MAG" + n + "_?SCALE, CAL_MAG" +
               n + "_ODIAG X = S01, Y = S02, Z = S12\n# Vehicle-Id\tComponent-Id\tName\tValue\tType\n";
     for (int k = 0; k < 3; ++k) w.param("CAL_MAG" + n + "_" + kAxes[k] + "OFF", t.offset(k));

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "numeric/export/matrix_forms.hpp"
 #include "numeric/io/input_error.hpp"
 
 namespace scalcal {
@@ -114,6 +115,21 @@ void check_dropped(const ExportInput& in, ExportOutput& out, std::string_view fo
                      text + " (more than " + short_text(100 * kDroppedTolerance) +
                          " %: a wrong matrix?); force writes it all the same");
   out.warnings.push_back(text);
+}
+
+Mat3 symmetric_form(const ExportInput& in, ExportOutput& out, std::string_view format, const Mat3& C) {
+  const Mat3 S = symmetric_factor(C);
+  out.rotation_rad = rotation_angle(C * S.inverse());
+  const double beyond = rotation_beyond_convention(C);
+  // A rotation by theta moves a vector by 2 sin(theta / 2) of its length.
+  check_dropped(in, out, format, "a rotation of the axes beyond scalar calibration's convention (a mounting?)",
+                std::isfinite(beyond) ? 2 * std::sin(beyond / 2) : 1.0);
+  if (out.rotation_rad > 1e-7)
+    out.warnings.push_back("the " + std::string(format) + " export's symmetric matrix turns corrected vectors by " +
+                           short_text(out.rotation_rad * 180 / M_PI) +
+                           " degrees from scalcal's convention: scalar calibration determines the moduli, not this "
+                           "rotation, so both are the calibration");
+  return S;
 }
 
 void check_instance(const ExportInput& in, std::string_view format, int count) {

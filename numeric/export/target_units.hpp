@@ -36,6 +36,11 @@ void check_range(const ExportInput& input, ExportOutput& output, std::string_vie
 // as a firmware's gyro offsets without scales); above float precision a warning saying how much.
 void check_dropped(const ExportInput& input, ExportOutput& output, std::string_view format, std::string_view what,
                    double share, bool refuse = true);
+// A magnetometer's symmetric form S of C = Q S (PX4's and ArduPilot's soft iron): Q turns the
+// corrected vectors from scalcal's convention to the symmetric one, which scalar calibration cannot
+// tell apart (a warning says by how much); a rotation C holds beyond the convention (a mounting) is
+// lost, and refused beyond kDroppedTolerance unless forced. Returns S.
+Mat3 symmetric_form(const ExportInput& input, ExportOutput& output, std::string_view format, const Mat3& C);
 // The instance is one the target has (0 .. count - 1).
 void check_instance(const ExportInput& input, std::string_view format, int count);
 

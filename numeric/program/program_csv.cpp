@@ -99,7 +99,10 @@ void write_program_csv(std::ostream& out, const Program& program, const std::vec
   out << '\n';
   for (std::size_t i = 0; i < program.positions.size(); ++i) {
     const Vec3& eta = program.positions[i];
-    const auto a = angles_deg(eta);
+    auto a = angles_deg(eta);
+    // At a pole alpha1 (the azimuth) is atan2 of rounding noise, and would print another angle on
+    // another CPU for the same position: 0 there, which names the same direction.
+    if (std::hypot(eta(0), eta(1)) < 1e-12) a(0) = 0;
     out << shortest(eta(0)) << ',' << shortest(eta(1)) << ',' << shortest(eta(2)) << ',' << shortest(a(0)) << ','
         << shortest(a(1));
     for (const auto& c : extra) out << ',' << shortest(c.values[i]);

@@ -28,7 +28,8 @@ std::vector<PositionSamples> positions_of(const RawLog& log, const IntervalDetec
   std::vector<PositionSamples> out;
   for (const auto& iv : d.intervals) {
     PositionSamples p;
-    for (int i = iv.begin; i <= iv.end; ++i) p.samples.push_back(log.samples[static_cast<std::size_t>(i)]);
+    for (int i = iv.begin; i <= iv.end; ++i)
+      if (!iv.in_break(i)) p.samples.push_back(log.samples[static_cast<std::size_t>(i)]);
     out.push_back(p);
   }
   return out;

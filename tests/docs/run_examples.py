@@ -6,12 +6,14 @@ shows them). In the expected text a line "..." stands for any number of lines, a
 for any text (a timing, a path); a number printed with a decimal point or an exponent matches within
 one unit of its last printed digit (line_fits), so a value rounded the other way on another CPU still
 matches, and nothing else does. Commands run in bash in a scratch folder that holds links to the
-repository's data/ and experiments/, with the build's `scalcal` first on PATH, so a page reads as a
+repository's data/ and experiments/ (and the public logs of ../shared/data as shared/), with the build's
+`scalcal` first on PATH, so a page reads as a
 user types. Usage: run_examples.py SOURCE_DIR BUILD_DIR PAGE.md... (exit 1 on the first mismatch
 of each page, with both texts).
 """
 import os
 import re
+from decimal import Decimal
 import shutil
 import subprocess
 import sys
@@ -47,10 +49,10 @@ NUMBER = r"[-+]?(?:\d+\.\d*|\.\d+|\d+(?=[eE]))(?:[eE][-+]?\d+)?"
 
 
 def last_digit_unit(text):
-    """One unit in the last digit a number is printed with: 0.001 for 1.234, 100 for 1.70159e+07."""
+    """One unit in the last digit a number is printed with: 0.001 for 1.234, 100 for 1.70159e+07 (exact)."""
     mantissa, _, exponent = text.lower().partition("e")
     decimals = len(mantissa.split(".")[1]) if "." in mantissa else 0
-    return 10.0 ** (int(exponent or 0) - decimals)
+    return Decimal(1).scaleb(int(exponent or 0) - decimals)
 
 
 def line_fits(pattern, text):
@@ -72,8 +74,8 @@ def line_fits(pattern, text):
     found = re.fullmatch(regex, text.rstrip())
     if not found:
         return False
-    for want, got in zip(numbers, found.groups()):
-        if abs(float(want) - float(got)) > 1.000001 * last_digit_unit(want):
+    for want, got in zip(numbers, found.groups()):  # in decimal: the texts' own digits, exactly
+        if abs(Decimal(want) - Decimal(got)) > last_digit_unit(want):
             return False
     return True
 
@@ -94,6 +96,10 @@ def main(source, build, pages):
     work = tempfile.mkdtemp(prefix="scalcal_docs_")
     for name in ("data", "experiments", "python"):
         os.symlink(os.path.join(source, name), os.path.join(work, name))
+    # The public logs beside the repository (../shared/data: the QMC5883L magnetometer, ...), as shared/.
+    shared = os.path.join(os.path.dirname(os.path.abspath(source)), "shared", "data")
+    if os.path.isdir(shared):
+        os.symlink(shared, os.path.join(work, "shared"))
     env = dict(os.environ)
     env["PATH"] = os.path.join(build, "experiments") + os.pathsep + env.get("PATH", "")
     env["PYTHONPATH"] = os.path.join(build, "python")

@@ -4,6 +4,9 @@
 // test from the firmware's source, as the comments of numeric/export/*_format.cpp cite it.
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
+
+#include "numeric/calibration/full_correction.hpp"
 #include "numeric/export/export_format.hpp"
 #include "numeric/export/matrix_forms.hpp"
 #include "numeric/io/input_error.hpp"
@@ -129,6 +132,29 @@ TEST(ExportFormats, WhatATargetCannotHoldIsRefused) {
   in.units.physical = parse_unit("uT");
   in.raw_scale = parse_amount("0.1uT");
   EXPECT_THROW(run("kalibr", in), RequestError);
+}
+
+TEST(ExportFormats, AMagnetometersSymmetricFormTurnsOnlyWhatScalarCalibrationLeavesOpen) {
+  // A matrix in scalcal's convention (full_correction.hpp) holds no rotation beyond it; the same with a
+  // 30-degree mounting rotation composed in holds 30 degrees, which PX4's symmetric S would lose.
+  Mat3 C;
+  C << 1.05, 0.02, -0.01, 0.02, 0.93, 0.03, -0.01, 0.03, 1.1;
+  const auto canonical = canonical_correction(C, Vec3::Zero());
+  ASSERT_TRUE(canonical);
+  EXPECT_LT(rotation_beyond_convention(canonical->matrix), 1e-12);
+  const Mat3 R = Eigen::AngleAxisd(M_PI / 6, Vec3(1, 2, 3).normalized()).toRotationMatrix();
+  EXPECT_NEAR(rotation_beyond_convention(R * canonical->matrix), M_PI / 6, 1e-12);
+  ExportInput in;
+  in.file = "mag.json";
+  in.instrument = Instrument::mag;
+  in.units.raw = in.units.physical = parse_unit("uT");
+  in.correction.matrix = canonical->matrix;
+  const ExportOutput fine = run("px4", in);
+  EXPECT_GT(fine.rotation_rad, 0);  // S and scalcal's matrix differ by a turn neither determines
+  in.correction.matrix = R * canonical->matrix;
+  EXPECT_THROW(run("px4", in), InputError);
+  in.force = true;
+  EXPECT_NO_THROW(run("ardupilot", in));
 }
 
 TEST(ExportFormats, RotationTimesLowerTriangleRebuildsTheMatrix) {

@@ -30,7 +30,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       o.min_seconds = 0.05;
       for (const auto& iv : scalcal::detect_static_intervals(log, o).intervals) {
         scalcal::PositionSamples p;
-        for (int i = iv.begin; i <= iv.end; ++i) p.samples.push_back(log.samples[static_cast<std::size_t>(i)]);
+        for (int i = iv.begin; i <= iv.end; ++i)
+          if (!iv.in_break(i)) p.samples.push_back(log.samples[static_cast<std::size_t>(i)]);
         samples.push_back(p);
       }
     } else {
