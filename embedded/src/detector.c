@@ -56,14 +56,14 @@ scalcal_status scalcal_detector_init(scalcal_detector* det, const scalcal_detect
 /* floor(8 log2 v) for v > 0, exactly: v = g 2^E with g in [1, 2), and the edges 2^(j/8). */
 static int32_t bin_of(scalcal_real v) {
   int e, s = 0;
-  const scalcal_real g = 2 * SC_FREXP(v, &e);
+  const scalcal_real g = 2 * sc_frexp(v, &e);
   while (s < 7 && g >= kEdge[s]) ++s;
   return (int32_t)(8 * (e - 1) + s);
 }
 
 static scalcal_real centre_of(int32_t bin) {
   const int32_t octave = bin >= 0 ? bin / 8 : -((-bin + 7) / 8);
-  return SC_LDEXP(kCentre[bin - 8 * octave], (int)octave);
+  return sc_ldexp(kCentre[bin - 8 * octave], (int)octave);
 }
 
 /* The noise floor from the histogram: the median of the quiet windows, those within 3 times the
@@ -115,7 +115,11 @@ static scalcal_event close_pose(scalcal_detector* det, scalcal_pose_set* set) {
   scalcal_event event = SCALCAL_EVENT_NONE;
   if (det->in_pose) {
     if (det->pose.count >= det->min_samples) {
-      if (scalcal_pose_set_append(set, &det->pose) == SCALCAL_OK) event = SCALCAL_EVENT_POSE;
+      if (scalcal_pose_set_append(set, &det->pose) == SCALCAL_OK) {
+        event = SCALCAL_EVENT_POSE;
+        det->closed_first = det->pose.first;
+        det->closed_last = det->pose.last;
+      }
       else
         event = SCALCAL_EVENT_FULL, det->dropped += 1;
     } else {
@@ -123,7 +127,7 @@ static scalcal_event close_pose(scalcal_detector* det, scalcal_pose_set* set) {
     }
   }
   det->in_pose = 0;
-  scalcal_pose_clear(&det->pose);
+  scalcal_pose_sum_clear(&det->pose);
   return event;
 }
 
@@ -131,7 +135,7 @@ static scalcal_event close_pose(scalcal_detector* det, scalcal_pose_set* set) {
 static scalcal_event judge_block(scalcal_detector* det, scalcal_pose_set* set, const scalcal_block* centre,
                                  int still, scalcal_real v) {
   scalcal_event event = SCALCAL_EVENT_NONE;
-  scalcal_pose grown;
+  scalcal_pose_sum grown;
   if (!still) return close_pose(det, set);
   if (det->in_pose && det->pose_max >= det->threshold) { /* the floor fell below what the pose saw */
     det->restarts += 1;
@@ -139,8 +143,8 @@ static scalcal_event judge_block(scalcal_detector* det, scalcal_pose_set* set, c
   }
   if (det->in_pose) {
     grown = det->pose;
-    scalcal_pose_merge(&grown, &centre->stats);
-    if (scalcal_pose_variance_norm(&grown) < det->threshold && grown.count <= MAX_POSE_SAMPLES) {
+    scalcal_pose_sum_merge(&grown, &centre->stats);
+    if (scalcal_pose_sum_variance_norm(&grown) < det->threshold && grown.count <= MAX_POSE_SAMPLES) {
       det->pose = grown;
       if (v > det->pose_max) det->pose_max = v;
       return SCALCAL_EVENT_NONE;
@@ -155,21 +159,21 @@ static scalcal_event judge_block(scalcal_detector* det, scalcal_pose_set* set, c
 
 /* A block is complete: the window of the last BLOCKS blocks judges its centre block. */
 static scalcal_event window_done(scalcal_detector* det, scalcal_pose_set* set) {
-  scalcal_pose merged;
+  scalcal_pose_sum merged;
   scalcal_real diff2 = 0, v = 0, variance;
   uint32_t diffs = 0;
   int k, valid = 1, still;
   const scalcal_block* centre = &det->ring[(det->blocks - 1 - HALF) % SCALCAL_DETECTOR_BLOCKS];
-  scalcal_pose_clear(&merged);
+  scalcal_pose_sum_clear(&merged);
   for (k = 0; k < SCALCAL_DETECTOR_BLOCKS; ++k) {
     const scalcal_block* b = &det->ring[k];
     valid = valid && b->valid && b->stats.count > 1;
-    scalcal_pose_merge(&merged, &b->stats);
+    scalcal_pose_sum_merge(&merged, &b->stats);
     diff2 += b->diff2;
     diffs += b->diffs;
   }
   if (valid) {
-    v = scalcal_pose_variance_norm(&merged);
+    v = scalcal_pose_sum_variance_norm(&merged);
     variance = (merged.scatter[0] + merged.scatter[1] + merged.scatter[2]) / (scalcal_real)merged.count;
     /* white noise: E |x_k - x_(k-1)|^2 = 2 variance; smooth motion: far less */
     if (v > 0 && diffs > 0 && sc_finite(v) && diff2 / (scalcal_real)diffs >= 2 * det->options.whiteness_min * variance)
@@ -202,7 +206,7 @@ scalcal_event scalcal_detector_push(scalcal_detector* det, scalcal_pose_set* set
     b->diffs += det->has_last ? 1u : 0u;
     for (k = 0; k < 3; ++k) det->last[k] = x[k];
     det->has_last = 1;
-    scalcal_pose_add(set, &b->stats, x, det->index);
+    scalcal_pose_sum_add(set, &b->stats, x, det->index);
   }
   det->index += 1;
   b->pushed += 1;

@@ -19,7 +19,7 @@ static int poses_finite(const scalcal_pose_set* set) {
     const scalcal_pose* p = &set->poses[i];
     if (p->count == 0) return 0;
     for (k = 0; k < 3; ++k)
-      if (!sc_finite(p->ref[k]) || !sc_finite(p->mean[k]) || !sc_finite(set->origin[k])) return 0;
+      if (!sc_finite(p->mean[k]) || !sc_finite(set->origin[k])) return 0;
     for (k = 0; k < 6; ++k)
       if (!sc_finite(p->scatter[k])) return 0;
   }

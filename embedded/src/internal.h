@@ -11,19 +11,21 @@
 #ifdef SCALCAL_DOUBLE
 #define SC_SQRT(x) sqrt(x)
 #define SC_FABS(x) fabs(x)
-#define SC_FREXP(x, e) frexp((x), (e))
-#define SC_LDEXP(x, e) ldexp((x), (e))
 #else
 #define SC_SQRT(x) sqrtf(x)
 #define SC_FABS(x) fabsf(x)
-#define SC_FREXP(x, e) frexpf((x), (e))
-#define SC_LDEXP(x, e) ldexpf((x), (e))
 #endif
 
 #define SC_P SCALCAL_MAX_PARAMETERS
 
 /* Finite: neither NaN nor infinite. */
 int sc_finite(scalcal_real x);
+
+/* frexp and ldexp on the bits of an IEEE value (no libm: newlib's set errno, which pulls a 1 KB
+ * reentrancy structure into RAM). sc_frexp: x = f 2^e with f in [0.5, 1), for finite x > 0.
+ * sc_ldexp: x 2^e, exact while the result is a normal number. */
+scalcal_real sc_frexp(scalcal_real x, int* e);
+scalcal_real sc_ldexp(scalcal_real x, int e);
 
 /* x^(1/p) for x > 0 by Newton's method from a frexp start: the same bits on every target (no libm
  * pow or cbrt, whose last bits differ between C libraries). */

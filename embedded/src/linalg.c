@@ -1,18 +1,55 @@
 /* The small dense linear algebra of the fit (internal.h): Cholesky, symmetric Jacobi eigenvalues,
  * 3 x 3 inverse and products, and a root without libm. */
+#include <stdint.h>
 #include <string.h>
 
 #include "internal.h"
 
 int sc_finite(scalcal_real x) { return isfinite(x); }
 
+#ifdef SCALCAL_DOUBLE
+typedef uint64_t sc_bits;
+#define SC_MANTISSA 52
+#define SC_BIAS 1022
+#define SC_EXPONENT_MASK 0x7FFu
+#else
+typedef uint32_t sc_bits;
+#define SC_MANTISSA 23
+#define SC_BIAS 126
+#define SC_EXPONENT_MASK 0xFFu
+#endif
+
+scalcal_real sc_frexp(scalcal_real x, int* e) {
+  sc_bits u;
+  int shift = 0;
+  if (!(x > 0) || !sc_finite(x)) return *e = 0, x;
+  if (x < (scalcal_real)1 / ((sc_bits)1 << 30) / ((sc_bits)1 << 30)) x *= (scalcal_real)((sc_bits)1 << 30), shift = 30;
+  memcpy(&u, &x, sizeof u);
+  *e = (int)((u >> SC_MANTISSA) & SC_EXPONENT_MASK) - SC_BIAS - shift;
+  u = (u & ~((sc_bits)SC_EXPONENT_MASK << SC_MANTISSA)) | ((sc_bits)SC_BIAS << SC_MANTISSA);
+  memcpy(&x, &u, sizeof u);
+  return x;
+}
+
+scalcal_real sc_ldexp(scalcal_real x, int e) {
+  while (e != 0) {
+    const int step = e > 60 ? 60 : e < -60 ? -60 : e;
+    const sc_bits u = (sc_bits)(step + SC_BIAS + 1) << SC_MANTISSA; /* 2^step */
+    scalcal_real p;
+    memcpy(&p, &u, sizeof p);
+    x *= p;
+    e -= step;
+  }
+  return x;
+}
+
 scalcal_real sc_root(scalcal_real x, int p) {
   scalcal_real y, prev = 0;
   int e, i, k;
   if (!(x > 0) || !sc_finite(x)) return x > 0 ? x : 0;
   /* Start within a factor 2 of the root: 2^(e/p). */
-  (void)SC_FREXP(x, &e);
-  y = SC_LDEXP((scalcal_real)1, e / p);
+  (void)sc_frexp(x, &e);
+  y = sc_ldexp((scalcal_real)1, e / p);
   for (i = 0; i < 100; ++i) {
     scalcal_real power = 1;
     for (k = 0; k < p - 1; ++k) power *= y;

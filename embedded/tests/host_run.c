@@ -15,6 +15,9 @@
 
 #define MAX_INTERVALS 4096
 
+/* The stream indices of each pose stored (the fit does not need them; the comparison does). */
+static uint32_t pose_first[MAX_INTERVALS], pose_last[MAX_INTERVALS];
+
 static void print_vec(const char* key, const scalcal_real* v, int n) {
   int k;
   printf("%s", key);
@@ -57,17 +60,18 @@ static int finite3(const double* x) { return isfinite(x[0]) && isfinite(x[1]) &&
 
 /* Poses from the CLI's intervals: every finite, not excluded sample inside interval k goes to pose k. */
 static int feed_given(const test_log* log, const given_intervals* g, scalcal_pose_set* set) {
-  static scalcal_pose pose;
+  static scalcal_pose_sum pose;
   int row, k = 0;
   for (k = 0; k < g->count; ++k) {
-    scalcal_pose_clear(&pose);
+    scalcal_pose_sum_clear(&pose);
     for (row = 0; row < log->rows; ++row) {
       scalcal_real x[3];
       if (!(log->t[row] >= g->start[k] && log->t[row] <= g->end[k])) continue;
       if (!finite3(log->x[row]) || !isfinite(log->t[row]) || is_excluded(g, log->line[row])) continue;
       x[0] = (scalcal_real)log->x[row][0], x[1] = (scalcal_real)log->x[row][1], x[2] = (scalcal_real)log->x[row][2];
-      scalcal_pose_add(set, &pose, x, (uint32_t)row);
+      scalcal_pose_sum_add(set, &pose, x, (uint32_t)row);
     }
+    pose_first[set->count] = pose.first, pose_last[set->count] = pose.last;
     if (scalcal_pose_set_append(set, &pose) != SCALCAL_OK) return 1;
   }
   return 0;
@@ -83,9 +87,11 @@ static int feed_detector(const test_log* log, double rate, scalcal_pose_set* set
   for (row = 0; row < log->rows; ++row) {
     scalcal_real x[3];
     x[0] = (scalcal_real)log->x[row][0], x[1] = (scalcal_real)log->x[row][1], x[2] = (scalcal_real)log->x[row][2];
-    scalcal_detector_push(&det, set, x);
+    if (scalcal_detector_push(&det, set, x) == SCALCAL_EVENT_POSE)
+      pose_first[set->count - 1] = det.closed_first, pose_last[set->count - 1] = det.closed_last;
   }
-  scalcal_detector_finish(&det, set);
+  if (scalcal_detector_finish(&det, set) == SCALCAL_EVENT_POSE)
+    pose_first[set->count - 1] = det.closed_first, pose_last[set->count - 1] = det.closed_last;
   printf("detector_floor %.17g\n", (double)det.floor);
   printf("detector_threshold %.17g\n", (double)det.threshold);
   printf("detector_window %u\n", (unsigned)(det.block_samples * SCALCAL_DETECTOR_BLOCKS));
@@ -128,8 +134,7 @@ static void print_result(const scalcal_pose_set* set, const scalcal_calibration*
   for (i = 0; i < set->count; ++i) {
     scalcal_real m[3];
     scalcal_pose_mean(set, i, m);
-    printf("pose %u %u %u %u %.17g %.17g %.17g\n", (unsigned)i, (unsigned)set->poses[i].first,
-           (unsigned)set->poses[i].last, (unsigned)set->poses[i].count, (double)m[0], (double)m[1], (double)m[2]);
+    printf("pose %u %u %u %u %.17g %.17g %.17g\n", (unsigned)i, (unsigned)pose_first[i], (unsigned)pose_last[i], (unsigned)set->poses[i].count, (double)m[0], (double)m[1], (double)m[2]);
   }
 }
 

@@ -240,7 +240,7 @@ static void test_fuzz(void) {
 static void test_degenerate(void) {
   meter m;
   scalcal_pose_set set;
-  scalcal_pose p;
+  scalcal_pose_sum p;
   scalcal_fit_options o;
   scalcal_calibration c;
   scalcal_fit_report r;
@@ -253,8 +253,8 @@ static void test_degenerate(void) {
   scalcal_pose_set_init(&set, storage, SCALCAL_MAX_POSES);
   for (i = 0; i < 20; ++i) { /* every pose in the x-y plane */
     d[0] = cos(0.3 * i), d[1] = sin(0.3 * i), d[2] = 0;
-    scalcal_pose_clear(&p);
-    for (s = 0; s < 50; ++s) measure(&m, d, x), scalcal_pose_add(&set, &p, x, 0);
+    scalcal_pose_sum_clear(&p);
+    for (s = 0; s < 50; ++s) measure(&m, d, x), scalcal_pose_sum_add(&set, &p, x, 0);
     scalcal_pose_set_append(&set, &p);
   }
   s = scalcal_fit(&set, &o, &c, &r);
@@ -320,7 +320,7 @@ static void test_record(void) {
 static void test_guidance(void) {
   static const double faces[6][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
   scalcal_pose_set set;
-  scalcal_pose p;
+  scalcal_pose_sum p;
   scalcal_calibration identity;
   scalcal_program_quality q;
   const scalcal_real offset[3] = {0, 0, 0}, matrix[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
@@ -332,8 +332,8 @@ static void test_guidance(void) {
   for (i = 0; i < 12; ++i) {
     scalcal_real x[3];
     x[0] = (scalcal_real)faces[i % 6][0], x[1] = (scalcal_real)faces[i % 6][1], x[2] = (scalcal_real)faces[i % 6][2];
-    scalcal_pose_clear(&p);
-    scalcal_pose_add(&set, &p, x, 0);
+    scalcal_pose_sum_clear(&p);
+    scalcal_pose_sum_add(&set, &p, x, 0);
     scalcal_pose_set_append(&set, &p);
   }
   CHECK(scalcal_program_quality_of(&set, &identity, SCALCAL_MODEL_AXIS6, &q) == SCALCAL_OK && q.full_rank, "faces");

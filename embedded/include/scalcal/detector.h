@@ -45,7 +45,7 @@ typedef enum {
 } scalcal_event;
 
 typedef struct {
-  scalcal_pose stats;
+  scalcal_pose_sum stats;
   scalcal_real diff2; /* sum over the block of |x_k - x_(k-1)|^2 (all three axes) */
   uint32_t diffs;
   uint32_t pushed; /* samples pushed into the block, valid or not */
@@ -70,9 +70,10 @@ typedef struct {
   int has_base;
   scalcal_real floor;     /* the noise floor (a still window's variance norm, units squared); 0: none yet */
   scalcal_real threshold; /* threshold_factor x floor */
-  scalcal_pose pose;      /* the pose being summed */
+  scalcal_pose_sum pose;  /* the pose being summed */
   scalcal_real pose_max;  /* the largest window variance norm of its blocks */
   int in_pose;
+  uint32_t closed_first, closed_last; /* the stream indices of the last pose stored */
   uint32_t invalid, short_runs, dropped, restarts;
 } scalcal_detector;
 

@@ -172,6 +172,5 @@ int main(void) {
   put_uint("record_crc", (uint32_t)record[124] | (uint32_t)record[125] << 8 | (uint32_t)record[126] << 16 |
                              (uint32_t)record[127] << 24);
   put_uint("record_read", (uint32_t)scalcal_record_read(record, &back, 0));
-  put_uint("stack_peak_bytes", stack_peak_bytes());
   return 0;
 }
