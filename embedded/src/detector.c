@@ -167,7 +167,7 @@ static scalcal_event window_done(scalcal_detector* det, scalcal_pose_set* set) {
   scalcal_pose_sum_clear(&merged);
   for (k = 0; k < SCALCAL_DETECTOR_BLOCKS; ++k) {
     const scalcal_block* b = &det->ring[k];
-    valid = valid && b->valid && b->stats.count > 1;
+    valid = valid && b->valid;
     scalcal_pose_sum_merge(&merged, &b->stats);
     diff2 += b->diff2;
     diffs += b->diffs;

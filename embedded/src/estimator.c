@@ -44,11 +44,12 @@ static void derivative(const sc_problem* q, const sc_meter* m, const scalcal_rea
     }
 }
 
-/* The step: the paper's (exact = 0) or Gauss-Newton's (exact = 1). 0 when the normal matrix is
- * not positive definite. */
-static int step_at(const sc_problem* q, const scalcal_real* X, int exact, scalcal_real* dX) {
+/* The step: the paper's (exact = 0) or Gauss-Newton's (exact = 1); *in_se (may be null) its largest
+ * entry in residual-based standard errors, sqrt(cost / (N - P) (H^T W H)^-1_rr) (infinity when
+ * N = P). 0 when the normal matrix is not positive definite. */
+static int step_at(const sc_problem* q, const scalcal_real* X, int exact, scalcal_real* dX, scalcal_real* in_se) {
   const int p = q->p;
-  scalcal_real info[SC_P * SC_P], rhs[SC_P], h[SC_P], c[3];
+  scalcal_real info[SC_P * SC_P], rhs[SC_P], h[SC_P], c[3], cost = 0;
   sc_meter m;
   uint32_t i;
   int r, s;
@@ -66,6 +67,7 @@ static int step_at(const sc_problem* q, const scalcal_real* X, int exact, scalca
       const scalcal_real e[3] = {c[0] / norm, c[1] / norm, c[2] / norm};
       sc_row(e, h);
     }
+    cost += w * J * J;
     for (r = 0; r < p; ++r) {
       rhs[r] += w * J * h[r];
       for (s = 0; s < p; ++s) info[r * p + s] += w * h[r] * h[s];
@@ -75,6 +77,17 @@ static int step_at(const sc_problem* q, const scalcal_real* X, int exact, scalca
   sc_cholesky_solve(p, info, rhs, dX);
   for (r = 0; r < p; ++r)
     if (!sc_finite(dX[r])) return 0;
+  if (in_se) {
+    *in_se = 0;
+    if (q->set->count <= (uint32_t)p || !(cost > 0)) *in_se = (scalcal_real)INFINITY;
+    for (r = 0; r < p && *in_se < (scalcal_real)INFINITY; ++r) {
+      scalcal_real e[SC_P], x[SC_P], se;
+      for (s = 0; s < p; ++s) e[s] = s == r ? 1 : 0;
+      sc_cholesky_solve(p, info, e, x);
+      se = SC_SQRT(cost / (scalcal_real)(q->set->count - (uint32_t)p) * x[r]);
+      if (SC_FABS(dX[r]) / se > *in_se) *in_se = SC_FABS(dX[r]) / se;
+    }
+  }
   return 1;
 }
 
@@ -122,11 +135,25 @@ void sc_estimate(const sc_problem* q, int max_iterations, scalcal_real* X, scalc
       report->termination = SCALCAL_FIT_NOT_FINITE;
       break;
     }
-    if (step_at(q, X, exact, dX)) accepted = line_search(q, X, dX, &cost, &t, &edge);
-    else
+    scalcal_real in_se = (scalcal_real)INFINITY;
+    if (step_at(q, X, exact, dX, SC_STEP_IN_STANDARD_ERRORS > 0 ? &in_se : 0)) {
+      scalcal_real before[SC_P], cost_before = cost;
+      memcpy(before, X, sizeof before);
+      accepted = line_search(q, X, dX, &cost, &t, &edge);
+      if (accepted && t < SC_PAPER_STEP_MIN) { /* float: a rounding-level step, not a descent */
+        memcpy(X, before, sizeof before);
+        cost = cost_before;
+        accepted = 0;
+      }
+    } else {
       memset(dX, 0, sizeof dX), edge = 0, dX[0] = (scalcal_real)INFINITY;
+    }
     step = max_abs(q->p, dX, accepted ? t : 1);
-    if (step < SC_TOLERANCE || (!accepted && step < SC_TOLERANCE_FLOOR)) {
+    /* Converged: a step below the tolerance, or none that descends while the full step is below the
+     * precision's floor (a halved step of a direction that is not small is not convergence); in
+     * float also a full step below a thousandth of every parameter's standard error. */
+    if ((step < SC_TOLERANCE && max_abs(q->p, dX, 1) < SC_TOLERANCE_FLOOR) ||
+        (!accepted && step < SC_TOLERANCE_FLOOR) || in_se < SC_STEP_IN_STANDARD_ERRORS) {
       report->termination = SCALCAL_FIT_CONVERGED;
       break;
     }

@@ -15,11 +15,22 @@
 #define SC_TOLERANCE_FLOOR ((scalcal_real)1.4901161193847656e-06) /* sqrt(1e4 eps) */
 #define SC_CANONICAL_STOP ((scalcal_real)1e-15)
 #define SC_CANONICAL_ACCEPT ((scalcal_real)1e-12)
+#define SC_PAPER_STEP_MIN ((scalcal_real)0)
+#define SC_STEP_IN_STANDARD_ERRORS ((scalcal_real)0)
 #else
 #define SC_TOLERANCE ((scalcal_real)8 * FLT_EPSILON)
 #define SC_TOLERANCE_FLOOR ((scalcal_real)64 * FLT_EPSILON)
 #define SC_CANONICAL_STOP ((scalcal_real)4 * FLT_EPSILON)
 #define SC_CANONICAL_ACCEPT ((scalcal_real)1e-4)
+/* In float the residual's rounding (J = |c| / |I| - 1 to a few eps) lets a tiny fraction of a step
+ * that does not descend pass the line search: a step accepted only below this fraction counts as
+ * not accepted (the paper's step has done what it can: Gauss-Newton with the exact derivative takes
+ * over; Gauss-Newton's is at the rounding floor). */
+#define SC_PAPER_STEP_MIN ((scalcal_real)0.0625)
+/* The same rounding bounds what float resolves of the minimum: about eps / (the residuals' RMS) of a
+ * standard error. A full step below this fraction of every parameter's (residual-based) standard
+ * error has converged. */
+#define SC_STEP_IN_STANDARD_ERRORS ((scalcal_real)1e-3)
 #endif
 
 /* Thresholds of the host (numeric/calibration/model_choice.hpp, identifiability.hpp, any_units.cpp,
