@@ -8,27 +8,32 @@
 #   flash N bytes, ram M bytes
 # for the float paper9 build with 64 poses (the worked example with the library: text + data, and
 # data + bss + the stack's peak measured under QEMU).
-# Usage: bash embedded/check.sh [--host] [SCALCAL]   (--host: the host tests only, no packages;
-# SCALCAL: the CLI to compare with, default build/experiments/scalcal, built when missing.)
+# Usage: bash embedded/check.sh [--host] [--out DIR] [SCALCAL]   (--host: the host tests only; DIR:
+# where to build, default build/embedded; SCALCAL: the CLI to compare with, default
+# build/experiments/scalcal, built when missing.)
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(dirname "$here")
 out="$root/build/embedded"
 host_only=0
 scalcal=""
-for a in "$@"; do
-  case "$a" in
+while [ $# -gt 0 ]; do
+  case "$1" in
     --host) host_only=1 ;;
-    *) scalcal="$a" ;;
+    --out) out="$2"; shift ;;
+    *) scalcal="$1" ;;
   esac
+  shift
 done
 mkdir -p "$out"
 t0=$(date +%s)
 step() { echo "== $* ($(($(date +%s) - t0)) s)"; }
 
-# Packages: the host compiler and Python; the cross toolchain, newlib and QEMU for the target part.
+# Packages: a host C compiler (gcc, or the clang the project builds with) and Python; the cross
+# toolchain, newlib and QEMU for the target part.
 need=()
-command -v gcc >/dev/null || need+=(gcc libc6-dev)
+cc=$(command -v gcc || command -v clang || true)
+[ -n "$cc" ] || need+=(gcc libc6-dev)
 command -v python3 >/dev/null || need+=(python3)
 if [ "$host_only" = 0 ]; then
   command -v arm-none-eabi-gcc >/dev/null || need+=(gcc-arm-none-eabi)
@@ -41,6 +46,7 @@ if [ ${#need[@]} -gt 0 ]; then
   export DEBIAN_FRONTEND=noninteractive
   apt-get install -y --no-install-recommends "${need[@]}" >/dev/null ||
     { apt-get update -qq && apt-get install -y --no-install-recommends "${need[@]}" >/dev/null; }
+  cc=$(command -v gcc || command -v clang)
 fi
 
 sources=("$here"/src/*.c)
@@ -53,13 +59,13 @@ for prec in float double; do
   [ "$prec" = double ] && def=(-DSCALCAL_DOUBLE)
   objects=()
   for s in "${sources[@]}"; do
-    gcc "${host_flags[@]}" "${def[@]}" -c "$s" -o "$out/host_$(basename "$s" .c)_$prec.o"
+    "$cc" "${host_flags[@]}" "${def[@]}" -c "$s" -o "$out/host_$(basename "$s" .c)_$prec.o"
     objects+=("$out/host_$(basename "$s" .c)_$prec.o")
   done
-  gcc "${host_flags[@]}" "${def[@]}" "${objects[@]}" "$here/tests/unit_test.c" -lm -o "$out/unit_$prec"
-  gcc "${host_flags[@]}" "${def[@]}" "${objects[@]}" "$here/tests/log_reader.c" "$here/tests/host_run.c" -lm \
+  "$cc" "${host_flags[@]}" "${def[@]}" "${objects[@]}" "$here/tests/unit_test.c" -lm -o "$out/unit_$prec"
+  "$cc" "${host_flags[@]}" "${def[@]}" "${objects[@]}" "$here/tests/log_reader.c" "$here/tests/host_run.c" -lm \
     -o "$out/host_run_$prec"
-  gcc "${host_flags[@]}" "${def[@]}" -I"$here/tests/qemu" -DLOG_PATH="\"$xsens\"" "${objects[@]}" \
+  "$cc" "${host_flags[@]}" "${def[@]}" -I"$here/tests/qemu" -DLOG_PATH="\"$xsens\"" "${objects[@]}" \
     "$here/tests/qemu/qemu_main.c" "$here/tests/qemu/host_io.c" -lm -o "$out/stream_host_$prec"
 done
 

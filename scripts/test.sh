@@ -10,6 +10,7 @@ bash scripts/build.sh
 ctest --test-dir build --output-on-failure -j"$(nproc)" "$@"
 # "Registered means everywhere": the CLI built with a fifth criterion, run through every subcommand.
 bash scripts/fifth_criterion.sh
+bash embedded/check.sh  # the firmware library: host tests, Cortex-M4F cross-build, size, QEMU (embedded/README.md)
 if [ "${SCALCAL_SANITIZERS:-1}" != 0 ]; then
   bash scripts/sanitize.sh "$@"
   bash scripts/fuzz.sh 30

@@ -13,9 +13,9 @@
 #include "scalcal/guidance.h"
 #include "scalcal/record.h"
 
-#define RATE_HZ 100       /* the IMU's output data rate */
-#define GOOD_ENOUGH 0.9f  /* stop at this D-efficiency against the sphere's limit */
-#define MIN_POSES 12      /* and at least this many poses (paper9 needs 9; a few spare give errors) */
+#define RATE_HZ 100      /* the IMU's output data rate */
+#define GOOD_ENOUGH 0.9f /* stop at this D-efficiency against the sphere's limit */
+#define MIN_POSES 12     /* and at least this many poses (paper9 needs 9; a few spare give errors) */
 
 static scalcal_pose poses[SCALCAL_MAX_POSES];
 static scalcal_detector detector;

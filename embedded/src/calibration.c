@@ -37,17 +37,28 @@ scalcal_status scalcal_calibration_from_matrix(scalcal_calibration* cal, scalcal
 
 const char* scalcal_status_text(scalcal_status status) {
   switch (status) {
-    case SCALCAL_OK: return "ok";
-    case SCALCAL_E_ARGUMENT: return "bad argument (null pointer, zero capacity or an option out of range)";
-    case SCALCAL_E_TOO_FEW_POSES: return "too few poses for the model (bias3 3, axis6 6, paper9 9)";
-    case SCALCAL_E_NOT_IDENTIFIABLE: return "the poses' directions do not identify the model (add poses)";
-    case SCALCAL_E_NO_START: return "no ellipsoid passes near the pose means (too few or too flat)";
-    case SCALCAL_E_MAGNITUDE: return "the poses' modulus is far from the magnitude (wrong magnitude or units?)";
-    case SCALCAL_E_NOT_CONVERGED: return "the fit did not converge: not to be used";
-    case SCALCAL_E_NOT_FINITE: return "a value that is not finite";
-    case SCALCAL_E_DEGENERATE: return "the correction is degenerate or ill-conditioned (condition > 100)";
-    case SCALCAL_E_FULL: return "the pose set is full";
-    case SCALCAL_E_RECORD: return "the record's magic, version, size or checksum is wrong";
+    case SCALCAL_OK:
+      return "ok";
+    case SCALCAL_E_ARGUMENT:
+      return "bad argument (null pointer, zero capacity or an option out of range)";
+    case SCALCAL_E_TOO_FEW_POSES:
+      return "too few poses for the model (bias3 3, axis6 6, paper9 9)";
+    case SCALCAL_E_NOT_IDENTIFIABLE:
+      return "the poses' directions do not identify the model (add poses)";
+    case SCALCAL_E_NO_START:
+      return "no ellipsoid passes near the pose means (too few or too flat)";
+    case SCALCAL_E_MAGNITUDE:
+      return "the poses' modulus is far from the magnitude (wrong magnitude or units?)";
+    case SCALCAL_E_NOT_CONVERGED:
+      return "the fit did not converge: not to be used";
+    case SCALCAL_E_NOT_FINITE:
+      return "a value that is not finite";
+    case SCALCAL_E_DEGENERATE:
+      return "the correction is degenerate or ill-conditioned (condition > 100)";
+    case SCALCAL_E_FULL:
+      return "the pose set is full";
+    case SCALCAL_E_RECORD:
+      return "the record's magic, version, size or checksum is wrong";
   }
   return "unknown status";
 }

@@ -5,19 +5,19 @@
 #include "scalcal/detector.h"
 
 #define HALF (SCALCAL_DETECTOR_BLOCKS / 2)
-#define QUIET_BINS 12                          /* 3 x the 5 % quantile: 8 log2(3) = 12.7 bins */
+#define QUIET_BINS 12                             /* 3 x the 5 % quantile: 8 log2(3) = 12.7 bins */
 #define MIN_WINDOWS (2 * SCALCAL_DETECTOR_BLOCKS) /* white windows before the floor is trusted */
-#define MAX_POSE_SAMPLES 16777216u              /* 2^24: beyond, a float count is no longer exact */
+#define MAX_POSE_SAMPLES 16777216u                /* 2^24: beyond, a float count is no longer exact */
 
 /* 2^(j/8), j = 1..7 (bin edges within an octave) and 2^((s + 0.5)/8), s = 0..7 (bin centres). */
-static const scalcal_real kEdge[7] = {
-    (scalcal_real)1.0905077326652577, (scalcal_real)1.1892071150027210, (scalcal_real)1.2968395546510096,
-    (scalcal_real)1.4142135623730951, (scalcal_real)1.5422108254079407, (scalcal_real)1.6817928305074290,
-    (scalcal_real)1.8340080864093424};
-static const scalcal_real kCentre[8] = {
-    (scalcal_real)1.0442737824274138, (scalcal_real)1.1387886347566916, (scalcal_real)1.2418578120734840,
-    (scalcal_real)1.3542555469368927, (scalcal_real)1.4768261459394993, (scalcal_real)1.6104903319492543,
-    (scalcal_real)1.7562521603732995, (scalcal_real)1.9152065613971474};
+static const scalcal_real kEdge[7] = {(scalcal_real)1.0905077326652577, (scalcal_real)1.1892071150027210,
+                                      (scalcal_real)1.2968395546510096, (scalcal_real)1.4142135623730951,
+                                      (scalcal_real)1.5422108254079407, (scalcal_real)1.6817928305074290,
+                                      (scalcal_real)1.8340080864093424};
+static const scalcal_real kCentre[8] = {(scalcal_real)1.0442737824274138, (scalcal_real)1.1387886347566916,
+                                        (scalcal_real)1.2418578120734840, (scalcal_real)1.3542555469368927,
+                                        (scalcal_real)1.4768261459394993, (scalcal_real)1.6104903319492543,
+                                        (scalcal_real)1.7562521603732995, (scalcal_real)1.9152065613971474};
 
 void scalcal_detector_options_default(scalcal_detector_options* o, scalcal_real rate_hz) {
   memset(o, 0, sizeof *o);
@@ -119,8 +119,7 @@ static scalcal_event close_pose(scalcal_detector* det, scalcal_pose_set* set) {
         event = SCALCAL_EVENT_POSE;
         det->closed_first = det->pose.first;
         det->closed_last = det->pose.last;
-      }
-      else
+      } else
         event = SCALCAL_EVENT_FULL, det->dropped += 1;
     } else {
       det->short_runs += 1;
@@ -132,8 +131,8 @@ static scalcal_event close_pose(scalcal_detector* det, scalcal_pose_set* set) {
 }
 
 /* The run-length rules for the window's centre block: start, grow, restart or close the pose. */
-static scalcal_event judge_block(scalcal_detector* det, scalcal_pose_set* set, const scalcal_block* centre,
-                                 int still, scalcal_real v) {
+static scalcal_event judge_block(scalcal_detector* det, scalcal_pose_set* set, const scalcal_block* centre, int still,
+                                 scalcal_real v) {
   scalcal_event event = SCALCAL_EVENT_NONE;
   scalcal_pose_sum grown;
   if (!still) return close_pose(det, set);
@@ -229,9 +228,12 @@ scalcal_stream_state scalcal_detector_state(const scalcal_detector* det) {
 
 const char* scalcal_detector_state_text(const scalcal_detector* det) {
   switch (scalcal_detector_state(det)) {
-    case SCALCAL_STREAM_NO_FLOOR: return "no noise floor yet (no quiet window: the stream has not paused)";
-    case SCALCAL_STREAM_MOVING: return "moving";
-    case SCALCAL_STREAM_STILL: return "still";
+    case SCALCAL_STREAM_NO_FLOOR:
+      return "no noise floor yet (no quiet window: the stream has not paused)";
+    case SCALCAL_STREAM_MOVING:
+      return "moving";
+    case SCALCAL_STREAM_STILL:
+      return "still";
   }
   return "unknown";
 }

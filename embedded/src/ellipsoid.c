@@ -64,7 +64,8 @@ int sc_canonical(const scalcal_real matrix[9], const scalcal_real offset[3], sc_
   int i, j, it;
   if (sc_inverse3(matrix, S) == 0 || !sc_finite(S[0])) return 0;
   for (i = 0; i < 3; ++i)
-    for (j = 0; j < 3; ++j) W[i * 3 + j] = S[i * 3] * S[j * 3] + S[i * 3 + 1] * S[j * 3 + 1] + S[i * 3 + 2] * S[j * 3 + 2];
+    for (j = 0; j < 3; ++j)
+      W[i * 3 + j] = S[i * 3] * S[j * 3] + S[i * 3 + 1] * S[j * 3 + 1] + S[i * 3 + 2] * S[j * 3 + 2];
   for (i = 0; i < 3; ++i) out->scale[i] = SC_SQRT(W[i * 3 + i]);
   for (i = 0; i < 3; ++i)
     for (j = 0; j < 3; ++j) cosines[i * 3 + j] = W[i * 3 + j] / (out->scale[i] * out->scale[j]);

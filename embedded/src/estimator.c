@@ -38,8 +38,8 @@ static void derivative(const sc_problem* q, const sc_meter* m, const scalcal_rea
       /* dPhi/dgamma: 1/2 at (a, b) and (b, a), -phi_ab / (2 Phi_aa) at (a, a), likewise at (b, b). */
       const int a = pairs[k][0], b = pairs[k][1];
       const scalcal_real sa = v[a] * m->gain[a], sb = v[b] * m->gain[b], phi = m->phi[a * 3 + b];
-      const scalcal_real t = sa * c[b] + sb * c[a] - (phi / m->phi[a * 3 + a]) * sa * c[a] -
-                             (phi / m->phi[b * 3 + b]) * sb * c[b];
+      const scalcal_real t =
+          sa * c[b] + sb * c[a] - (phi / m->phi[a * 3 + a]) * sa * c[a] - (phi / m->phi[b * 3 + b]) * sb * c[b];
       d[6 + k] = -t / (2 * M);
     }
 }

@@ -21,7 +21,8 @@ static scalcal_real modulus_scatter(const sc_problem* q, const sc_meter* m, uint
   const scalcal_real norm = sc_compensate(q, m, i, c);
   int k;
   for (k = 0; k < 3; ++k) u[k] = c[k] / norm;
-  if (q->started) sc_mul3(m->Ginv, q->start.matrix, A);
+  if (q->started)
+    sc_mul3(m->Ginv, q->start.matrix, A);
   else
     memcpy(A, m->Ginv, sizeof A);
   for (k = 0; k < 3; ++k) w[k] = u[0] * A[k] + u[1] * A[3 + k] + u[2] * A[6 + k];
@@ -125,8 +126,8 @@ static void noise_and_residuals(const sc_problem* q, const sc_meter* m, scalcal_
   if (report->noise_source == SCALCAL_NOISE_SCATTER && cal->noise > 0 && n > (uint32_t)q->p) {
     scalcal_real chi = 0;
     for (i = 0; i < n; ++i) {
-      const scalcal_real z = (sc_compensate(q, m, i, c) / M - 1) * M *
-                             SC_SQRT((scalcal_real)q->set->poses[i].count) / cal->noise;
+      const scalcal_real z =
+          (sc_compensate(q, m, i, c) / M - 1) * M * SC_SQRT((scalcal_real)q->set->poses[i].count) / cal->noise;
       chi += z * z;
     }
     report->chi_square = chi;
@@ -138,8 +139,7 @@ void sc_standard_errors(const sc_problem* q, const scalcal_real* X, scalcal_cali
   const int p = q->p;
   const scalcal_real M = q->magnitude, nan = (scalcal_real)NAN;
   /* K: (H^T W H)^-1; Kn: the covariance per unit of a sample's variance; B: scratch. */
-  scalcal_real K[SC_P * SC_P], A[SC_P * SC_P], B[SC_P * SC_P], se[SC_P], gp[3], ga[3], np, na, weighted, s2 = 0,
-                                                                                       v2;
+  scalcal_real K[SC_P * SC_P], A[SC_P * SC_P], B[SC_P * SC_P], se[SC_P], gp[3], ga[3], np, na, weighted, s2 = 0, v2;
   const scalcal_real* Kn = K;
   sc_meter m;
   int k, has_noise, has_residuals;

@@ -37,8 +37,8 @@
  * model_calibration.cpp, commands/correct.cpp). */
 #define SC_CARRY_CONDITION ((scalcal_real)1e4) /* a layout carries a model up to this condition */
 #define SC_ILL_CONDITIONED ((scalcal_real)1e10)
-#define SC_IN_UNITS ((scalcal_real)0.1)        /* data within 10 % of |I| need no start */
-#define SC_MODEL_EDGE ((scalcal_real)0.5)      /* no parameter of the estimate beyond this */
+#define SC_IN_UNITS ((scalcal_real)0.1)         /* data within 10 % of |I| need no start */
+#define SC_MODEL_EDGE ((scalcal_real)0.5)       /* no parameter of the estimate beyond this */
 #define SC_MATRIX_CONDITION ((scalcal_real)100) /* `scalcal correct` refuses a matrix beyond this */
 
 typedef enum { SC_SHAPE_GENERAL, SC_SHAPE_AXIS_ALIGNED, SC_SHAPE_SPHERE } sc_shape;

@@ -7,15 +7,15 @@
 #define R3 0.57735026918962576451 /* 1/sqrt(3) */
 #define R2 0.70710678118654752440 /* 1/sqrt(2) */
 const scalcal_real scalcal_candidates26[26][3] = {
-    {1, 0, 0},     {-1, 0, 0},    {0, 1, 0},     {0, -1, 0},    {0, 0, 1},      {0, 0, -1},    {R2, R2, 0},
-    {R2, -R2, 0},  {-R2, R2, 0},  {-R2, -R2, 0}, {0, R2, R2},    {0, R2, -R2},   {0, -R2, R2},  {0, -R2, -R2},
-    {R2, 0, R2},   {-R2, 0, R2},  {R2, 0, -R2},  {-R2, 0, -R2}, {R3, R3, R3},   {R3, R3, -R3}, {R3, -R3, R3},
+    {1, 0, 0},      {-1, 0, 0},    {0, 1, 0},      {0, -1, 0},     {0, 0, 1},      {0, 0, -1},    {R2, R2, 0},
+    {R2, -R2, 0},   {-R2, R2, 0},  {-R2, -R2, 0},  {0, R2, R2},    {0, R2, -R2},   {0, -R2, R2},  {0, -R2, -R2},
+    {R2, 0, R2},    {-R2, 0, R2},  {R2, 0, -R2},   {-R2, 0, -R2},  {R3, R3, R3},   {R3, R3, -R3}, {R3, -R3, R3},
     {R3, -R3, -R3}, {-R3, R3, R3}, {-R3, R3, -R3}, {-R3, -R3, R3}, {-R3, -R3, -R3}};
 
 /* The sphere's limits by model (scalcal limits --model NAME). */
 static void limits_of(int p, scalcal_real limit[4]) {
   if (p == 9) {
-    limit[0] = (scalcal_real)15377343.75;      /* 61509375/4 (proofs/d_limit.md) */
+    limit[0] = (scalcal_real)15377343.75;        /* 61509375/4 (proofs/d_limit.md) */
     limit[1] = (scalcal_real)70.455844122715710; /* 45 + 18 sqrt 2 (proofs/aes_limits.md) */
     limit[2] = 12;
     limit[3] = (scalcal_real)11.196152422706632; /* 6 + 3 sqrt 3 */
@@ -83,7 +83,8 @@ scalcal_status scalcal_program_quality_of(const scalcal_pose_set* set, const sca
   if (set->count == 0) return SCALCAL_OK;
   information_of(set, cal, p, K);
   sc_eigen_symmetric(p, K, values, 0);
-  if (!(values[0] > (scalcal_real)(set->count > (uint32_t)p ? set->count : (uint32_t)p) * SCALCAL_EPSILON * values[p - 1]))
+  if (!(values[0] >
+        (scalcal_real)(set->count > (uint32_t)p ? set->count : (uint32_t)p) * SCALCAL_EPSILON * values[p - 1]))
     return SCALCAL_OK;
   if (!sc_spd_inverse(p, K, K)) return SCALCAL_OK;
   out->full_rank = 1;

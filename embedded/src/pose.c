@@ -18,8 +18,7 @@ void scalcal_pose_sum_clear(scalcal_pose_sum* sum) { memset(sum, 0, sizeof *sum)
 /* The product terms of the scatter, in the order xx, yy, zz, xy, yz, zx. */
 static const int kPair[6][2] = {{0, 0}, {1, 1}, {2, 2}, {0, 1}, {1, 2}, {2, 0}};
 
-void scalcal_pose_sum_add(scalcal_pose_set* set, scalcal_pose_sum* sum, const scalcal_real sample[3],
-                          uint32_t index) {
+void scalcal_pose_sum_add(scalcal_pose_set* set, scalcal_pose_sum* sum, const scalcal_real sample[3], uint32_t index) {
   scalcal_real e[3], delta[3];
   int k;
   if (!set->has_origin) {

@@ -50,7 +50,8 @@ void sc_meter_of(const sc_problem* q, const scalcal_real* X, sc_meter* m) {
     m->gain[k] = 1 + (q->p >= 6 ? X[3 + k] : 0);
   }
   if (q->p >= 9)
-    for (k = 0; k < 3; ++k) m->phi[pairs[k][0] * 3 + pairs[k][1]] = m->phi[pairs[k][1] * 3 + pairs[k][0]] = X[6 + k] / 2;
+    for (k = 0; k < 3; ++k)
+      m->phi[pairs[k][0] * 3 + pairs[k][1]] = m->phi[pairs[k][1] * 3 + pairs[k][0]] = X[6 + k] / 2;
   for (r = 0; r < 3; ++r) {
     scalcal_real off = 0;
     for (k = 0; k < 3; ++k)

@@ -14,14 +14,14 @@
 #include "xsens_calibration.h"
 
 static int failures = 0;
-#define CHECK(cond, ...)                                      \
-  do {                                                        \
-    if (!(cond)) {                                            \
-      ++failures;                                             \
+#define CHECK(cond, ...)                                     \
+  do {                                                       \
+    if (!(cond)) {                                           \
+      ++failures;                                            \
       printf("FAIL %s:%d: %s: ", __FILE__, __LINE__, #cond); \
-      printf(__VA_ARGS__);                                    \
-      printf("\n");                                           \
-    }                                                         \
+      printf(__VA_ARGS__);                                   \
+      printf("\n");                                          \
+    }                                                        \
   } while (0)
 
 int main(int argc, char** argv) {
@@ -50,8 +50,7 @@ int main(int argc, char** argv) {
   }
   if (argc < 2 || test_log_read(argv[1], 0, &log)) return 2;
   for (row = 0; row < log.rows; ++row) {
-    const scalcal_real raw[3] = {(scalcal_real)log.x[row][0], (scalcal_real)log.x[row][1],
-                                 (scalcal_real)log.x[row][2]};
+    const scalcal_real raw[3] = {(scalcal_real)log.x[row][0], (scalcal_real)log.x[row][1], (scalcal_real)log.x[row][2]};
     scalcal_real a[3];
     float b[3];
     const float rawf[3] = {(float)log.x[row][0], (float)log.x[row][1], (float)log.x[row][2]};
@@ -63,8 +62,7 @@ int main(int argc, char** argv) {
   CHECK(worst < 1e-4, "the header's correction and the library's differ by %g m/s^2", worst);
   CHECK(scalcal_record_write(&cal, 3, record) == SCALCAL_OK && scalcal_record_read(record, &back, 0) == SCALCAL_OK,
         "record round trip");
-  for (k = 0; k < 3; ++k)
-    CHECK(fabs(back.offset[k] - offset[k]) <= 1e-7 * fabs(offset[k]), "record offset %d", k);
+  for (k = 0; k < 3; ++k) CHECK(fabs(back.offset[k] - offset[k]) <= 1e-7 * fabs(offset[k]), "record offset %d", k);
   rows = log.rows;
   test_log_free(&log);
   printf("%s export header test (%s, %d rows): %d failures\n", failures ? "FAILED" : "passed",

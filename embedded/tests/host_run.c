@@ -134,7 +134,8 @@ static void print_result(const scalcal_pose_set* set, const scalcal_calibration*
   for (i = 0; i < set->count; ++i) {
     scalcal_real m[3];
     scalcal_pose_mean(set, i, m);
-    printf("pose %u %u %u %u %.17g %.17g %.17g\n", (unsigned)i, (unsigned)pose_first[i], (unsigned)pose_last[i], (unsigned)set->poses[i].count, (double)m[0], (double)m[1], (double)m[2]);
+    printf("pose %u %u %u %u %.17g %.17g %.17g\n", (unsigned)i, (unsigned)pose_first[i], (unsigned)pose_last[i],
+           (unsigned)set->poses[i].count, (double)m[0], (double)m[1], (double)m[2]);
   }
 }
 
@@ -152,26 +153,34 @@ int main(int argc, char** argv) {
   int k, detect = 0, capacity = SCALCAL_MAX_POSES;
   scalcal_fit_options_default(&o);
   for (k = 1; k < argc; ++k) {
-    if (!strcmp(argv[k], "--rate") && k + 1 < argc) rate = atof(argv[++k]);
+    if (!strcmp(argv[k], "--rate") && k + 1 < argc)
+      rate = atof(argv[++k]);
     else if (!strcmp(argv[k], "--magnitude") && k + 1 < argc) {
       ++k;
-      if (!strcmp(argv[k], "auto")) o.magnitude_auto = 1;
+      if (!strcmp(argv[k], "auto"))
+        o.magnitude_auto = 1;
       else
         o.magnitude = (scalcal_real)atof(argv[k]);
     } else if (!strcmp(argv[k], "--model") && k + 1 < argc) {
       ++k;
-      o.model = !strcmp(argv[k], "paper9") ? SCALCAL_MODEL_PAPER9
+      o.model = !strcmp(argv[k], "paper9")  ? SCALCAL_MODEL_PAPER9
                 : !strcmp(argv[k], "axis6") ? SCALCAL_MODEL_AXIS6
                 : !strcmp(argv[k], "bias3") ? SCALCAL_MODEL_BIAS3
                                             : SCALCAL_MODEL_AUTO;
-    } else if (!strcmp(argv[k], "--intervals") && k + 1 < argc) intervals = argv[++k];
-    else if (!strcmp(argv[k], "--capacity") && k + 1 < argc) capacity = atoi(argv[++k]);
-    else if (!strcmp(argv[k], "--detect")) detect = 1;
-    else if (!strcmp(argv[k], "--weights-samples")) o.weight_by_samples = 1;
-    else path = argv[k];
+    } else if (!strcmp(argv[k], "--intervals") && k + 1 < argc)
+      intervals = argv[++k];
+    else if (!strcmp(argv[k], "--capacity") && k + 1 < argc)
+      capacity = atoi(argv[++k]);
+    else if (!strcmp(argv[k], "--detect"))
+      detect = 1;
+    else if (!strcmp(argv[k], "--weights-samples"))
+      o.weight_by_samples = 1;
+    else
+      path = argv[k];
   }
   if (!path || (!intervals && !detect)) {
-    fprintf(stderr, "usage: host_run LOG [--rate HZ] --magnitude M|auto [--model NAME] (--intervals FILE | --detect)\n");
+    fprintf(stderr,
+            "usage: host_run LOG [--rate HZ] --magnitude M|auto [--model NAME] (--intervals FILE | --detect)\n");
     return 2;
   }
   if (capacity < 1 || capacity > MAX_INTERVALS) return 2;

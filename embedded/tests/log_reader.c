@@ -83,7 +83,8 @@ int test_log_read(const char* path, double rate, test_log* log) {
       log->t[log->rows] = off ? number(fields[0]) : 0;
       for (k = 0; k < 3; ++k) log->x[log->rows][k] = number(fields[off + k]);
     } else {
-      if (n <= col[1] || n <= col[2] || n <= col[3]) return fprintf(stderr, "%s:%d: short row\n", path, lineno), fclose(f), 1;
+      if (n <= col[1] || n <= col[2] || n <= col[3])
+        return fprintf(stderr, "%s:%d: short row\n", path, lineno), fclose(f), 1;
       log->t[log->rows] = col[0] >= 0 ? number(fields[col[0]]) : 0;
       for (k = 0; k < 3; ++k) log->x[log->rows][k] = number(fields[col[k + 1]]);
     }

@@ -15,14 +15,14 @@
 #include "scalcal/record.h"
 
 static int failures = 0;
-#define CHECK(cond, ...)                                      \
-  do {                                                        \
-    if (!(cond)) {                                            \
-      ++failures;                                             \
+#define CHECK(cond, ...)                                     \
+  do {                                                       \
+    if (!(cond)) {                                           \
+      ++failures;                                            \
       printf("FAIL %s:%d: %s: ", __FILE__, __LINE__, #cond); \
-      printf(__VA_ARGS__);                                    \
-      printf("\n");                                           \
-    }                                                         \
+      printf(__VA_ARGS__);                                   \
+      printf("\n");                                          \
+    }                                                        \
   } while (0)
 
 /* A seeded generator (xorshift64*) and Gaussian deviates (Box-Muller). */
@@ -41,9 +41,9 @@ typedef struct {
 
 static void make_meter(meter* m, double magnitude, double gain, double noise) {
   const double phi_xy = 0.004, phi_yz = -0.006, phi_zx = 0.003;
-  const double P[9] = {sqrt(1 - phi_xy * phi_xy - phi_zx * phi_zx), phi_xy, phi_zx,
-                       phi_xy, sqrt(1 - phi_xy * phi_xy - phi_yz * phi_yz), phi_yz,
-                       phi_zx, phi_yz, sqrt(1 - phi_zx * phi_zx - phi_yz * phi_yz)};
+  const double P[9] = {sqrt(1 - phi_xy * phi_xy - phi_zx * phi_zx), phi_xy, phi_zx, phi_xy,
+                       sqrt(1 - phi_xy * phi_xy - phi_yz * phi_yz), phi_yz, phi_zx, phi_yz,
+                       sqrt(1 - phi_zx * phi_zx - phi_yz * phi_yz)};
   int i;
   m->offset[0] = 512.25, m->offset[1] = -301.5, m->offset[2] = 1210.75;
   m->k[0] = gain * 1.012, m->k[1] = gain * 0.991, m->k[2] = gain * 1.004;
@@ -56,7 +56,8 @@ static void make_meter(meter* m, double magnitude, double gain, double noise) {
 static void measure(const meter* m, const double d[3], scalcal_real out[3]) {
   int i;
   for (i = 0; i < 3; ++i)
-    out[i] = (scalcal_real)(m->offset[i] + m->magnitude * (m->G[3 * i] * d[0] + m->G[3 * i + 1] * d[1] + m->G[3 * i + 2] * d[2]) +
+    out[i] = (scalcal_real)(m->offset[i] +
+                            m->magnitude * (m->G[3 * i] * d[0] + m->G[3 * i + 1] * d[1] + m->G[3 * i + 2] * d[2]) +
                             m->noise * gaussian());
 }
 
@@ -219,7 +220,8 @@ static void test_fuzz(void) {
     const double scale = pow(10, 12 * uniform() - 6);
     init_stream(&set, SCALCAL_MAX_POSES);
     for (i = 0; i < 20000; ++i) {
-      for (k = 0; k < 3; ++k) x[k] = (scalcal_real)(scale * (trial % 2 ? gaussian() : (uniform() < 0.01 ? 1e6 : 1) * uniform()));
+      for (k = 0; k < 3; ++k)
+        x[k] = (scalcal_real)(scale * (trial % 2 ? gaussian() : (uniform() < 0.01 ? 1e6 : 1) * uniform()));
       scalcal_detector_push(&det, &set, x);
     }
     scalcal_detector_finish(&det, &set);
@@ -258,7 +260,9 @@ static void test_degenerate(void) {
     scalcal_pose_set_append(&set, &p);
   }
   s = scalcal_fit(&set, &o, &c, &r);
-  CHECK(s == SCALCAL_E_NOT_IDENTIFIABLE || s == SCALCAL_E_NO_START, "plane: %s model %d cond %g off %g %g %g gain %g %g %g", scalcal_status_text(s), r.model, r.condition, c.offset[0], c.offset[1], c.offset[2], c.gain[0], c.gain[1], c.gain[2]);
+  CHECK(s == SCALCAL_E_NOT_IDENTIFIABLE || s == SCALCAL_E_NO_START,
+        "plane: %s model %d cond %g off %g %g %g gain %g %g %g", scalcal_status_text(s), r.model, r.condition,
+        c.offset[0], c.offset[1], c.offset[2], c.gain[0], c.gain[1], c.gain[2]);
   set.poses[3].mean[1] = (scalcal_real)NAN;
   CHECK(scalcal_fit(&set, &o, &c, &r) == SCALCAL_E_NOT_FINITE, "NaN pose");
   o.magnitude = -1;
@@ -343,13 +347,15 @@ static void test_guidance(void) {
    * limit, which no other twelfth direction does). */
   set.count = 11;
   for (c = 0; c < 4; ++c) {
-    CHECK(scalcal_next_pose(&set, &identity, SCALCAL_MODEL_AXIS6, (scalcal_criterion)c, scalcal_candidates26, 26,
-                            &best, &after) == SCALCAL_OK && best == 5 && fabs(after - q.limit[c]) < 1e-3 * q.limit[c],
+    CHECK(scalcal_next_pose(&set, &identity, SCALCAL_MODEL_AXIS6, (scalcal_criterion)c, scalcal_candidates26, 26, &best,
+                            &after) == SCALCAL_OK &&
+              best == 5 && fabs(after - q.limit[c]) < 1e-3 * q.limit[c],
           "axis6 next pose by criterion %d: %u (%g)", c, (unsigned)best, (double)after);
   }
   set.count = 2; /* +x, -x: rank-deficient; the next adds what is missing (y or z), never x again */
-  CHECK(scalcal_next_pose(&set, &identity, SCALCAL_MODEL_BIAS3, SCALCAL_CRITERION_D, scalcal_candidates26, 26,
-                          &best, &after) == SCALCAL_OK && fabs(scalcal_candidates26[best][0]) < 0.1,
+  CHECK(scalcal_next_pose(&set, &identity, SCALCAL_MODEL_BIAS3, SCALCAL_CRITERION_D, scalcal_candidates26, 26, &best,
+                          &after) == SCALCAL_OK &&
+            fabs(scalcal_candidates26[best][0]) < 0.1,
         "rank-deficient next pose %u", (unsigned)best);
 }
 

@@ -23,12 +23,12 @@ typedef enum { SCALCAL_NOISE_NONE = 0, SCALCAL_NOISE_SCATTER, SCALCAL_NOISE_RESI
 
 typedef struct {
   scalcal_model model;
-  scalcal_real offset[3];    /* raw units (the bias Delta) */
-  scalcal_real matrix[3][3]; /* physical per raw unit, by rows */
-  scalcal_real magnitude;    /* |I| in physical units; 1 with magnitude auto (unit modulus) */
-  int magnitude_auto;        /* the field's strength was unknown: the correction maps to unit modulus */
-  scalcal_real nominal_gain; /* raw units per physical unit the scale deviations are relative to */
-  scalcal_real gain[3];      /* k_i: raw units per physical unit (the lengths of matrix^-1's rows) */
+  scalcal_real offset[3];           /* raw units (the bias Delta) */
+  scalcal_real matrix[3][3];        /* physical per raw unit, by rows */
+  scalcal_real magnitude;           /* |I| in physical units; 1 with magnitude auto (unit modulus) */
+  int magnitude_auto;               /* the field's strength was unknown: the correction maps to unit modulus */
+  scalcal_real nominal_gain;        /* raw units per physical unit the scale deviations are relative to */
+  scalcal_real gain[3];             /* k_i: raw units per physical unit (the lengths of matrix^-1's rows) */
   scalcal_real scale_deviation[3];  /* gain / nominal_gain - 1 */
   scalcal_real nonorthogonality[3]; /* gamma_xy, gamma_yz, gamma_zx (radians) */
   /* Standard errors: the larger of the noise-based and the residual-based (NaN: not estimable,

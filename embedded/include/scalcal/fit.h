@@ -31,18 +31,18 @@ typedef enum {
 
 /* What the fit says beyond the calibration: filled as far as the fit got, whatever the status. */
 typedef struct {
-  scalcal_model model;      /* the model fitted (the chosen one with AUTO) */
-  scalcal_real condition;   /* condition number of H^T H of that model at the poses' directions */
+  scalcal_model model;           /* the model fitted (the chosen one with AUTO) */
+  scalcal_real condition;        /* condition number of H^T H of that model at the poses' directions */
   scalcal_real fitted_condition; /* the same at the fitted directions (the corrected means): at most 1e4 */
-  int started;              /* the ellipsoid start was used (data not in the field's units) */
+  int started;                   /* the ellipsoid start was used (data not in the field's units) */
   scalcal_termination termination;
   int iterations;
-  int dof;                  /* poses minus parameters */
-  scalcal_real X[SCALCAL_MAX_PARAMETERS];     /* the estimator's parameters (bias / |I|, dk, gamma) */
+  int dof;                                            /* poses minus parameters */
+  scalcal_real X[SCALCAL_MAX_PARAMETERS];             /* the estimator's parameters (bias / |I|, dk, gamma) */
   scalcal_real predicted_std[SCALCAL_MAX_PARAMETERS]; /* noise-based, reported units (bias raw, dk, rad) */
   scalcal_real achieved_std[SCALCAL_MAX_PARAMETERS];  /* residual-based; NaN when not estimable */
   scalcal_noise_source noise_source;
-  scalcal_real chi_square;  /* residuals against the noise within poses; NaN when not defined */
+  scalcal_real chi_square; /* residuals against the noise within poses; NaN when not defined */
 } scalcal_fit_report;
 
 /* The defaults above. */

@@ -9,17 +9,22 @@
 #include "scalcal/calibration.h"
 #include "scalcal/pose.h"
 
-typedef enum { SCALCAL_CRITERION_D = 0, SCALCAL_CRITERION_A, SCALCAL_CRITERION_E, SCALCAL_CRITERION_S } scalcal_criterion;
+typedef enum {
+  SCALCAL_CRITERION_D = 0,
+  SCALCAL_CRITERION_A,
+  SCALCAL_CRITERION_E,
+  SCALCAL_CRITERION_S
+} scalcal_criterion;
 
 /* The program measured, as `scalcal evaluate --model` judges it: K = (H^T H)^-1 at the poses'
  * directions, D = N^P det K, A = N trace K, E = N lambda_max(K), S = N max_r K(r, r). */
 typedef struct {
   uint32_t positions;
-  int full_rank;               /* 0: K does not exist (values, efficiencies NaN) */
-  scalcal_real condition;      /* of H^T H */
-  scalcal_real value[4];       /* by scalcal_criterion */
-  scalcal_real limit[4];       /* the sphere's limit for the model (paper9: 61509375/4, 45 + 18 sqrt 2, 12, 6 + 3 sqrt 3) */
-  scalcal_real efficiency[4];  /* limit / value; D's P-th root of it (1: as good as any program can be) */
+  int full_rank;          /* 0: K does not exist (values, efficiencies NaN) */
+  scalcal_real condition; /* of H^T H */
+  scalcal_real value[4];  /* by scalcal_criterion */
+  scalcal_real limit[4];  /* the sphere's limit for the model (paper9: 61509375/4, 45 + 18 sqrt 2, 12, 6 + 3 sqrt 3) */
+  scalcal_real efficiency[4]; /* limit / value; D's P-th root of it (1: as good as any program can be) */
 } scalcal_program_quality;
 
 /* The 26 directions of a cube's faces, edges and corners (normalised): what a hand or a box can

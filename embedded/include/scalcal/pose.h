@@ -44,8 +44,7 @@ void scalcal_pose_sum_clear(scalcal_pose_sum* sum);
 
 /* Adds one finite sample (raw units) taken at stream index `index`; the first sample the set ever
  * sees becomes its origin. The caller checks finiteness (the detector does). */
-void scalcal_pose_sum_add(scalcal_pose_set* set, scalcal_pose_sum* sum, const scalcal_real sample[3],
-                          uint32_t index);
+void scalcal_pose_sum_add(scalcal_pose_set* set, scalcal_pose_sum* sum, const scalcal_real sample[3], uint32_t index);
 
 /* into += from (both relative to the same set): the sum of their samples together. */
 void scalcal_pose_sum_merge(scalcal_pose_sum* into, const scalcal_pose_sum* from);

@@ -15,7 +15,9 @@ int semihost_open(const char* path) {
     }
   return -1;
 }
-long semihost_read(int handle, void* buffer, long bytes) { return (long)fread(buffer, 1, (size_t)bytes, files[handle]); }
+long semihost_read(int handle, void* buffer, long bytes) {
+  return (long)fread(buffer, 1, (size_t)bytes, files[handle]);
+}
 void semihost_close(int handle) {
   fclose(files[handle]);
   files[handle] = 0;

@@ -9,8 +9,8 @@
 int semihost_open(const char* path);                      /* a handle, or -1 */
 long semihost_read(int handle, void* buffer, long bytes); /* bytes read, 0 at the end */
 void semihost_close(int handle);
-void semihost_write(const char* text);                    /* to the console */
+void semihost_write(const char* text); /* to the console */
 void semihost_exit(int status);
-uint32_t stack_peak_bytes(void);                          /* 0 on the host */
+uint32_t stack_peak_bytes(void); /* 0 on the host */
 
 #endif

@@ -10,11 +10,22 @@ int main(void);
 void reset_handler(void);
 static void fault_handler(void) { semihost_exit(3); }
 
-__attribute__((section(".vectors"), used)) static const uintptr_t vectors[16] = {
-    (uintptr_t)&_stack_top,    (uintptr_t)reset_handler, (uintptr_t)fault_handler, (uintptr_t)fault_handler,
-    (uintptr_t)fault_handler, (uintptr_t)fault_handler, (uintptr_t)fault_handler, 0,
-    0,                         0,                         0,                         (uintptr_t)fault_handler,
-    (uintptr_t)fault_handler, 0,                         (uintptr_t)fault_handler, (uintptr_t)fault_handler};
+__attribute__((section(".vectors"), used)) static const uintptr_t vectors[16] = {(uintptr_t)&_stack_top,
+                                                                                 (uintptr_t)reset_handler,
+                                                                                 (uintptr_t)fault_handler,
+                                                                                 (uintptr_t)fault_handler,
+                                                                                 (uintptr_t)fault_handler,
+                                                                                 (uintptr_t)fault_handler,
+                                                                                 (uintptr_t)fault_handler,
+                                                                                 0,
+                                                                                 0,
+                                                                                 0,
+                                                                                 0,
+                                                                                 (uintptr_t)fault_handler,
+                                                                                 (uintptr_t)fault_handler,
+                                                                                 0,
+                                                                                 (uintptr_t)fault_handler,
+                                                                                 (uintptr_t)fault_handler};
 
 #define STACK_PATTERN 0x5CA1CA1Bu
 
