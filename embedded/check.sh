@@ -67,18 +67,25 @@ for prec in float double; do
     -o "$out/host_run_$prec"
   "$cc" "${host_flags[@]}" "${def[@]}" -I"$here/tests/qemu" -DLOG_PATH="\"$xsens\"" "${objects[@]}" \
     "$here/tests/qemu/qemu_main.c" "$here/tests/qemu/host_io.c" -lm -o "$out/stream_host_$prec"
+  "$cc" "${host_flags[@]}" "${def[@]}" -I"$here/tests" "${objects[@]}" "$here/tests/log_reader.c" \
+    "$here/tests/export_header_test.c" -lm -o "$out/export_header_$prec"
 done
+# The reference of the CLI comparison: the same algorithm in long double (host only).
+"$cc" "${host_flags[@]}" -DSCALCAL_LONG_DOUBLE "${sources[@]}" "$here/tests/log_reader.c" "$here/tests/host_run.c" \
+  -lm -o "$out/host_run_long"
 
-step "unit tests: simulated truth, fuzzed streams, records, guidance"
+step "unit tests: simulated truth, fuzzed streams, records, guidance; the export header"
 "$out/unit_float"
 "$out/unit_double"
+"$out/export_header_float" "$xsens"
+"$out/export_header_double" "$xsens"
 
 step "equality with scalcal calibrate on the real logs"
 if [ -z "$scalcal" ]; then
   scalcal="$root/build/experiments/scalcal"
   [ -x "$scalcal" ] || (cd "$root" && nice -n 10 bash scripts/build.sh scalcal)
 fi
-python3 "$here/tests/compare_cli.py" "$scalcal" "$out/host_run_double" "$out/host_run_float" \
+python3 "$here/tests/compare_cli.py" "$scalcal" "$out/host_run_double" "$out/host_run_float" "$out/host_run_long" \
   "$root/data" "$root/../shared/data"
 [ "$host_only" = 1 ] && { step "host tests passed"; exit 0; }
 

@@ -11,7 +11,7 @@ void scalcal_correct(const scalcal_calibration* cal, const scalcal_real raw[3], 
 }
 
 scalcal_status scalcal_calibration_from_matrix(scalcal_calibration* cal, scalcal_model model,
-                                               const scalcal_real offset[3], const scalcal_real matrix[9],
+                                               const scalcal_real offset[3], const scalcal_real* matrix,
                                                scalcal_real magnitude, int magnitude_auto, scalcal_real nominal_gain) {
   sc_correction c;
   const scalcal_real nan = (scalcal_real)NAN;

@@ -10,7 +10,14 @@
 /* Convergence of the estimator: a step below SC_TOLERANCE has converged; a step that no longer
  * lowers the residual has converged when below SC_TOLERANCE_FLOOR (the precision's floor). Double:
  * the host's 1e4 eps and its square root; float: what single precision resolves. */
-#ifdef SCALCAL_DOUBLE
+#if defined(SCALCAL_LONG_DOUBLE) /* the host tests' reference: the double rules at its precision */
+#define SC_TOLERANCE ((scalcal_real)1e4 * LDBL_EPSILON)
+#define SC_TOLERANCE_FLOOR ((scalcal_real)3.3e-8) /* sqrt(1e4 eps) */
+#define SC_CANONICAL_STOP ((scalcal_real)1e-18)
+#define SC_CANONICAL_ACCEPT ((scalcal_real)1e-15)
+#define SC_PAPER_STEP_MIN ((scalcal_real)0)
+#define SC_STEP_IN_STANDARD_ERRORS ((scalcal_real)0)
+#elif defined(SCALCAL_DOUBLE)
 #define SC_TOLERANCE ((scalcal_real)1e4 * DBL_EPSILON)
 #define SC_TOLERANCE_FLOOR ((scalcal_real)1.4901161193847656e-06) /* sqrt(1e4 eps) */
 #define SC_CANONICAL_STOP ((scalcal_real)1e-15)

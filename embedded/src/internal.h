@@ -8,7 +8,10 @@
 
 #include "scalcal/real.h"
 
-#ifdef SCALCAL_DOUBLE
+#if defined(SCALCAL_LONG_DOUBLE)
+#define SC_SQRT(x) sqrtl(x)
+#define SC_FABS(x) fabsl(x)
+#elif defined(SCALCAL_DOUBLE)
 #define SC_SQRT(x) sqrt(x)
 #define SC_FABS(x) fabs(x)
 #else

@@ -43,12 +43,13 @@ typedef struct {
 /* physical = matrix (raw - offset). raw and physical may be the same array. */
 void scalcal_correct(const scalcal_calibration* cal, const scalcal_real raw[3], scalcal_real physical[3]);
 
-/* Fills a calibration from offset and matrix alone (as `scalcal export --format c` writes them):
- * gain, scale deviations (relative to the gains' geometric mean, or to 1 when nominal_gain is 1),
- * non-orthogonality, all in the paper's convention; standard errors NaN. SCALCAL_E_DEGENERATE when
- * the matrix is singular or not in the paper's convention (its rows' axes not symmetric). */
+/* Fills a calibration from offset and matrix (9 values, by rows) alone, as `scalcal export --format c`
+ * writes them, or from a datasheet's nominal values: the gains, scale deviations (relative to
+ * nominal_gain) and non-orthogonality of the matrix's metric (a rotation of the matrix changes none
+ * of them); standard errors NaN. SCALCAL_E_DEGENERATE when the matrix is singular or two axes are
+ * nearly parallel. */
 scalcal_status scalcal_calibration_from_matrix(scalcal_calibration* cal, scalcal_model model,
-                                               const scalcal_real offset[3], const scalcal_real matrix[9],
+                                               const scalcal_real offset[3], const scalcal_real* matrix,
                                                scalcal_real magnitude, int magnitude_auto, scalcal_real nominal_gain);
 
 #endif

@@ -1,11 +1,15 @@
 /* The precision, the sizes and the status codes every scalcal embedded header shares.
- * Precision is chosen at compile time: float by default, double with -DSCALCAL_DOUBLE. */
+ * Precision is chosen at compile time: float by default, double with -DSCALCAL_DOUBLE (and, for the
+ * host tests' reference only, long double with -DSCALCAL_LONG_DOUBLE: it needs libm's frexpl). */
 #ifndef SCALCAL_REAL_H
 #define SCALCAL_REAL_H
 
 #include <float.h>
 
-#ifdef SCALCAL_DOUBLE
+#if defined(SCALCAL_LONG_DOUBLE)
+typedef long double scalcal_real;
+#define SCALCAL_EPSILON LDBL_EPSILON
+#elif defined(SCALCAL_DOUBLE)
 typedef double scalcal_real;
 #define SCALCAL_EPSILON DBL_EPSILON
 #else
