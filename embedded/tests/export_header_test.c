@@ -8,21 +8,11 @@
 #include <math.h>
 #include <stdio.h>
 
+#include "check.h"
 #include "log_reader.h"
 #include "scalcal/calibration.h"
 #include "scalcal/record.h"
 #include "xsens_calibration.h"
-
-static int failures = 0;
-#define CHECK(cond, ...)                                     \
-  do {                                                       \
-    if (!(cond)) {                                           \
-      ++failures;                                            \
-      printf("FAIL %s:%d: %s: ", __FILE__, __LINE__, #cond); \
-      printf(__VA_ARGS__);                                   \
-      printf("\n");                                          \
-    }                                                        \
-  } while (0)
 
 int main(int argc, char** argv) {
   const scalcal_real offset[3] = SCALCAL_CAL_OFFSET;

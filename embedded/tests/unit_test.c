@@ -9,21 +9,11 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "check.h"
 #include "scalcal/detector.h"
 #include "scalcal/fit.h"
 #include "scalcal/guidance.h"
 #include "scalcal/record.h"
-
-static int failures = 0;
-#define CHECK(cond, ...)                                     \
-  do {                                                       \
-    if (!(cond)) {                                           \
-      ++failures;                                            \
-      printf("FAIL %s:%d: %s: ", __FILE__, __LINE__, #cond); \
-      printf(__VA_ARGS__);                                   \
-      printf("\n");                                          \
-    }                                                        \
-  } while (0)
 
 /* A seeded generator (xorshift64*) and Gaussian deviates (Box-Muller). */
 static unsigned long long rng_state = 88172645463325252ull;
@@ -141,6 +131,39 @@ static void test_truth(double magnitude, int magnitude_auto, const char* what) {
     CHECK(fabs(c.gain[k] - gain_truth) < 5 * c.gain_std[k] + 1e-6 * gain_truth, "%s: gain %d %g truth %g se %g", what,
           k, (double)c.gain[k], gain_truth, (double)c.gain_std[k]);
   }
+}
+
+/* Bench data: one sample per pose (18 random directions), weighted by samples: the noise comes from
+ * the residuals (N - P degrees of freedom) and the truth is recovered within 5 standard errors. */
+static void test_single_samples(void) {
+  meter m;
+  scalcal_pose_set set;
+  scalcal_pose_sum p;
+  scalcal_fit_options o;
+  scalcal_calibration c;
+  scalcal_fit_report r;
+  scalcal_status s;
+  scalcal_real x[3];
+  double d[3];
+  int i, k;
+  make_meter(&m, 9.80665, 1638.4, 2.0);
+  scalcal_pose_set_init(&set, storage, SCALCAL_MAX_POSES);
+  for (i = 0; i < 18; ++i) {
+    random_direction(d);
+    measure(&m, d, x);
+    scalcal_pose_sum_clear(&p);
+    scalcal_pose_sum_add(&set, &p, x, (uint32_t)i);
+    scalcal_pose_set_append(&set, &p);
+  }
+  scalcal_fit_options_default(&o);
+  o.magnitude = (scalcal_real)9.80665;
+  o.weight_by_samples = 1;
+  s = scalcal_fit(&set, &o, &c, &r);
+  CHECK(s == SCALCAL_OK && r.noise_source == SCALCAL_NOISE_RESIDUALS && r.dof == 9, "single samples: %s, noise %d",
+        scalcal_status_text(s), (int)r.noise_source);
+  if (s != SCALCAL_OK) return;
+  for (k = 0; k < 3; ++k)
+    CHECK(fabs((double)c.offset[k] - m.offset[k]) < 5 * (double)c.bias_std[k], "single samples: offset %d", k);
 }
 
 /* Fuzzed streams: every outcome a status; an OK one finite and near the truth. */
@@ -362,6 +385,7 @@ static void test_guidance(void) {
 int main(void) {
   test_truth(9.80665, 0, "accelerometer in counts");
   test_truth(48.0, 1, "magnetometer, field unknown");
+  test_single_samples();
   test_fuzz();
   test_degenerate();
   test_record();
