@@ -9,6 +9,10 @@
 
 #include "scalcal/real.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* The models: the number is the count of parameters. AUTO asks the fit for the richest model the
  * poses carry. */
 typedef enum {
@@ -51,5 +55,9 @@ void scalcal_correct(const scalcal_calibration* cal, const scalcal_real raw[3], 
 scalcal_status scalcal_calibration_from_matrix(scalcal_calibration* cal, scalcal_model model,
                                                const scalcal_real offset[3], const scalcal_real* matrix,
                                                scalcal_real magnitude, int magnitude_auto, scalcal_real nominal_gain);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -13,6 +13,10 @@
 
 #include "scalcal/pose.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* Blocks per window (odd): the window slides by one block; a block's stillness is known when the
  * window centred on it is complete, (BLOCKS - 1) / 2 blocks later. */
 #ifndef SCALCAL_DETECTOR_BLOCKS
@@ -92,5 +96,9 @@ scalcal_event scalcal_detector_finish(scalcal_detector* det, scalcal_pose_set* s
 
 scalcal_stream_state scalcal_detector_state(const scalcal_detector* det);
 const char* scalcal_detector_state_text(const scalcal_detector* det);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

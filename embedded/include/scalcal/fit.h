@@ -12,6 +12,10 @@
 #include "scalcal/calibration.h"
 #include "scalcal/pose.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef struct {
   scalcal_model model;    /* SCALCAL_MODEL_AUTO (default): the richest of paper9, axis6, bias3 carried */
   scalcal_real magnitude; /* |I| in physical units (9.80665 for g); > 0 unless magnitude_auto */
@@ -54,5 +58,9 @@ void scalcal_fit_options_default(scalcal_fit_options* options);
  * SCALCAL_E_DEGENERATE, SCALCAL_E_ARGUMENT. report may be null. Stack: about 3 KB in float. */
 scalcal_status scalcal_fit(const scalcal_pose_set* set, const scalcal_fit_options* options, scalcal_calibration* cal,
                            scalcal_fit_report* report);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

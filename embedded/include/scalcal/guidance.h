@@ -9,6 +9,10 @@
 #include "scalcal/calibration.h"
 #include "scalcal/pose.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef enum {
   SCALCAL_CRITERION_D = 0,
   SCALCAL_CRITERION_A,
@@ -48,5 +52,9 @@ scalcal_status scalcal_program_quality_of(const scalcal_pose_set* set, const sca
 scalcal_status scalcal_next_pose(const scalcal_pose_set* set, const scalcal_calibration* cal, scalcal_model model,
                                  scalcal_criterion criterion, const scalcal_real (*candidates)[3], uint32_t count,
                                  uint32_t* best, scalcal_real* value_after);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

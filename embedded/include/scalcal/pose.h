@@ -10,6 +10,10 @@
 
 #include "scalcal/real.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* A pose being summed. Filled by scalcal_pose_sum_add (sample by sample) or scalcal_pose_sum_merge
  * (a block of samples at once, Chan's pairwise update). */
 typedef struct {
@@ -60,5 +64,9 @@ scalcal_status scalcal_pose_set_append(scalcal_pose_set* set, const scalcal_pose
 /* The mean of pose i in raw units (origin + mean), and relative to the origin. */
 void scalcal_pose_mean(const scalcal_pose_set* set, uint32_t i, scalcal_real mean[3]);
 void scalcal_pose_mean_relative(const scalcal_pose_set* set, uint32_t i, scalcal_real mean[3]);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -6,6 +6,10 @@
 
 #include <float.h>
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #if defined(SCALCAL_LONG_DOUBLE)
 typedef long double scalcal_real;
 #define SCALCAL_EPSILON LDBL_EPSILON
@@ -46,5 +50,9 @@ typedef enum {
 
 /* One line describing a status (a string literal). */
 const char* scalcal_status_text(scalcal_status status);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -14,6 +14,10 @@
 
 #include "scalcal/calibration.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #define SCALCAL_RECORD_SIZE 128
 #define SCALCAL_RECORD_MAGIC 0x4C414353u
 #define SCALCAL_RECORD_VERSION 1
@@ -31,5 +35,9 @@ scalcal_status scalcal_record_read(const uint8_t record[SCALCAL_RECORD_SIZE], sc
 
 /* CRC-32 (reflected polynomial 0xEDB88320, initial and final xor 0xFFFFFFFF) of n bytes. */
 uint32_t scalcal_crc32(const uint8_t* data, uint32_t n);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif
