@@ -37,7 +37,7 @@ cc=$(command -v gcc || command -v clang || true)
 command -v python3 >/dev/null || need+=(python3)
 if [ "$host_only" = 0 ]; then
   command -v arm-none-eabi-gcc >/dev/null || need+=(gcc-arm-none-eabi)
-  [ -f /usr/lib/arm-none-eabi/lib/thumb/v7e-m+fp/hard/libc.a ] || need+=(libnewlib-arm-none-eabi)
+  [ -f /usr/lib/arm-none-eabi/newlib/thumb/v7e-m+fp/hard/libc.a ] || need+=(libnewlib-arm-none-eabi)
   command -v qemu-system-arm >/dev/null || need+=(qemu-system-arm)
 fi
 if [ ${#need[@]} -gt 0 ]; then

@@ -72,7 +72,7 @@ static void update_floor(scalcal_detector* det) {
   uint32_t rank, seen = 0, quiet = 0;
   int k, k05 = 0, last;
   if (det->histogram_total < MIN_WINDOWS) return;
-  rank = (uint32_t)((scalcal_real)0.05 * (scalcal_real)(det->histogram_total - 1));
+  rank = (det->histogram_total - 1) / 20; /* floor(0.05 (total - 1)), in integers */
   for (k = 0; k < SCALCAL_FLOOR_BINS; ++k) {
     seen += det->histogram[k];
     if (seen > rank) {
