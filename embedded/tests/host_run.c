@@ -204,6 +204,7 @@ int main(int argc, char** argv) {
   printf("iterations %d\n", report.iterations);
   printf("termination %d\n", (int)report.termination);
   print_vec("condition", &report.condition, 1);
+  print_vec("fitted_condition", &report.fitted_condition, 1);
   print_vec("X", report.X, report.model ? (int)report.model : 0);
   if (s == SCALCAL_OK) print_result(&set, &cal, &report);
   test_log_free(&log);
