@@ -13,6 +13,7 @@ ctest --test-dir build --output-on-failure -j"$(nproc)" "$@"
 OPENBLAS_CORETYPE=Prescott ctest --test-dir build --output-on-failure -j"$(nproc)" -L docs
 # "Registered means everywhere": the CLI built with a fifth criterion, run through every subcommand.
 bash scripts/fifth_criterion.sh
+bash embedded/check.sh  # the firmware library: host tests, Cortex-M4F cross-build, size, QEMU (embedded/README.md)
 if [ "${SCALCAL_SANITIZERS:-1}" != 0 ]; then
   bash scripts/sanitize.sh "$@"
   bash scripts/fuzz.sh 30

@@ -1,0 +1,109 @@
+/* The fit's internal pieces (not installed): the problem (pose means as the estimator sees them,
+ * through the start), the meter of an estimate, the ellipsoid start and the canonical correction,
+ * the layout's condition, the estimator and the standard errors. */
+#ifndef SCALCAL_FIT_INTERNAL_H
+#define SCALCAL_FIT_INTERNAL_H
+
+#include "internal.h"
+#include "scalcal/fit.h"
+
+/* Convergence of the estimator: a step below SC_TOLERANCE has converged; a step that no longer
+ * lowers the residual has converged when below SC_TOLERANCE_FLOOR (the precision's floor). Double:
+ * the host's 1e4 eps and its square root; float: what single precision resolves. */
+#if defined(SCALCAL_LONG_DOUBLE) /* the host tests' reference: the double rules at its precision */
+#define SC_TOLERANCE ((scalcal_real)1e4 * LDBL_EPSILON)
+#define SC_TOLERANCE_FLOOR ((scalcal_real)3.3e-8) /* sqrt(1e4 eps) */
+#define SC_CANONICAL_STOP ((scalcal_real)1e-18)
+#define SC_CANONICAL_ACCEPT ((scalcal_real)1e-15)
+#define SC_PAPER_STEP_MIN ((scalcal_real)0)
+#define SC_STEP_IN_STANDARD_ERRORS ((scalcal_real)0)
+#elif defined(SCALCAL_DOUBLE)
+#define SC_TOLERANCE ((scalcal_real)1e4 * DBL_EPSILON)
+#define SC_TOLERANCE_FLOOR ((scalcal_real)1.4901161193847656e-06) /* sqrt(1e4 eps) */
+#define SC_CANONICAL_STOP ((scalcal_real)1e-15)
+#define SC_CANONICAL_ACCEPT ((scalcal_real)1e-12)
+#define SC_PAPER_STEP_MIN ((scalcal_real)0)
+#define SC_STEP_IN_STANDARD_ERRORS ((scalcal_real)0)
+#else
+#define SC_TOLERANCE ((scalcal_real)8 * FLT_EPSILON)
+#define SC_TOLERANCE_FLOOR ((scalcal_real)64 * FLT_EPSILON)
+#define SC_CANONICAL_STOP ((scalcal_real)4 * FLT_EPSILON)
+#define SC_CANONICAL_ACCEPT ((scalcal_real)1e-4)
+/* In float the residual's rounding (J = |c| / |I| - 1 to a few eps) lets a tiny fraction of a step
+ * that does not descend pass the line search: a step accepted only below this fraction counts as
+ * not accepted (the paper's step has done what it can: Gauss-Newton with the exact derivative takes
+ * over; Gauss-Newton's is at the rounding floor). */
+#define SC_PAPER_STEP_MIN ((scalcal_real)0.0625)
+/* The same rounding bounds what float resolves of the minimum: about eps / (the residuals' RMS) of a
+ * standard error. A full step below this fraction of every parameter's (residual-based) standard
+ * error has converged. */
+#define SC_STEP_IN_STANDARD_ERRORS ((scalcal_real)1e-3)
+#endif
+
+/* Thresholds of the host (numeric/calibration/model_choice.hpp, identifiability.hpp, any_units.cpp,
+ * model_calibration.cpp, commands/correct.cpp). */
+#define SC_CARRY_CONDITION ((scalcal_real)1e4) /* a layout carries a model up to this condition */
+#define SC_ILL_CONDITIONED ((scalcal_real)1e10)
+#define SC_IN_UNITS ((scalcal_real)0.1)         /* data within 10 % of |I| need no start */
+#define SC_MODEL_EDGE ((scalcal_real)0.5)       /* no parameter of the estimate beyond this */
+#define SC_MATRIX_CONDITION ((scalcal_real)100) /* `scalcal correct` refuses a matrix beyond this */
+
+typedef enum { SC_SHAPE_GENERAL, SC_SHAPE_AXIS_ALIGNED, SC_SHAPE_SPHERE } sc_shape;
+
+/* A correction physical = matrix (raw - offset) and its paper form (canonical: phi_kj = phi_jk). */
+typedef struct {
+  scalcal_real offset[3];
+  scalcal_real matrix[9];
+  scalcal_real scale[3];
+  scalcal_real nonorthogonality[3];
+} sc_correction;
+
+/* The pose means as the estimator sees them: y = T (m - o) when started, m (raw) otherwise; means are
+ * taken relative to the set's origin when started (the start is translation-equivariant). */
+typedef struct {
+  const scalcal_pose_set* set;
+  int p;
+  scalcal_real magnitude;
+  int weight_by_samples;
+  int started;
+  sc_correction start; /* its offset relative to the set's origin */
+} sc_problem;
+
+void sc_problem_mean(const sc_problem* q, uint32_t i, scalcal_real y[3]);
+scalcal_real sc_problem_weight(const sc_problem* q, uint32_t i);
+/* The median over poses of |mean| / magnitude (the host's: element n/2 of the sorted ratios). */
+scalcal_real sc_median_ratio(const sc_problem* q);
+
+/* The meter of an estimate X (P entries): bias = X_b |I|, gains 1 + dk, Phi with phi_kj = phi_jk =
+ * gamma / 2; G = diag(1 + dk) Phi and its inverse. */
+typedef struct {
+  scalcal_real bias[3], gain[3], phi[9], G[9], Ginv[9];
+  int valid;
+} sc_meter;
+void sc_meter_of(const sc_problem* q, const scalcal_real* X, sc_meter* m);
+/* c = G^-1 (y - bias) of pose i; returns |c|. */
+scalcal_real sc_compensate(const sc_problem* q, const sc_meter* m, uint32_t i, scalcal_real c[3]);
+
+/* The closed-form start through the pose means (relative to the origin), |physical| = magnitude:
+ * 1 on success. */
+int sc_fit_ellipsoid(const sc_problem* q, scalcal_real magnitude, sc_shape shape, sc_correction* out);
+/* matrix brought to the paper's convention: 1 on success, 0 when degenerate. */
+int sc_canonical(const scalcal_real matrix[9], const scalcal_real offset[3], sc_correction* out);
+
+/* Eigenvalues of H^T H (unit weights) of a P-parameter model at the given directions' source:
+ * the directions of the pose means through `through` (NULL: the means themselves). Returns the
+ * condition number (infinity when not of full rank in this precision). */
+scalcal_real sc_layout_condition(const sc_problem* q, int p, const sc_correction* through);
+
+/* The same at the fitted directions (the compensated means at X), under the problem's model. */
+scalcal_real sc_fitted_condition(const sc_problem* q, const scalcal_real* X);
+
+/* The estimator from X = 0 (numeric/calibration/model_calibration.cpp, damped_gauss_newton). */
+void sc_estimate(const sc_problem* q, int max_iterations, scalcal_real* X, scalcal_fit_report* report);
+
+/* Standard errors, noise and residuals at the estimate: fills cal's errors, noise, residual_rms and
+ * the report's predicted/achieved standard errors and chi-square. */
+void sc_standard_errors(const sc_problem* q, const scalcal_real* X, scalcal_calibration* cal,
+                        scalcal_fit_report* report);
+
+#endif
