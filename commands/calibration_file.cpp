@@ -102,6 +102,7 @@ void read_units(const Json& d, const std::string& file, CalibrationFile& c) {
   if (!u.is_object()) throw InputError(file, 0, "'units' must be an object {\"raw\": ..., \"physical\": ...}");
   bool counts = false;
   c.units.raw = unit_entry(u, "raw", file, c.format_version, counts);
+  c.units.raw_counts = counts;
   bool unused = false;
   const auto physical = unit_entry(u, "physical", file, c.format_version, unused);
   if (magnitude_auto && physical && c.format_version >= 2)

@@ -1,6 +1,8 @@
 // `scalcal export` (export.hpp): the calibration read and checked once, then its registered format.
 #include "commands/export.hpp"
 
+#include <cmath>
+
 #include "commands/common_options.hpp"
 #include "commands/usage_error.hpp"
 #include "numeric/io/input_error.hpp"
@@ -32,6 +34,48 @@ Instrument instrument_of(const ExportRequest& q, const CalibrationFile& c) {
   return q.instrument ? *q.instrument : c.instrument ? *c.instrument : Instrument::accel;
 }
 
+double number_at(const Json& d, const char* key) {
+  return d.contains(key) && d[key].is_number() ? d[key].get<double>() : NAN;
+}
+
+Vec3 triple_at(const Json& d, const char* key) {
+  Vec3 v = Vec3::Constant(NAN);
+  if (d.contains(key) && d[key].is_array() && d[key].size() == 3)
+    for (int i = 0; i < 3; ++i)
+      if (d[key][static_cast<std::size_t>(i)].is_number()) v(i) = d[key][static_cast<std::size_t>(i)].get<double>();
+  return v;
+}
+
+std::string text_at(const Json& d, const char* key) {
+  return d.contains(key) && d[key].is_string() ? d[key].get<std::string>() : "";
+}
+
+// What the file states beside its correction (the c header carries it); what it does not state
+// stays NaN (the header writes -1 for a standard error, 0 for a parameter).
+CalibrationFacts facts_of(const CalibrationFile& c) {
+  const Json& d = c.document;
+  CalibrationFacts f;
+  f.model = c.model.empty() ? "paper9" : c.model;
+  f.sensor = text_at(d, "sensor");
+  if (d.contains("tool") && d["tool"].is_object()) {
+    const Json& t = d["tool"];
+    f.tool = text_at(t, "name") + " " + text_at(t, "version") + ", commit " + text_at(t, "commit");
+  } else {
+    f.tool = "tool not stated";
+  }
+  f.magnitude = number_at(d, "magnitude");
+  f.nominal_gain = number_at(d, "nominal_gain");
+  f.scale_deviation = triple_at(d, "scale_deviation");
+  f.nonorthogonality = triple_at(d, "nonorthogonality");
+  f.bias_std = triple_at(d, "bias_std");
+  f.scale_deviation_std = triple_at(d, "scale_deviation_std");
+  f.nonorthogonality_std = triple_at(d, "nonorthogonality_std");
+  f.residual_rms = number_at(d, "residual_rms");
+  f.positions = static_cast<int>(std::isfinite(number_at(d, "positions")) ? number_at(d, "positions") : 0);
+  f.samples = static_cast<int>(std::isfinite(number_at(d, "samples")) ? number_at(d, "samples") : 0);
+  return f;
+}
+
 ExportInput input_of(const ExportRequest& q, const ExportResult& r) {
   const CalibrationFile& c = r.calibration;
   ExportInput in;
@@ -43,6 +87,8 @@ ExportInput input_of(const ExportRequest& q, const ExportResult& r) {
   in.force = q.force;
   in.sample_rate = c.sample_rate;
   in.noise = c.noise;
+  in.facts = facts_of(c);
+  in.name = q.name;
   if (!q.raw_scale.empty()) {
     in.raw_scale = parse_amount(q.raw_scale);
     if (!in.raw_scale)
@@ -78,6 +124,7 @@ const CommandTable& export_table() {
   static const CommandTable table{
       "export",
       "a calibration file in another tool's form and units: PX4, ArduPilot, IMU-TK, Kalibr/OpenVINS, MATLAB magcal, "
+      "a C header for firmware, "
       "or plain JSON",
       72,
       {calibration, choice_option("--format", format_choices(), format_help(), kRequired), instrument_option(),
@@ -86,6 +133,10 @@ const CommandTable& export_table() {
                             "INS4_ACC, INS5_ACC; compasses 0..2)",
                             "index", "0"),
              "N"),
+       text_option("--name", "PREFIX",
+                   "c: the header's prefix, a C identifier (SCALCAL_PREFIX_OFFSET, scalcal_prefix_apply); CAL when "
+                   "not given",
+                   "an identifier"),
        text_option("--raw-scale", "SIZE",
                    "what one raw unit (count) of the calibrated log is in a physical unit, e.g. 0.061mg or 1/16384g "
                    "(the driver's scale, from the datasheet): the firmware formats work on the driver's output",
@@ -106,6 +157,7 @@ ExportRequest export_request(const Values& v) {
   q.instance = static_cast<int>(v.integer("--instance"));
   q.force = v.flag("--force");
   q.raw_scale = v.text("--raw-scale");
+  q.name = v.text("--name");
   if (const auto it = v.documents.find("CALIBRATION"); it != v.documents.end()) q.calibration_document = it->second;
   return q;
 }

@@ -23,6 +23,7 @@ struct ExportRequest {
   std::optional<Instrument> instrument;  // empty: the calibration file's (accel when it says none)
   int instance = 0;                      // which sensor of the firmware (px4 CAL_ACC0.., ardupilot INS_ACC, INS_ACC2..)
   bool force = false;                    // export what correct would refuse, or what the target drops
+  std::string name;                      // the c header's prefix ("": CAL)
   std::string raw_scale;                 // one raw unit of the log in a physical unit ("0.061mg"); "": the file's units
   std::optional<Json> calibration_document;  // the calibration given as an object (Python), not read
 };

@@ -43,7 +43,9 @@ void reject_leftovers(const CLI::App& sub) {
   }
 }
 
-int fail(const std::string& command, const std::string& message, int status) {
+// The commands' own messages name their command (Python shows them alone): said once here.
+int fail(const std::string& command, std::string message, int status) {
+  if (!command.empty() && message.rfind(command + ": ", 0) == 0) message.erase(0, command.size() + 2);
   std::cerr << "scalcal" << (command.empty() ? "" : " " + command) << ": " << message << "\n";
   return status;
 }

@@ -28,9 +28,22 @@ inline constexpr double kDroppedTolerance = 1e-2;
 // A calibration's units: the log's raw units and those of matrix (raw - offset).
 struct CalibrationUnits {
   std::optional<Unit> raw;       // the log's units when they are a physical unit
+  bool raw_counts = false;       // the file says the raw units are counts (their size not known)
   std::optional<Unit> physical;  // of the corrected output; empty when not known or with unit_modulus
   bool unit_modulus = false;     // --magnitude auto: the correction maps the field to modulus 1
   double field_strength = NAN;   // with unit_modulus: the field's strength in raw units
+};
+
+// What a calibration file states beside its correction, for the formats that carry it (c).
+struct CalibrationFacts {
+  std::string model, sensor, tool;  // tool: "scalcal VERSION, commit ..."
+  double magnitude = NAN;           // |I| in physical units (1 with magnitude auto)
+  double nominal_gain = NAN;        // raw units per physical unit (the field's strength with magnitude auto)
+  Vec3 scale_deviation = Vec3::Constant(NAN), nonorthogonality = Vec3::Constant(NAN);
+  Vec3 bias_std = Vec3::Constant(NAN), scale_deviation_std = Vec3::Constant(NAN),
+       nonorthogonality_std = Vec3::Constant(NAN);
+  double residual_rms = NAN;
+  int positions = 0, samples = 0;
 };
 
 struct ExportInput {
@@ -45,6 +58,8 @@ struct ExportInput {
   double noise = NAN;               // one sample's noise in physical units (for formats that state it)
   // For the json format: the calibration file's own keys to keep, each as its JSON text.
   std::vector<std::pair<std::string, std::string>> kept;
+  CalibrationFacts facts;  // for the c format
+  std::string name;        // the c format's prefix (an identifier; "" : CAL)
 };
 
 // One parameter as the target stores it, for tests and the JSON of the result.

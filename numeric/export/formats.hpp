@@ -10,5 +10,6 @@ ExportFormat imu_tk_format();
 ExportFormat kalibr_format();
 ExportFormat px4_format();
 ExportFormat ardupilot_format();
+ExportFormat c_format();
 
 }  // namespace scalcal

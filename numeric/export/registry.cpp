@@ -10,7 +10,7 @@ namespace scalcal {
 
 const std::vector<ExportFormat>& export_formats() {
   static const std::vector<ExportFormat> formats{
-      json_format(), magcal_format(), imu_tk_format(), kalibr_format(), px4_format(), ardupilot_format(),
+      json_format(), magcal_format(), imu_tk_format(), kalibr_format(), px4_format(), ardupilot_format(), c_format(),
   };
   return formats;
 }

@@ -12,6 +12,10 @@
 //                                             gives correct's vectors themselves
 //   px4 (gauss), ardupilot (milligauss) mag   a tumbling magnetometer's log in uT: the same moduli,
 //                                             converted, to 1e-7, vectors within the reported rotation
+//   c (a header for firmware)                 compiled by the system's C compiler (-std=c99 -Werror),
+//                                             its scalcal_bench_apply in float on every row: correct's
+//                                             vectors to 1e-6 relative (float's 24 bits); its
+//                                             OFFSET and MATRIX the file's own to 1e-15
 #include <cmath>
 #include <map>
 #include <regex>
@@ -273,6 +277,46 @@ TEST(ExportCli, MagnetometerParametersKeepTheModuliInTheirUnitsAndTurnByTheRepor
   EXPECT_EQ(run_cli("export " + cal + " --format px4 --instrument accel").status, 2);
 }
 
+TEST(ExportCli, TheCHeaderCompilesAndCorrectsLikeCorrect) {
+  const std::string header = exported("--format c --name bench");
+  const Data& d = data();
+  const auto offset = numbers_after(header, "#define SCALCAL_BENCH_OFFSET", 3);
+  const auto matrix = numbers_after(header, "#define SCALCAL_BENCH_MATRIX", 9);
+  ASSERT_EQ(offset.size(), 3u);
+  ASSERT_EQ(matrix.size(), 9u);
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_NEAR(offset[static_cast<std::size_t>(i)], d.o(i), 1e-15 * std::abs(d.o(i)) + 1e-300);
+    for (int j = 0; j < 3; ++j)
+      EXPECT_NEAR(matrix[static_cast<std::size_t>(3 * i + j)], d.C(i, j), 1e-15 * std::abs(d.C(i, j)) + 1e-300);
+  }
+  EXPECT_NE(header.find("#define SCALCAL_BENCH_INSTRUMENT \"accel\""), std::string::npos) << header;
+  EXPECT_NE(header.find("#define SCALCAL_BENCH_UNITS_PHYSICAL \"m/s^2\""), std::string::npos) << header;
+  const auto dir = scratch_dir() / "c_header";
+  std::filesystem::create_directories(dir);
+  write_file("c_header/bench.h", header);
+  write_file("c_header/apply.c",
+             "#include <stdio.h>\n#include \"bench.h\"\n"
+             "int main(void) {\n  float raw[3], out[3];\n"
+             "  while (scanf(\"%f %f %f\", &raw[0], &raw[1], &raw[2]) == 3) {\n"
+             "    scalcal_bench_apply(raw, out);\n    printf(\"%.9g,%.9g,%.9g\\n\", out[0], out[1], out[2]);\n  }\n"
+             "  return 0;\n}\n");
+  std::string rows;
+  for (const V3& r : d.raw) rows += std::to_string(r(0)) + " " + std::to_string(r(1)) + " " + std::to_string(r(2)) + "\n";
+  write_file("c_header/raw.txt", rows);
+  const std::string program = (dir / "apply").string();
+  ASSERT_EQ(std::system(("cc -std=c99 -Wall -Wextra -Werror -pedantic -o " + program + " " + (dir / "apply.c").string() +
+                         " 2> " + (dir / "cc.err").string())
+                            .c_str()),
+            0)
+      << slurp((dir / "cc.err").string());
+  ASSERT_EQ(std::system((program + " < " + (dir / "raw.txt").string() + " > " + (dir / "out.txt").string()).c_str()), 0);
+  std::vector<V3> applied;
+  for (const auto& r : csv_numbers(slurp((dir / "out.txt").string()))) applied.push_back(V3(r[0], r[1], r[2]));
+  ASSERT_EQ(applied.size(), d.raw.size());
+  std::size_t i = 0;
+  expect_vectors([&](const V3&) { return applied[i++]; }, 1e-6, "c");
+}
+
 TEST(ExportCli, TheCalibrationFileSaysWhatItIs) {
   const Json cal = Json::parse(slurp(data().calibration));
   EXPECT_EQ(cal["format_version"], 2);
@@ -289,7 +333,9 @@ TEST(ExportCli, TheCalibrationFileSaysWhatItIs) {
            {"--format px4 --instance 4", "has 4 accelerometer instances"},
            {"--format PX4", "got 'PX4'"},
            {"--format px4 --raw-scale 0.01uT", "not a unit of acceleration"},
-           {"--format px4 --raw-scale furlong", "expected a positive size with its unit"}}) {
+           {"--format px4 --raw-scale furlong", "expected a positive size with its unit"},
+           {"--format c --name 9lives", "must be a C identifier"},
+           {"--format c --name 'a-b'", "must be a C identifier"}}) {
     const CliResult r = run_cli("export " + data().calibration + " " + args);
     EXPECT_EQ(r.status, why.empty() ? 0 : 2) << args << ": " << r.err;
     if (!why.empty()) {

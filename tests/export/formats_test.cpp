@@ -175,7 +175,7 @@ TEST(ExportFormats, RotationTimesLowerTriangleRebuildsTheMatrix) {
 TEST(ExportFormats, EveryRegisteredFormatIsFoundByItsName) {
   for (const auto& f : export_formats()) EXPECT_EQ(find_export_format(f.name), &f);
   EXPECT_EQ(find_export_format("PX4"), nullptr);  // names are exact: no writer by default
-  EXPECT_EQ(export_format_names(), "json, magcal, imu_tk, kalibr, px4, ardupilot");
+  EXPECT_EQ(export_format_names(), "json, magcal, imu_tk, kalibr, px4, ardupilot, c");
 }
 
 }  // namespace
