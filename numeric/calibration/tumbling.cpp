@@ -112,6 +112,33 @@ Eigen::MatrixXd newey_west_covariance(const std::vector<Eigen::VectorXd>& rows, 
   return small_sample * K * S * K;
 }
 
+namespace {
+
+double median_turn(const std::vector<Vec3>& u, std::size_t lag) {
+  std::vector<double> cosines;
+  cosines.reserve(u.size() - lag);
+  for (std::size_t t = 0; t + lag < u.size(); ++t) cosines.push_back(u[t].dot(u[t + lag]));
+  const auto mid = cosines.begin() + static_cast<std::ptrdiff_t>(cosines.size() / 2);
+  std::nth_element(cosines.begin(), mid, cosines.end());
+  return std::acos(std::clamp(*mid, -1.0, 1.0));
+}
+
+}  // namespace
+
+int decorrelation_lag(const std::vector<Vec3>& directions) {
+  const std::size_t most = std::max<std::size_t>(1, directions.size() / 4);
+  if (directions.size() < 8) return static_cast<int>(most);
+  std::size_t lo = 0, hi = 1;
+  while (hi < most && median_turn(directions, hi) < kDecorrelationAngle) lo = hi, hi *= 2;
+  if (hi >= most) return median_turn(directions, most) < kDecorrelationAngle ? static_cast<int>(most)
+                                                                            : static_cast<int>(hi > most ? most : hi);
+  while (hi - lo > 1) {  // median_turn(lo) < angle <= median_turn(hi)
+    const std::size_t mid = lo + (hi - lo) / 2;
+    (median_turn(directions, mid) < kDecorrelationAngle ? lo : hi) = mid;
+  }
+  return static_cast<int>(hi);
+}
+
 std::vector<Vec3> fibonacci_sphere(int n) {
   std::vector<Vec3> out;
   const double golden = M_PI * (3 - std::sqrt(5.0));

@@ -45,6 +45,14 @@ std::vector<Eigen::VectorXd> model_rows(ModelKind model, const std::vector<Vec3>
 Eigen::MatrixXd newey_west_covariance(const std::vector<Eigen::VectorXd>& rows, const std::vector<double>& residual,
                                       int lag);
 
+// A scalar misfit that depends on the direction (the model's own error, a soft-iron term it lacks)
+// is shared by samples until the meter has turned away: the residuals of a hand's tumbling are
+// correlated over seconds, not over the noise's few samples. This is the smallest lag (in samples)
+// at which the median angle between directions that far apart reaches kDecorrelationAngle,
+// searched by doubling then bisection up to a quarter of the log (that quarter when never reached).
+inline constexpr double kDecorrelationAngle = M_PI / 3;
+int decorrelation_lag(const std::vector<Vec3>& directions);
+
 // What a set of directions covers: the share of 100 equal-area cells of the sphere holding one, and
 // the largest cap holding none (its angular radius in degrees, searched on 2000 centres, and where).
 struct Coverage {

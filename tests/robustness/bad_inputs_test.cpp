@@ -447,7 +447,9 @@ std::vector<Case> cases() {
        E::error,
        {"--region", "condition number", "beyond what double precision resolves"}},
       {"RegionSmallCap",
-       [] { return std::string("optimize --positions 12 --region cap:5 --starts 1"); },
+       // limits, not optimize: optimize adds a second, true warning (Ipopt not converging on so flat a
+       // criterion) under some BLAS kernels (Haswell, Zen) and not others.
+       [] { return std::string("limits --region cap:5"); },
        E::warn,
        {"warning", "condition number", "nearly confounded"}},
       // Output that cannot be written.
