@@ -130,8 +130,9 @@ int decorrelation_lag(const std::vector<Vec3>& directions) {
   if (directions.size() < 8) return static_cast<int>(most);
   std::size_t lo = 0, hi = 1;
   while (hi < most && median_turn(directions, hi) < kDecorrelationAngle) lo = hi, hi *= 2;
-  if (hi >= most) return median_turn(directions, most) < kDecorrelationAngle ? static_cast<int>(most)
-                                                                            : static_cast<int>(hi > most ? most : hi);
+  if (hi >= most)
+    return median_turn(directions, most) < kDecorrelationAngle ? static_cast<int>(most)
+                                                               : static_cast<int>(hi > most ? most : hi);
   while (hi - lo > 1) {  // median_turn(lo) < angle <= median_turn(hi)
     const std::size_t mid = lo + (hi - lo) / 2;
     (median_turn(directions, mid) < kDecorrelationAngle ? lo : hi) = mid;

@@ -69,8 +69,8 @@ void write(const ExportInput& in, ExportOutput& out) {
   const std::string P = "SCALCAL_" + prefix + "_";
   const Mat3& C = in.correction.matrix;
   const int parameters = f.model == "bias3" ? 3 : f.model == "axis6" ? 6 : 9;
-  std::string s = "/* scalcal calibration: `scalcal export --format c` (" + commented(f.tool) + "). Sensor: " +
-                  commented(f.sensor) + ".\n * physical = " + P + "MATRIX (raw - " + P +
+  std::string s = "/* scalcal calibration: `scalcal export --format c` (" + commented(f.tool) +
+                  "). Sensor: " + commented(f.sensor) + ".\n * physical = " + P + "MATRIX (raw - " + P +
                   "OFFSET), the paper's convention (phi_kj = phi_jk). */\n";
   s += "#ifndef SCALCAL_" + prefix + "_H\n#define SCALCAL_" + prefix + "_H\n";
   const auto define = [&](const std::string& name, const std::string& value, const std::string& comment = "") {
@@ -88,8 +88,7 @@ void write(const ExportInput& in, ExportOutput& out) {
   define("MAGNITUDE_AUTO", in.units.unit_modulus ? "1" : "0", "1: the field's strength was unknown (unit modulus)");
   define("NOMINAL_GAIN", exact_text(f.nominal_gain), "raw units per physical unit");
   define("OFFSET", triple(in.correction.offset), "raw units");
-  define("MATRIX",
-         "{" + triple(C.row(0)) + ", " + triple(C.row(1)) + ", " + triple(C.row(2)) + "}",
+  define("MATRIX", "{" + triple(C.row(0)) + ", " + triple(C.row(1)) + ", " + triple(C.row(2)) + "}",
          "physical per raw unit, by rows");
   define("SCALE_DEVIATION", triple(or_zero(f.scale_deviation)), "relative to the nominal gain");
   define("NONORTHOGONALITY", triple(or_zero(f.nonorthogonality)), "gamma_xy, gamma_yz, gamma_zx, rad");
@@ -99,8 +98,11 @@ void write(const ExportInput& in, ExportOutput& out) {
   define("RESIDUAL_RMS", exact_text(f.residual_rms), "physical units");
   define("POSITIONS", std::to_string(f.positions));
   define("SAMPLES", std::to_string(f.samples));
-  s += "static inline void scalcal_" + lower + "_apply(const float raw[3], float physical[3]) {\n"
-       "  static const float o[3] = " + P + "OFFSET, m[3][3] = " + P + "MATRIX;\n"
+  s += "static inline void scalcal_" + lower +
+       "_apply(const float raw[3], float physical[3]) {\n"
+       "  static const float o[3] = " +
+       P + "OFFSET, m[3][3] = " + P +
+       "MATRIX;\n"
        "  const float d[3] = {raw[0] - o[0], raw[1] - o[1], raw[2] - o[2]};\n"
        "  int i;\n"
        "  for (i = 0; i < 3; ++i) physical[i] = m[i][0] * d[0] + m[i][1] * d[1] + m[i][2] * d[2];\n"
@@ -114,8 +116,10 @@ void write(const ExportInput& in, ExportOutput& out) {
 }  // namespace
 
 ExportFormat c_format() {
-  return {"c", "a C header for firmware: the correction as macros and scalcal_cal_apply() (embedded/)",
-          {Instrument::accel, Instrument::mag, Instrument::gyro}, write};
+  return {"c",
+          "a C header for firmware: the correction as macros and scalcal_cal_apply() (embedded/)",
+          {Instrument::accel, Instrument::mag, Instrument::gyro},
+          write};
 }
 
 }  // namespace scalcal

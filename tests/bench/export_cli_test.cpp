@@ -301,15 +301,17 @@ TEST(ExportCli, TheCHeaderCompilesAndCorrectsLikeCorrect) {
              "    scalcal_bench_apply(raw, out);\n    printf(\"%.9g,%.9g,%.9g\\n\", out[0], out[1], out[2]);\n  }\n"
              "  return 0;\n}\n");
   std::string rows;
-  for (const V3& r : d.raw) rows += std::to_string(r(0)) + " " + std::to_string(r(1)) + " " + std::to_string(r(2)) + "\n";
+  for (const V3& r : d.raw)
+    rows += std::to_string(r(0)) + " " + std::to_string(r(1)) + " " + std::to_string(r(2)) + "\n";
   write_file("c_header/raw.txt", rows);
   const std::string program = (dir / "apply").string();
-  ASSERT_EQ(std::system(("cc -std=c99 -Wall -Wextra -Werror -pedantic -o " + program + " " + (dir / "apply.c").string() +
-                         " 2> " + (dir / "cc.err").string())
+  ASSERT_EQ(std::system(("cc -std=c99 -Wall -Wextra -Werror -pedantic -o " + program + " " +
+                         (dir / "apply.c").string() + " 2> " + (dir / "cc.err").string())
                             .c_str()),
             0)
       << slurp((dir / "cc.err").string());
-  ASSERT_EQ(std::system((program + " < " + (dir / "raw.txt").string() + " > " + (dir / "out.txt").string()).c_str()), 0);
+  ASSERT_EQ(std::system((program + " < " + (dir / "raw.txt").string() + " > " + (dir / "out.txt").string()).c_str()),
+            0);
   std::vector<V3> applied;
   for (const auto& r : csv_numbers(slurp((dir / "out.txt").string()))) applied.push_back(V3(r[0], r[1], r[2]));
   ASSERT_EQ(applied.size(), d.raw.size());
