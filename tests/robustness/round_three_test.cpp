@@ -1,7 +1,8 @@
 // Issue 50, reliability round three: each class of input the third adversarial round found crashing,
 // hanging or answering silently wrong, as cases of tests/common/bad_input.hpp, one suite per class:
-// options that make nonsense (item 5), numbers that are not numbers and files that do not read back
-// (item 7). Work bounds are in work_bounds_test.cpp, the gnuplot injection in injection_test.cpp.
+// work bounds (item 4), options that make nonsense (item 5), numbers that are not numbers and files
+// that do not read back (item 7). The estimates against measured runs are in work_estimates_test.cpp,
+// the gnuplot injection in injection_test.cpp, Python's cases in tests/python/test_robustness.py.
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>
@@ -224,6 +225,18 @@ std::vector<Case> files_written() {
                  },
                  E::error,
                  {"open.json", "not a JSON object", "last read: '\"xxxxxxxx"}});
+  // A matrix of 1e308 (condition 1) wrote inf and -nan rows with exit 0. (The calibration reader may
+  // refuse such a file first; either way nothing is written.)
+  out.push_back({"CorrectOverflow",
+                 [] {
+                   return "correct --calibration " +
+                          file("correct_big.json",
+                               R"({"format_version": 1, "model": "paper9", "converged": true, "offset": [0, 0, 0],)"
+                               R"( "matrix": [[1e308, 0, 0], [0, 1e308, 0], [0, 0, 1e308]]})") +
+                          " --measurements " + file("correct_m.csv", "t,ix,iy,iz\n0,10,1,1\n0.01,1,1,1\n");
+                 },
+                 E::error,
+                 {"correct_big.json"}});
   // plot --log drew another log's intervals without a check.
   out.push_back(
       {"PlotLogOtherCalibration",
@@ -246,6 +259,36 @@ std::vector<Case> files_written() {
 class FilesWritten : public ::testing::TestWithParam<Case> {};
 TEST_P(FilesWritten, HasItsClass) { expect_class(GetParam()); }
 INSTANTIATE_TEST_SUITE_P(Issue50, FilesWritten, ::testing::ValuesIn(files_written()),
+                         [](const ::testing::TestParamInfo<Case>& info) { return info.param.name; });
+
+// --- Item 4: work bounds, checked before the work starts ---------------------------------------
+
+std::vector<Case> bounds() {
+  using E = Expect;
+  std::vector<Case> out;
+  // 36 s to 7.9 GB and "out of memory": the pairs' distances of 100000 positions take 80 GB.
+  out.push_back({"PlanDistances",
+                 [] { return std::string("plan random-100000 --bench gimbal:x,y"); },
+                 E::error,
+                 {"100000 positions on gimbal:x,y", "80.1 GB of memory (estimate)"}});
+  out.push_back({"SimulateTrials",
+                 [] { return std::string("simulate --program random-100000 --trials 10000000 --noise 1e-3"); },
+                 E::error,
+                 {"--trials 10000000 of 100000 positions", "days of CPU (estimate)", "the bound is 24 h"}});
+  out.push_back({"FamilyDigits",
+                 [] { return "family octahedral --param axes=" + std::string(1200, '9'); },
+                 E::error,
+                 {"--param", "a number of about 1200 digits; at most 1000"}});
+  out.push_back({"JigOrientationDigits",
+                 [] { return "family jig:cube --param orientation=q:1,0,0," + std::string(1500, '7'); },
+                 E::error,
+                 {"--param", "digits; at most 1000"}});
+  return out;
+}
+
+class Bounds : public ::testing::TestWithParam<Case> {};
+TEST_P(Bounds, HasItsClass) { expect_class(GetParam()); }
+INSTANTIATE_TEST_SUITE_P(Issue50, Bounds, ::testing::ValuesIn(bounds()),
                          [](const ::testing::TestParamInfo<Case>& info) { return info.param.name; });
 
 // Runs the CLI in `cwd` with its standard output sent to `stdout_path` (or kept), under a time limit.
