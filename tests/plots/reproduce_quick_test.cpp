@@ -165,7 +165,7 @@ TEST_F(ReproduceQuick, FiguresFiveSevenEightStateKeyUnitAndScale) {
   const std::string fig5 = pdf_section(slurp(dir_ / "fig5.gp"));
   EXPECT_EQ(fig5.find("unset key"), std::string::npos);
   for (const char* t :
-       {"title 'uniform'", "title 'rotation [12]'", "title 'optimised for D'", "title 'printable jigs'"})
+       {"title \"uniform\"", "title \"rotation [12]\"", "title \"optimised for D\"", "title \"printable jigs\""})
     EXPECT_NE(fig5.find(t), std::string::npos) << t;
   EXPECT_EQ(std::regex_search(pdf_section(slurp(dir_ / "fig7.gp")), std::regex("set ylabel \"θ[^\n]*per unit σ")),
             true);

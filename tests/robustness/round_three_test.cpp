@@ -50,7 +50,7 @@ std::vector<Case> nonsense() {
   out.push_back({"PlanResolutionMovesOut",
                  [] { return "plan " + cap40_program() + " --bench tilt:40 --resolution 90"; },
                  E::error,
-                 {"--resolution 90 moves the positions out of the design", "rank-deficient", "100 % of its",
+                 {"--resolution 90 moves the positions out of the design", "rank-deficient", "100 % of its D",
                   "beyond --max-loss 5 %"}});
   // Asked for, it plans (and warns that the program as run is rank-deficient).
   out.push_back({"PlanResolutionAsked",
@@ -60,7 +60,8 @@ std::vector<Case> nonsense() {
   out.push_back({"PlanResolutionCoarse",
                  [] { return "plan " + cap40_program() + " --bench tilt:40 --resolution 15"; },
                  E::error,
-                 {"--resolution 15 moves the positions out of the design", "efficiency", "beyond --max-loss 5 %"}});
+                 {"--resolution 15 moves the positions out of the design", "66.1 % of its D efficiency",
+                  "beyond --max-loss 5 %"}});
   // One file for two outputs: the second write replaced the first.
   out.push_back({"SimulateLogIsTruth",
                  [] {
