@@ -210,22 +210,6 @@ std::vector<Case> files_written() {
                  rehearsal("--magnitude 1.79e308 --size 0.1"),
                  E::error,
                  {"--magnitude 1.79e+308", "overflow double precision"}});
-  // A 70 MB file: "a JSON syntax error" with the whole text as its excerpt.
-  out.push_back({"JsonOverTheLimit",
-                 [] {
-                   return "correct --calibration " +
-                          file("huge.json", "{\"a\": \"" + std::string(70 << 20, 'x') + "\"}") + " --measurements " +
-                          file("m.txt", "0 1 2 3\n");
-                 },
-                 E::error,
-                 {"huge.json", "file larger than the limit of 64 MiB"}});
-  out.push_back({"JsonLongTokenShortMessage",
-                 [] {
-                   return "correct --calibration " + file("open.json", "{\"a\": \"" + std::string(1 << 20, 'x')) +
-                          " --measurements " + file("m.txt", "0 1 2 3\n");
-                 },
-                 E::error,
-                 {"open.json", "not a JSON object", "last read: '\"xxxxxxxx"}});
   // A matrix of 1e308 (condition 1) wrote inf and -nan rows with exit 0. (The calibration reader may
   // refuse such a file first; either way nothing is written.)
   out.push_back({"CorrectOverflow",
