@@ -75,12 +75,12 @@ void refuse_loss(const PlanRequest& q, const PlanResult& r) {
   if (!std::isfinite(r.designed.value(D))) return;  // a design without a D of its own has none to lose
   const double lost = r.as_run.full_rank() ? r.efficiency_lost[static_cast<std::size_t>(D.index())] : 1.0;
   if (!(lost * 100 > q.max_loss * 100 + 1e-12) && !std::isnan(lost)) return;
-  throw UsageError("--resolution " + short_number(q.resolution_deg) + " moves the positions out of the design: as run " +
-                   (r.as_run.full_rank() ? "" : "the program is rank-deficient and ") + "it loses " +
-                   short_number(std::isnan(lost) ? 100 : 100 * lost, "%.3g") +
-                   " % of its D efficiency (positions up to " + short_number(r.max_rounding_deg(), "%.3g") +
-                   " deg from the design), beyond --max-loss " + short_number(100 * q.max_loss, "%.3g") +
-                   " %: a finer --resolution, or --max-loss 100 to plan it anyway");
+  throw UsageError(
+      "--resolution " + short_number(q.resolution_deg) + " moves the positions out of the design: as run " +
+      (r.as_run.full_rank() ? "" : "the program is rank-deficient and ") + "it loses " +
+      short_number(std::isnan(lost) ? 100 : 100 * lost, "%.3g") + " % of its D efficiency (positions up to " +
+      short_number(r.max_rounding_deg(), "%.3g") + " deg from the design), beyond --max-loss " +
+      short_number(100 * q.max_loss, "%.3g") + " %: a finer --resolution, or --max-loss 100 to plan it anyway");
 }
 
 RunPlan as_run_plan(const std::vector<PlannedStep>& steps) {

@@ -30,11 +30,13 @@ std::string csv_field(const std::string& text) {
 void refuse_overflow(const commands::Values& v, const commands::CorrectResult& r) {
   for (std::size_t i = 0; i < r.rows.size(); ++i) {
     const auto& row = r.rows[i];
-    const bool overflow = row.corrected.array().isInf().any() || (row.corrected.allFinite() && !std::isfinite(row.modulus));
+    const bool overflow =
+        row.corrected.array().isInf().any() || (row.corrected.allFinite() && !std::isfinite(row.modulus));
     if (overflow)
-      throw InputError(v.text("--calibration"), 0,
-                       "data row " + std::to_string(i + 1) + " of " + display_name(v.text("--measurements")) +
-                           ": its corrected vector overflows double precision (the matrix is too large for these values)");
+      throw InputError(
+          v.text("--calibration"), 0,
+          "data row " + std::to_string(i + 1) + " of " + display_name(v.text("--measurements")) +
+              ": its corrected vector overflows double precision (the matrix is too large for these values)");
   }
 }
 
