@@ -3,14 +3,12 @@
 // every row of raw data and writes the corrected x, y, z and their modulus as CSV (commands/correct.hpp).
 // A calibration whose fit did not converge or whose matrix is ill-conditioned is refused (exit 2, with
 // the reason) unless --force.
-#include <cmath>
 #include <iostream>
 
 #include "commands/common_options.hpp"
 #include "commands/correct.hpp"
 #include "experiments/cli/command.hpp"
 #include "experiments/cli/output_file.hpp"
-#include "numeric/io/input_error.hpp"
 
 namespace scalcal::cli {
 namespace {
@@ -24,25 +22,8 @@ std::string csv_field(const std::string& text) {
   return quoted + "\"";
 }
 
-// Every number written is finite: a calibration whose matrix times the raw values passes the largest
-// double (a matrix of 1e308 accepted with --force) is refused before a row is written. A dropout (NaN
-// in, NaN out) is a row the file had.
-void refuse_overflow(const commands::Values& v, const commands::CorrectResult& r) {
-  for (std::size_t i = 0; i < r.rows.size(); ++i) {
-    const auto& row = r.rows[i];
-    const bool overflow =
-        row.corrected.array().isInf().any() || (row.corrected.allFinite() && !std::isfinite(row.modulus));
-    if (overflow)
-      throw InputError(
-          v.text("--calibration"), 0,
-          "data row " + std::to_string(i + 1) + " of " + display_name(v.text("--measurements")) +
-              ": its corrected vector overflows double precision (the matrix is too large for these values)");
-  }
-}
-
 int run(const commands::Values& v) {
   const commands::CorrectResult r = commands::correct(commands::correct_request(v));
-  refuse_overflow(v, r);
   print_warnings("correct", r.warnings);
   const auto write = [&](std::ostream& f) {
     f << (r.has_t ? "t," : "") << (r.has_position ? "position," : "") << "x,y,z,modulus\n";

@@ -210,8 +210,8 @@ std::vector<Case> files_written() {
                  rehearsal("--magnitude 1.79e308 --size 0.1"),
                  E::error,
                  {"--magnitude 1.79e+308", "overflow double precision"}});
-  // A matrix of 1e308 (condition 1) wrote inf and -nan rows with exit 0. (The calibration reader may
-  // refuse such a file first; either way nothing is written.)
+  // A matrix of 1e308 (condition 1) wrote inf and -nan rows with exit 0 (issue 49's correct refuses the
+  // row that overflows).
   out.push_back({"CorrectOverflow",
                  [] {
                    return "correct --calibration " +
@@ -221,7 +221,7 @@ std::vector<Case> files_written() {
                           " --measurements " + file("correct_m.csv", "t,ix,iy,iz\n0,10,1,1\n0.01,1,1,1\n");
                  },
                  E::error,
-                 {"correct_big.json"}});
+                 {"correct_m.csv:2", "not finite"}});
   // plot --log drew another log's intervals without a check.
   out.push_back(
       {"PlotLogOtherCalibration",
