@@ -1,6 +1,7 @@
 // `scalcal optimize` (optimize.hpp).
 #include "commands/optimize.hpp"
 
+#include <cmath>
 #include <stdexcept>
 
 #include "commands/region_request.hpp"
@@ -117,7 +118,12 @@ OptimizeResult optimize(const OptimizeRequest& q, const Progress& progress) {
   const bool restricted = r.region && !r.region->is_sphere();
   if (q.margin_deg > 0 && !restricted)
     throw UsageError("--margin moves positions inside a restricted --region's boundaries; the sphere has none");
-  if (q.margin_deg > 0) r.designed_on = inset_region(*r.region, q.margin_deg);
+  if (q.margin_deg > 0) {
+    // The inset region is where the positions go: it must be resolved as the region itself is (cap:5
+    // inset by 4.999 degrees is a cap of 0.001 degrees, where every program is rank-deficient).
+    r.designed_on = inset_region(*r.region, q.margin_deg);
+    check_conditioning(*r.designed_on, r.warnings, "--margin");
+  }
   if (restricted && q.digits > 0)
     throw InputError("--digits", 0,
                      "the polish solves the unconstrained optimality conditions; it cannot keep positions inside "
@@ -127,6 +133,13 @@ OptimizeResult optimize(const OptimizeRequest& q, const Progress& progress) {
     check_work("--positions " + std::to_string(opt.positions) + " --digits " + std::to_string(q.digits),
                polish_work(opt.positions, q.digits), "polish fewer positions or to fewer digits");
   r.synthesis = restricted ? synthesize_on_region(opt, r.designed_on ? *r.designed_on : *r.region) : synthesize(opt);
+  if (!std::isfinite(r.synthesis.value))
+    throw InputError("--region", 0,
+                     "no start reached a program of full rank on " +
+                         (r.designed_on ? r.designed_on->text()
+                          : r.region    ? r.region->text()
+                                        : std::string("the sphere")) +
+                         " in double precision (its " + std::string(criterion_name(opt.criterion)) + " is infinite)");
   if (!r.synthesis.summary.converged())
     r.warnings.push_back({"", r.synthesis.summary.message + " (" + r.synthesis.local_solver + " multistart)"});
   if (q.digits > 0) {

@@ -24,6 +24,7 @@ struct PlanRequest {
   Program program;
   std::string bench;          // the --bench spec
   double resolution_deg = 0;  // 0: the angles as solved
+  double max_loss = 0.05;     // the share of D efficiency rounding may cost (--max-loss / 100)
   RunOrder order = RunOrder::travel;
   std::vector<std::string> regions;  // --region, else the program file's; none: no region to keep
   ModelKind model = ModelKind::paper9;
@@ -68,7 +69,8 @@ const CommandTable& plan_table();
 PlanRequest plan_request(const Values& values);
 
 // Throws InputError for a bad bench spec, a position the bench cannot reach (naming it), or one that
-// no setting on the resolution grid keeps inside the region.
+// no setting on the resolution grid keeps inside the region; UsageError when the rounding costs more
+// than max_loss of the design's D efficiency.
 PlanResult plan(const PlanRequest& request, const Progress& progress = {});
 
 Json to_json(const PlanResult& result);

@@ -11,6 +11,7 @@
 #include "commands/common_options.hpp"
 #include "commands/region_request.hpp"
 #include "commands/usage_error.hpp"
+#include "commands/work_bound.hpp"
 #include "numeric/io/csv_table.hpp"
 #include "numeric/io/input_error.hpp"
 #include "numeric/program/catalogue.hpp"
@@ -171,19 +172,17 @@ std::string grid_csv(const Zone* cap) {
 }
 
 // One panel's plot command: region pixels and edges (disks), grid, path, positions, their numbers.
-std::string panel_plot(const std::string& stem, int panel, bool shaded, bool disks, bool path) {
+// The data files are the variables the script sets (PlotData).
+std::string panel_plot(int panel, bool shaded, bool disks, bool path) {
   const std::string p = std::to_string(panel);
   std::string s = "plot ";
-  if (shaded && disks) s += "'" + stem + "_region" + p + ".csv' skip 1 using 1:2:3 with image, \\\n     ";
-  s += "'" + stem + "_grid.csv' skip 1 using 1:2 with lines lw 0.5 lc rgb '" + kGrid + "'";
+  if (shaded && disks) s += "region" + p + "_file skip 1 using 1:2:3 with image, \\\n     ";
+  s += "grid_file skip 1 using 1:2 with lines lw 0.5 lc rgb '" + std::string(kGrid) + "'";
   if (shaded && disks)
-    s += ", \\\n     '" + stem + "_edges.csv' skip 1 using ($1==" + p + "?$2:NaN):3 with lines lw 1 lc rgb '" + kEdge +
-         "'";
-  if (path)
-    s += ", \\\n     '" + stem + "_path.csv' skip 1 using ($1==" + p + "?$2:NaN):3 with lines lw 1 lc rgb '" + kPath +
-         "'";
-  s += ", \\\n     '" + stem + "_positions.csv' skip 1 using ($1==" + p +
-       "?$2:NaN):3 with points pt 7 ps 0.8 lc rgb '" + kPositions + "', \\\n     '' skip 1 using ($1==" + p +
+    s += ", \\\n     edges_file skip 1 using ($1==" + p + "?$2:NaN):3 with lines lw 1 lc rgb '" + kEdge + "'";
+  if (path) s += ", \\\n     path_file skip 1 using ($1==" + p + "?$2:NaN):3 with lines lw 1 lc rgb '" + kPath + "'";
+  s += ", \\\n     positions_file skip 1 using ($1==" + p + "?$2:NaN):3 with points pt 7 ps 0.8 lc rgb '" + kPositions +
+       "', \\\n     '' skip 1 using ($1==" + p +
        "?$2:NaN):3:(sprintf('%d', $4)) with labels offset 0.9,0.6 font ',7' tc rgb '" + kPositions + "'\n";
   return s;
 }
@@ -279,16 +278,22 @@ PlotResult draw(const PlotRequest& q) {
   const bool shaded = !is_sphere(q.regions);
   const Region region = resolve_region(q.regions, r.warnings);
   const Zone* cap = shaded ? single_cap(region) : nullptr;
+  check_work(std::to_string(q.program.size()) + " positions on " + region.text(),
+             plot_work(q.program.size(), static_cast<int>(region.zones.size()),
+                       static_cast<int>(region.candidates.size()), shaded && !cap),
+             "draw fewer positions or a region of fewer candidates");
   r.view = cap ? "cap" : "hemispheres";
   r.comment = "the positions of " + display_name(q.name) + (q.run_order ? " numbered in run order" : "") +
               (shaded ? " on the region " + region.text() : "");
-  r.data.push_back({r.stem + "_positions.csv", positions_csv(q, cap)});
-  r.data.push_back({r.stem + "_grid.csv", grid_csv(cap)});
-  if (q.run_order) r.data.push_back({r.stem + "_path.csv", path_csv(q, cap)});
+  r.data.push_back({"positions_file", r.stem + "_positions.csv", positions_csv(q, cap)});
+  r.data.push_back({"grid_file", r.stem + "_grid.csv", grid_csv(cap)});
+  if (q.run_order) r.data.push_back({"path_file", r.stem + "_path.csv", path_csv(q, cap)});
   if (shaded && !cap) {
-    for (int p = 0; p < 2; ++p)
-      r.data.push_back({r.stem + "_region" + std::to_string(p) + ".csv", region_csv(region, p)});
-    r.data.push_back({r.stem + "_edges.csv", edges_csv(region)});
+    for (int p = 0; p < 2; ++p) {
+      const std::string n = std::to_string(p);
+      r.data.push_back({"region" + n + "_file", r.stem + "_region" + n + ".csv", region_csv(region, p)});
+    }
+    r.data.push_back({"edges_file", r.stem + "_edges.csv", edges_csv(region)});
   }
   std::string body =
       "set size ratio -1\nunset border\nunset tics\nunset key\nunset colorbox\nset cbrange [0:1]\n"
@@ -312,7 +317,7 @@ PlotResult draw(const PlotRequest& q) {
     for (double t = 10; t <= cap->max_tilt_deg; t += 10)
       body += "set label " + std::to_string(n++) + " '" + num(t) + "°' at " + num(t * std::cos(60 * kDeg)) + "," +
               num(t * std::sin(60 * kDeg)) + " center front font ',7' tc rgb '" + kEdge + "'\n";
-    body += panel_plot(r.stem, 0, shaded, false, q.run_order);
+    body += panel_plot(0, shaded, false, q.run_order);
   } else {
     r.width_cm = 17.5;
     r.height_cm = 9;
@@ -323,7 +328,7 @@ PlotResult draw(const PlotRequest& q) {
               "' at graph 0, graph 1.02 left\n"
               "set label 2 '+x' at 1.1,0 center\nset label 3 '+y' at 0,1.1 center\nset label 4 '−x' at -1.1,0 center\n"
               "set label 5 '−y' at 0,-1.1 center\n" +
-              panel_plot(r.stem, p, shaded, true, q.run_order);
+              panel_plot(p, shaded, true, q.run_order);
     }
     body += "unset multiplot\n";
   }

@@ -35,8 +35,11 @@ struct PlotRequest {
   Warnings warnings;
 };
 
-// A file the figure's script reads, named relative to the figure's folder.
+// A file the figure's script reads, named relative to the figure's folder. The body names it only by
+// `variable`, which the script sets to the file's name (plots/figure.hpp, ScriptFile): no name from
+// outside (--out's stem) is ever part of the body's text.
 struct PlotData {
+  std::string variable;
   std::string file;
   std::string text;
 };

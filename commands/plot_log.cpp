@@ -29,6 +29,7 @@ std::string num(double v) {
 struct Interval {
   double start, end, residual;
   Vec3 mean;
+  int samples = -1;  // -1: the file does not say
 };
 
 // The calibration's intervals (start, end in seconds, raw mean, residual) and |I|.
@@ -43,10 +44,51 @@ std::vector<Interval> intervals_of(const std::string& file, double& magnitude) {
         !i["mean"].is_array() || i["mean"].size() != 3)
       throw InputError(file, 0, "its intervals need start and end times (a raw log's calibration), mean and residual");
     out.push_back({i["start"].get<double>(), i["end"].get<double>(), i["residual"].get<double>(),
-                   Vec3(i["mean"][0].get<double>(), i["mean"][1].get<double>(), i["mean"][2].get<double>())});
+                   Vec3(i["mean"][0].get<double>(), i["mean"][1].get<double>(), i["mean"][2].get<double>()),
+                   i.contains("samples") && i["samples"].is_number_integer() ? i["samples"].get<int>() : -1});
   }
   if (out.empty()) throw InputError(file, 0, "no intervals");
   return out;
+}
+
+// The calibration must be this log's: each of its intervals holds, in the log, at least as many
+// finite rows as it says, and their sum is its mean times their number but for the rows calibrate left
+// out as outliers (each at most the farthest row's distance from the mean), to rounding. Another log's
+// would be drawn over the wrong samples (a rehearsal of the same program has the same times, other means).
+void refuse_other_log(const PlotRequest& q, const RawLog& log, const std::vector<Interval>& intervals) {
+  std::vector<double> t;  // the finite rows' times, increasing, and their rows
+  std::vector<int> row;
+  for (int i = 0; i < log.size(); ++i)
+    if (log.finite(i)) {
+      t.push_back(log.t[static_cast<std::size_t>(i)]);
+      row.push_back(i);
+    }
+  const auto fail = [&](std::size_t k, int n, const std::string& why) {
+    const Interval& iv = intervals[k];
+    return InputError(q.calibration, 0,
+                      "interval " + std::to_string(k + 1) + " (" + num(iv.start) + " to " + num(iv.end) +
+                          " s) is not in " + display_name(q.log) + " (" + std::to_string(n) + " rows" + why +
+                          "): another log's calibration");
+  };
+  double previous_end = -INFINITY;
+  for (std::size_t k = 0; k < intervals.size(); ++k) {
+    const Interval& iv = intervals[k];
+    // calibrate's intervals follow one another: overlapping ones are no log's (and would cost rows x intervals).
+    if (!(iv.start > previous_end && iv.end >= iv.start)) throw fail(k, 0, ", out of order");
+    previous_end = iv.end;
+    const auto lo = std::lower_bound(t.begin(), t.end(), iv.start), hi = std::upper_bound(t.begin(), t.end(), iv.end);
+    Vec3 sum = Vec3::Zero();
+    double farthest = 0;
+    for (auto it = lo; it != hi; ++it) {
+      const Vec3& s = log.samples[static_cast<std::size_t>(row[static_cast<std::size_t>(it - t.begin())])];
+      sum += s;
+      farthest = std::max(farthest, (s - iv.mean).norm());
+    }
+    const int n = static_cast<int>(hi - lo), left_out = iv.samples < 0 ? 0 : n - iv.samples;
+    const double rounding = 1e-9 * n * iv.mean.norm();
+    if (n == 0 || left_out < 0 || 2 * left_out > n || !((sum - n * iv.mean).norm() <= left_out * farthest + rounding))
+      throw fail(k, n, n > 0 ? ", another mean" : "");
+  }
 }
 
 }  // namespace
@@ -55,6 +97,7 @@ void plot_log(const PlotRequest& q, PlotResult& r) {
   double magnitude = 1;
   const std::vector<Interval> intervals = intervals_of(q.calibration, magnitude);
   const RawLog log = read_raw_log(q.log);
+  refuse_other_log(q, log, intervals);
   // Before calibration: one gain for all axes and no offsets, the median |mean| over |I|.
   std::vector<double> norms;
   for (const auto& i : intervals) norms.push_back(i.mean.norm());
@@ -75,15 +118,14 @@ void plot_log(const PlotRequest& q, PlotResult& r) {
     lo = std::min(lo, s.minCoeff());
     hi = std::max(hi, s.maxCoeff());
   }
-  r.data.push_back({r.stem + "_log.csv", rows});
-  r.data.push_back({r.stem + "_intervals.csv", iv});
+  r.data.push_back({"log_file", r.stem + "_log.csv", rows});
+  r.data.push_back({"intervals_file", r.stem + "_intervals.csv", iv});
   r.view = "log";
   r.comment = "the log " + display_name(q.log) + " with the static intervals of " + display_name(q.calibration) +
               ", and |mean| - |I| per interval before and after calibration";
   r.width_cm = 17.5;
   r.height_cm = 9.5;
   const double pad = 0.04 * (hi - lo), mid = 0.5 * (lo + hi), half = 0.5 * (hi - lo) + pad;
-  const std::string s = r.stem;
   r.body =
       "set multiplot\nset grid\nset lmargin at screen 0.1\nset rmargin at screen 0.78\n"
       "set key outside right top Left reverse samplen 2 width -1\nset label 1 '(a)' at graph 0, graph 1.04 left front\n"
@@ -91,28 +133,27 @@ void plot_log(const PlotRequest& q, PlotResult& r) {
       "set style fill solid 1.0 noborder\nset yrange [" +
       num(mid - half) + ":" + num(mid + half) +
       "]\n"
-      "plot '" +
-      s + "_intervals.csv' skip 1 using (($2+$3)/2):(" + num(mid) + "):(($3-$2)/2):(" + num(half) +
+      "plot intervals_file skip 1 using (($2+$3)/2):(" +
+      num(mid) + "):(($3-$2)/2):(" + num(half) +
       ") with boxxyerror lc rgb '#e3e3e3' title 'static', \\\n"
-      "     '" +
-      s + "_log.csv' skip 1 using 1:2 with lines lw 1 lc rgb '" + kDark +
+      "     log_file skip 1 using 1:2 with lines lw 1 lc rgb '" +
+      kDark +
       "' title 'x', \\\n"
-      "     '" +
-      s + "_log.csv' skip 1 using 1:3 with lines lw 1 lc rgb '" + kMedium +
+      "     log_file skip 1 using 1:3 with lines lw 1 lc rgb '" +
+      kMedium +
       "' title 'y', \\\n"
-      "     '" +
-      s + "_log.csv' skip 1 using 1:4 with lines lw 1 lc rgb '" + kLight +
+      "     log_file skip 1 using 1:4 with lines lw 1 lc rgb '" +
+      kLight +
       "' title 'z'\n"
       "set label 1 '(b)'\nset tmargin at screen 0.44\nset bmargin at screen 0.12\nset xlabel 'static interval'\n"
       "set ylabel '| |mean| − |I| |'\nset xrange [0:" +
       std::to_string(intervals.size() + 1) +
       "]\nset yrange [*:*]\nset logscale y\nset format y '10^{/*1.1 %T}'\n"
-      "plot '" +
-      s + "_intervals.csv' skip 1 using 1:(abs($4)) with points pt 6 ps 0.9 lw 1.5 lc rgb '" + kGrey +
+      "plot intervals_file skip 1 using 1:(abs($4)) with points pt 6 ps 0.9 lw 1.5 lc rgb '" +
+      kGrey +
       "' title 'before (one gain)', \\\n"
-      "     '" +
-      s + "_intervals.csv' skip 1 using 1:(abs($5)) with points pt 7 ps 0.9 lc rgb '" + kDark +
-      "' title 'after calibration'\nunset multiplot\n";
+      "     intervals_file skip 1 using 1:(abs($5)) with points pt 7 ps 0.9 lc rgb '" +
+      kDark + "' title 'after calibration'\nunset multiplot\n";
 }
 
 }  // namespace scalcal::commands

@@ -1,6 +1,8 @@
 // `scalcal random` (random.hpp).
 #include "commands/random.hpp"
 
+#include <cmath>
+
 #include "commands/region_request.hpp"
 #include "commands/usage_error.hpp"
 #include "commands/work_bound.hpp"
@@ -42,7 +44,7 @@ RandomResult random_programs(const RandomRequest& q, const Progress&) {
                      std::to_string(model_parameters(q.model)) + " parameters of --model " +
                      std::string(model_name(q.model)));
   check_work("--count " + std::to_string(q.count) + " at --positions " + std::to_string(q.positions),
-             random_search_work(q.count, q.positions, model_parameters(q.model)),
+             random_search_work(q.count, q.positions, model_parameters(q.model), criterion_name(q.criterion)),
              "lower --count or --positions, or run several seeds one after another");
   RandomResult r;
   r.request = q;
@@ -55,6 +57,13 @@ RandomResult random_programs(const RandomRequest& q, const Progress&) {
     }
   }
   r.search = random_search(q.positions, q.count, q.criterion, q.seed, q.threads, sampler, q.model);
+  // No program with a finite value: the "best" would be a placeholder of zero vectors, not a program.
+  if (!std::isfinite(r.search.best))
+    throw UsageError("none of the " + std::to_string(q.count) + " random programs of " + std::to_string(q.positions) +
+                     " positions" + (r.region.empty() ? "" : " on " + r.region) + " has a finite " +
+                     std::string(criterion_name(q.criterion)) +
+                     " (each is rank-deficient in double precision): draw more (--count), more positions, or a wider "
+                     "region");
   return r;
 }
 

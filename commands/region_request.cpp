@@ -23,11 +23,15 @@ bool is_sphere(const std::vector<std::string>& specs) {
   return specs.empty() || (specs.size() == 1 && specs[0] == "sphere");
 }
 
-Region resolve_region(const std::vector<std::string>& specs, Warnings& warnings) {
-  Region region = parse_region(specs);
-  const double condition = check_region_identifiable(region);
+void check_conditioning(const Region& region, Warnings& warnings, const std::string& option) {
+  double condition = 0;
+  try {
+    condition = check_region_identifiable(region);
+  } catch (const InputError& e) {  // named by the option that made the region
+    throw InputError(option, e.line(), e.reason());
+  }
   if (condition > kBeyondDouble)
-    throw InputError("--region", 0,
+    throw InputError(option, 0,
                      "'" + region.text() + "': even the uniform measure has condition number " +
                          short_number(condition) +
                          ", beyond what double precision resolves (1e14): bias and scale factor are confounded "
@@ -35,6 +39,11 @@ Region resolve_region(const std::vector<std::string>& specs, Warnings& warnings)
   if (condition > kIllConditioned)
     warnings.push_back({"", "on " + region.text() + " even the uniform measure has condition number " +
                                 short_number(condition) + " (bias and scale factor are nearly confounded there)"});
+}
+
+Region resolve_region(const std::vector<std::string>& specs, Warnings& warnings) {
+  Region region = parse_region(specs);
+  check_conditioning(region, warnings, "--region");
   return region;
 }
 
@@ -73,12 +82,52 @@ void refuse_outside(const std::string& name, const Program& program, const Regio
                        " positions are outside the region " + region.text() + ": position " + list);
 }
 
+namespace {
+
+constexpr std::string_view kCandidates = "candidates:";
+
+// A relative candidates path of a file in `folder`, as the working folder sees it.
+std::vector<std::string> specs_read_from(std::vector<std::string> specs, const std::filesystem::path& folder) {
+  if (folder.empty()) return specs;
+  for (auto& s : specs)
+    if (s.starts_with(kCandidates)) {
+      const std::filesystem::path p(s.substr(kCandidates.size()));
+      if (!p.empty() && p.is_relative()) s = std::string(kCandidates) + (folder / p).lexically_normal().string();
+    }
+  return specs;
+}
+
+}  // namespace
+
+std::vector<std::string> specs_written_to(const std::vector<std::string>& specs, const std::string& file) {
+  namespace fs = std::filesystem;
+  std::vector<std::string> out = specs;
+  for (auto& s : out) {
+    if (!s.starts_with(kCandidates)) continue;
+    const fs::path p(s.substr(kCandidates.size()));
+    if (p.empty() || p.is_absolute()) continue;
+    std::error_code ec;
+    const fs::path absolute = fs::absolute(p, ec).lexically_normal();
+    if (ec) continue;
+    fs::path written = absolute;
+    if (file != "-") {
+      const fs::path folder = fs::absolute(fs::path(file).parent_path(), ec).lexically_normal();
+      const fs::path relative = ec ? fs::path() : absolute.lexically_relative(folder);
+      if (!relative.empty()) written = relative;
+    }
+    s = std::string(kCandidates) + written.string();
+  }
+  return out;
+}
+
 std::vector<std::string> regions_for(const std::vector<std::string>& given, const std::string& program_argument,
                                      Warnings& warnings) {
   if (program_argument.empty() || named_program(program_argument)) return given;
   std::error_code ec;
   if (program_argument != "-" && !std::filesystem::is_regular_file(program_argument, ec)) return given;
-  const ProgramRegion file = read_program_region(program_argument);
+  ProgramRegion file = read_program_region(program_argument);
+  if (program_argument != "-")
+    file.specs = specs_read_from(file.specs, std::filesystem::path(program_argument).parent_path());
   if (file.specs.empty()) return given;
   try {
     parse_region(file.specs);

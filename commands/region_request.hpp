@@ -20,6 +20,10 @@ inline constexpr double kBeyondDouble = 1e14;
 // precision; adds a warning when the region's best conditioning is poor.
 Region resolve_region(const std::vector<std::string>& specs, Warnings& warnings);
 
+// The conditioning check of resolve_region for a region made otherwise (optimize --margin's inset
+// one): InputError naming `option` beyond double precision, a warning when poor.
+void check_conditioning(const Region& region, Warnings& warnings, const std::string& option);
+
 // True when the specs name the whole sphere (none, or only "sphere").
 bool is_sphere(const std::vector<std::string>& specs);
 
@@ -38,9 +42,15 @@ void refuse_outside(const std::string& name, const Program& program, const Regio
                     double tolerance_deg = kRegionToleranceDeg);
 
 // The region specs a command judges PROGRAM on: `given` (--region) when there are any, else the
-// `# region:` line of the program file (none for a catalogue name or data). A bad region line is an
-// InputError naming the file and line; a file's region that --region replaces is a warning.
+// `# region:` line of the program file (none for a catalogue name or data), its relative
+// `candidates:` paths taken from the file's folder. A bad region line is an InputError naming the
+// file and line; a file's region that --region replaces is a warning.
 std::vector<std::string> regions_for(const std::vector<std::string>& given, const std::string& program_argument,
                                      Warnings& warnings);
+
+// The specs as a file written to `file` must carry them to read back from anywhere: a relative
+// `candidates:` path (relative to the working folder) made relative to the file's folder, or
+// absolute for standard output ("-") or when no relative path leads there.
+std::vector<std::string> specs_written_to(const std::vector<std::string>& specs, const std::string& file);
 
 }  // namespace scalcal::commands

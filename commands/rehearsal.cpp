@@ -1,9 +1,13 @@
 // Rehearsal logs (rehearsal.hpp).
 #include "commands/rehearsal.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 
+#include "commands/common_options.hpp"
+#include "commands/region_request.hpp"
 #include "commands/tumbling_rehearsal.hpp"
 #include "commands/usage_error.hpp"
 #include "numeric/io/csv_table.hpp"
@@ -83,7 +87,49 @@ class LogWriter {
   double dt_;
 };
 
+// The rows of the log, counted as LogWriter writes them: each rest and each move (a swing away and
+// back between near positions), in double so that no request overflows the count.
+struct RowCount {
+  double rows = 0;
+  void rest(double rate, double seconds) { rows += std::max(1.0, std::round(seconds * rate)); }
+  void move(double rate, const Vec3& a, const Vec3& b) {
+    rows += std::max(2.0, std::round(std::max(kMinMoveS, angle_deg(a, b) / kSpeedDegPerS) * rate)) - 1;
+  }
+};
+
 }  // namespace
+
+double rehearsal_rows(const RehearsalRequest& q) {
+  RowCount c;
+  const auto& p = q.program.positions;
+  if (p.empty()) return 0;
+  c.rest(q.rate_hz, std::max(q.still_s, q.dwell_s));
+  for (std::size_t i = 1; i < p.size(); ++i) {
+    if (angle_deg(p[i - 1], p[i]) < kNearDeg) {
+      const Vec3 away = along(p[i - 1], perpendicular(p[i - 1]), kSwingDeg / 90.0);
+      c.move(q.rate_hz, p[i - 1], away);
+      c.move(q.rate_hz, away, p[i]);
+    } else {
+      c.move(q.rate_hz, p[i - 1], p[i]);
+    }
+    c.rest(q.rate_hz, q.dwell_s);
+  }
+  return c.rows;
+}
+
+void check_rehearsal_size(const RehearsalRequest& q) {
+  if (!(q.rate_hz >= kMinRateHz && q.rate_hz <= kMaxRateHz))
+    throw UsageError("--rate " + shortest_text(q.rate_hz) + ": the rehearsal takes " + shortest_text(kMinRateHz) +
+                     " to " + shortest_text(kMaxRateHz) +
+                     " samples per second (time stamps are written in microseconds)");
+  if (q.tumble_s > 0) return;  // a tumbling log's rows are --rate x --tumble (simulate checks them)
+  if (const double rows = rehearsal_rows(q); rows > kMaxRehearsalRows)
+    throw UsageError("--rate " + shortest_text(q.rate_hz) + " with --dwell " + shortest_text(q.dwell_s) +
+                     " and --still " + shortest_text(q.still_s) + " on " + std::to_string(q.program.size()) +
+                     " positions asks for " + shortest_text(rows) +
+                     " rows, the moves between positions included; the bound is " + shortest_text(kMaxRehearsalRows) +
+                     " rows");
+}
 
 Meter rehearsal_meter(const RehearsalRequest& q, GaussianSource& gauss) {
   Meter meter;
@@ -101,6 +147,7 @@ Meter rehearsal_meter(const RehearsalRequest& q, GaussianSource& gauss) {
 }
 
 RehearsalResult rehearse(const RehearsalRequest& q) {
+  check_rehearsal_size(q);
   if (q.tumble_s > 0) return rehearse_tumbling(q);
   RehearsalResult r;
   r.request = q;
@@ -108,6 +155,10 @@ RehearsalResult rehearse(const RehearsalRequest& q) {
   r.meter = rehearsal_meter(q, gauss);
   r.correction = correction_of(r.meter);
   LogWriter log(r, r.meter, gauss);
+  const auto rows = static_cast<std::size_t>(rehearsal_rows(q));
+  r.t.reserve(rows);
+  r.samples.reserve(rows);
+  r.position.reserve(rows);
   const auto& p = q.program.positions;
   log.rest(p[0], std::max(q.still_s, q.dwell_s), 1);
   for (std::size_t i = 1; i < p.size(); ++i) {
@@ -120,6 +171,12 @@ RehearsalResult rehearse(const RehearsalRequest& q) {
     }
     log.rest(p[i], q.dwell_s, static_cast<int>(i + 1));
   }
+  // Every number written is finite: a magnitude near the largest double overflows once the meter's
+  // gain and noise are applied.
+  for (const Vec3& s : r.samples)
+    if (!s.allFinite())
+      throw UsageError("--magnitude " + shortest_text(q.magnitude) +
+                       ": the meter's outputs overflow double precision; give |I| in smaller units");
   return r;
 }
 
@@ -147,16 +204,12 @@ Json truth_json(const RehearsalResult& r) {
   return j;
 }
 
-void write_raw_log(std::ostream& out, const RehearsalResult& r, bool text_format) {
+void write_raw_log(std::ostream& out, const RehearsalResult& r, bool text_format, const std::string& file) {
   const RehearsalRequest& q = r.request;
   // The text form is IMU-TK's: numbers only (its reader takes no comment line); what the CSV's
   // comments say is in the truth file.
   if (!text_format) {
-    if (!q.region.empty()) {
-      out << "# region: ";
-      for (std::size_t k = 0; k < q.region.size(); ++k) out << (k ? ";" : "") << q.region[k];
-      out << "\n";
-    }
+    if (!q.region.empty()) out << region_line(specs_written_to(q.region, file));
     out << "# rehearsal of " << display_name(q.name) << " (scalcal simulate, seed " << q.seed
         << "): " << q.program.size() << " positions, " << q.rate_hz << " Hz\n";
     out << "t,ix,iy,iz\n";
@@ -165,18 +218,17 @@ void write_raw_log(std::ostream& out, const RehearsalResult& r, bool text_format
   char line[160];
   for (std::size_t i = 0; i < r.t.size(); ++i) {
     const Vec3& s = r.samples[i];
-    std::snprintf(line, sizeof line, "%.6f%c%.12g%c%.12g%c%.12g\n", r.t[i], sep, s(0), sep, s(1), sep, s(2));
+    const int n =
+        std::snprintf(line, sizeof line, "%.6f%c%.12g%c%.12g%c%.12g\n", r.t[i], sep, s(0), sep, s(1), sep, s(2));
+    // check_rehearsal_size keeps t below 1e11 s (24 characters): a row that does not fit is a bug.
+    if (n < 0 || n >= static_cast<int>(sizeof line)) throw std::logic_error("a rehearsal row longer than its buffer");
     out << line;
   }
 }
 
-void write_bench_file(std::ostream& out, const RehearsalResult& r) {
+void write_bench_file(std::ostream& out, const RehearsalResult& r, const std::string& file) {
   const RehearsalRequest& q = r.request;
-  if (!q.region.empty()) {
-    out << "# region: ";
-    for (std::size_t k = 0; k < q.region.size(); ++k) out << (k ? ";" : "") << q.region[k];
-    out << "\n";
-  }
+  if (!q.region.empty()) out << region_line(specs_written_to(q.region, file));
   out << "# rehearsal of " << display_name(q.name) << " (scalcal simulate, seed " << q.seed << ")\n";
   out << "position,x,y,z,ix,iy,iz\n";
   char line[256];
@@ -184,8 +236,9 @@ void write_bench_file(std::ostream& out, const RehearsalResult& r) {
     if (r.position[i] == 0) continue;
     const Vec3& x = q.program.positions[static_cast<std::size_t>(r.position[i] - 1)];
     const Vec3& s = r.samples[i];
-    std::snprintf(line, sizeof line, "%d,%.17g,%.17g,%.17g,%.12g,%.12g,%.12g\n", r.position[i], x(0), x(1), x(2), s(0),
-                  s(1), s(2));
+    const int n = std::snprintf(line, sizeof line, "%d,%.17g,%.17g,%.17g,%.12g,%.12g,%.12g\n", r.position[i], x(0),
+                                x(1), x(2), s(0), s(1), s(2));
+    if (n < 0 || n >= static_cast<int>(sizeof line)) throw std::logic_error("a bench-file row longer than its buffer");
     out << line;
   }
 }

@@ -57,8 +57,18 @@ struct RehearsalResult {
   Warnings warnings;
 };
 
+// The work bound of a rehearsal: its rows are counted before any is made (rests and moves alike),
+// and its rate is one whose time stamps the log's microseconds resolve.
+inline constexpr double kMaxRehearsalRows = 2e7;
+inline constexpr double kMinRateHz = 1e-3, kMaxRateHz = 1e6;
+double rehearsal_rows(const RehearsalRequest& request);
+// Throws UsageError for a rate outside [kMinRateHz, kMaxRateHz] or (a program's rehearsal, not a
+// tumbling one) more than kMaxRehearsalRows rows.
+void check_rehearsal_size(const RehearsalRequest& request);
+
 // Throws InputError for a meter file that cannot be read or lacks a key, UsageError for a meter
-// whose axes are degenerate. A request with tumble_s > 0 is a tumbling log's (rehearse_tumbling).
+// whose axes are degenerate, a request check_rehearsal_size refuses, or outputs that overflow. A request
+// with tumble_s > 0 is a tumbling log's (rehearse_tumbling).
 RehearsalResult rehearse(const RehearsalRequest& request);
 // The meter of a rehearsal: the file's, or random from the seed's first draws.
 Meter rehearsal_meter(const RehearsalRequest& request, GaussianSource& gauss);
@@ -70,8 +80,9 @@ Json truth_json(const RehearsalResult& result);
 
 // The raw log: CSV `t,ix,iy,iz` (after the region line and a comment), or text `t ix iy iz` without a
 // header (IMU-TK's form). The grouped bench file: CSV `position,x,y,z,ix,iy,iz`, the resting samples
-// of each position with its designed direction.
-void write_raw_log(std::ostream& out, const RehearsalResult& result, bool text_format);
-void write_bench_file(std::ostream& out, const RehearsalResult& result);
+// of each position with its designed direction. `file` is where the text goes ("-": standard output):
+// the region line's candidates paths are written as that file's folder sees them.
+void write_raw_log(std::ostream& out, const RehearsalResult& result, bool text_format, const std::string& file = "-");
+void write_bench_file(std::ostream& out, const RehearsalResult& result, const std::string& file = "-");
 
 }  // namespace scalcal::commands

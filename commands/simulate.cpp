@@ -8,6 +8,7 @@
 
 #include "commands/region_request.hpp"
 #include "commands/usage_error.hpp"
+#include "commands/work_bound.hpp"
 #include "numeric/calibration/model_calibration.hpp"
 #include "numeric/criteria/identifiability.hpp"
 #include "numeric/criteria/model_evaluation.hpp"
@@ -197,8 +198,7 @@ void read_rehearsal(const Values& v, SimulateRequest& q) {
   if (r.tumble_s > 0 && r.rate_hz * r.tumble_s > 2e7) throw UsageError("--rate x --tumble asks for more than 2e7 rows");
   if (r.noise >= kNoiseRefuseAbove)
     throw UsageError("option --noise: must be below 1 |I| (noise as large as the measured vector)");
-  if (r.rate_hz * (r.dwell_s + r.still_s) * r.program.size() > 2e7)
-    throw UsageError("--rate x (--dwell + --still) x positions asks for more than 2e7 rows");
+  check_rehearsal_size(r);  // before any work: the rows, moves included
   q.rehearsal = std::move(r);
 }
 
@@ -236,6 +236,11 @@ SimulateResult simulate(const SimulateRequest& q, const Progress& progress) {
     throw UsageError(std::string("simulate: ") + e.what());
   }
   if (!ev.full_rank()) throw InputError(q.name, 0, rank_deficiency(ev));
+  check_work("--trials " + std::to_string(q.trials) + " of " + std::to_string(q.program.size()) +
+                 " positions with --samples " + std::to_string(q.samples),
+             monte_carlo_work(static_cast<long long>(q.trials) * static_cast<long long>(q.moduli.size()),
+                              q.program.size(), q.samples, model_parameters(q.model)),
+             "fewer --trials or --samples");
   check_noise(q, ev, r.warnings);
   for (const Modulus m : q.moduli) {
     MonteCarloOptions mc;

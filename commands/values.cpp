@@ -1,9 +1,11 @@
 // Values of a command's options (values.hpp).
 #include "commands/values.hpp"
 
+#include <filesystem>
 #include <stdexcept>
 
 #include "commands/usage_error.hpp"
+#include "numeric/io/input_error.hpp"
 
 namespace scalcal::commands {
 
@@ -54,6 +56,33 @@ bool Values::flag(const std::string& name) const { return text(name) == "1"; }
 std::vector<std::string> Values::list(const std::string& name) const {
   const auto it = given_.find(option(name).name);
   return it == given_.end() ? std::vector<std::string>{} : it->second;
+}
+
+namespace {
+
+// One file by two names: equal once made absolute and normal (of a file not yet there), or the same
+// file (a link, a folder named two ways).
+bool same_file(const std::string& a, const std::string& b) {
+  namespace fs = std::filesystem;
+  std::error_code ec, ec2;
+  if (a == b) return true;
+  const fs::path pa = fs::weakly_canonical(a, ec).lexically_normal(),
+                 pb = fs::weakly_canonical(b, ec2).lexically_normal();
+  if (!ec && !ec2 && pa == pb) return true;
+  return fs::equivalent(a, b, ec);
+}
+
+}  // namespace
+
+void check_distinct_outputs(const Values& v) {
+  std::vector<const Option*> outputs;
+  for (const auto& o : v.table().options)
+    if (o.writes_file && v.given(o.name) && v.text(o.name) != "-") outputs.push_back(&o);
+  for (std::size_t i = 0; i < outputs.size(); ++i)
+    for (std::size_t j = i + 1; j < outputs.size(); ++j)
+      if (same_file(v.text(outputs[i]->name), v.text(outputs[j]->name)))
+        throw UsageError(outputs[i]->name + " and " + outputs[j]->name + " name the same file '" +
+                         display_name(v.text(outputs[j]->name)) + "': each output needs its own file");
 }
 
 }  // namespace scalcal::commands

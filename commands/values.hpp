@@ -45,4 +45,9 @@ class Values {
   std::map<std::string, std::vector<std::string>> given_;
 };
 
+// Throws UsageError when two options that write files (Option::writes_file) name the same file: by
+// the same text, or by two paths to one file ("out.csv" and "./out.csv", a link), e.g.
+// `simulate --log X --truth X`. Standard output ("-") is checked by the front end that routes it.
+void check_distinct_outputs(const Values& values);
+
 }  // namespace scalcal::commands

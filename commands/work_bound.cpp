@@ -73,12 +73,18 @@ void check_work(const std::string& what, const WorkEstimate& e, const std::strin
                      " of memory (estimate); this process may use " + amount_of_memory(allowed) + ": " + advice);
 }
 
-// Measured: 6.6 M programs/s/core for D at N = 18 and 8.5 ns per position at N = 1000; E's 9 x 9
-// eigenvalues cost 5.3 us a program. Here every criterion is charged E's price, and a model's cost
-// grows as its parameters squared (moments) and cubed (the factorisation).
-WorkEstimate random_search_work(long long count, int positions, int parameters) {
+// Measured (one thread, user CPU, issue 50): per program of the paper's model at N = 12, D 0.13 us (the
+// determinant only, in batches), A 0.47 us, S 0.67 us, E 5.2 us (9 x 9 eigenvalues); each position adds
+// 7.5 ns (N = 1000: D 7.5 us). Another model's programs are scored one by one: 13 us for cubic12's D at
+// N = 12. A position's cost grows as the parameters squared (moments), a program's as their cube.
+WorkEstimate random_search_work(long long count, int positions, int parameters, std::string_view criterion) {
   const double p = parameters / 9.0;
-  const double per_program = positions * 1e-8 * p * p + 6e-6 * p * p * p;
+  const double price = parameters != 9    ? 6e-6 * p * p * p
+                       : criterion == "D" ? 1.5e-7
+                       : criterion == "A" ? 5e-7
+                       : criterion == "S" ? 7e-7
+                                          : 5.5e-6;  // E, and any other criterion at E's price
+  const double per_program = positions * 8e-9 * p * p + price;
   return {static_cast<double>(count) * per_program, 2e7 + 64.0 * positions};
 }
 
@@ -87,7 +93,10 @@ WorkEstimate random_search_work(long long count, int positions, int parameters) 
 // (about 44 MPFR numbers per N^2). Five iterations are typical.
 WorkEstimate polish_work(int positions, int digits) {
   const double n = positions, d = digits;
-  const double per_iteration = (4.5e-4 * n * n + 5.2e-6 * n * n * n) * (0.5 + d / 100 + (d / 400) * (d / 400));
+  // Issue 50: from a random program (the damped steps' extra residuals) 0.55 s an iteration at N = 20 and
+  // 1.1 s at 30, measured: the linear term.
+  const double per_iteration =
+      (1.5e-2 * n + 4.5e-4 * n * n + 5.2e-6 * n * n * n) * (0.5 + d / 100 + (d / 400) * (d / 400));
   return {5 * per_iteration, 2e7 + 44 * n * n * mpfr_bytes(digits)};
 }
 
@@ -97,10 +106,38 @@ WorkEstimate certify_work(int positions, int digits) {
   return {65 * n * n * n * scale, 2e7 + 2.9e9 * n * n * scale};
 }
 
-// Measured: 3 s and 160 MB at N = 1000, 15 s and 580 MB at N = 2000.
+// Measured: 3 s and 160 MB at N = 1000, 15 s and 580 MB at N = 2000; issue 50, user CPU: 0.64 s at
+// N = 400, 5.0 s at 1000 (N^2.25).
 WorkEstimate augment_work(int positions) {
   const double n = positions / 1000.0;
-  return {3 * std::pow(n, 2.5), 2e7 + 1.4e8 * n * n};
+  return {5 * std::pow(n, 2.25), 2e7 + 1.4e8 * n * n};
+}
+
+// Measured (user CPU): 0.31 s at N = 1000, 1.30 s at 2000, 6.2 s and 144 MB at 4000 on gimbal:x,y (2
+// settings a position); 1.85 s at N = 500, 6.2 s at 1000, 25.5 s at 2000 on gimbal:x,y,z (24 settings:
+// 12 samples of the outer axis). The pairs' distances over their settings, then the paths: N^2 (1.1e-8
+// c^2 + 2.8e-7) s; the distances' table is 8 N^2 bytes (100000 positions: 80 GB).
+WorkEstimate plan_work(int positions, double settings) {
+  const double n = positions;
+  return {n * n * (1.1e-8 * settings * settings + 2.8e-7), 2e7 + 8.0 * n * n + 200 * n * settings};
+}
+
+// Measured (user CPU, per calibration: trials x moduli): 6.8e-4 s at N = 200 with 5 samples, 1.5e-3 s
+// with 50; 2.6e-3 s at N = 1000 with 1; 2.2e-3 s at N = 100 with 200: 9.2e-8 s a sample (drawn and
+// averaged) and 2.9e-6 s a position (the fit), the fit growing with the parameters squared.
+WorkEstimate monte_carlo_work(long long trials, int positions, long long samples, int parameters) {
+  const double p = parameters / 9.0, n = positions;
+  const double per_trial = 1e-7 * n * static_cast<double>(samples) + 3e-6 * n * p * p;
+  return {static_cast<double>(trials) * per_trial, 2e7 + 8.0 * n * (3 + 3.0 * static_cast<double>(samples))};
+}
+
+// Measured (user CPU, gnuplot included): 0.2 s for classic18, 0.74 s for 2000 positions and 3.5 s for
+// 10000 (gnuplot draws each point and its number three times: 2.5e-4 s a position); the shaded disks
+// add 0.5 s, and 1.2e-9 s per pixel and candidate (3000 candidates: 0.4 s). 100000 positions: 22.5 s.
+WorkEstimate plot_work(int positions, int zones, int candidates, bool shaded_disks) {
+  const double pixels = shaded_disks ? 2.0 * 241 * 241 : 0;
+  const double cpu = 0.2 + 2.5e-4 * positions + (shaded_disks ? 0.5 : 0) + 1.2e-9 * pixels * (zones + candidates);
+  return {cpu, 2e7 + 400.0 * positions + 60 * pixels};
 }
 
 }  // namespace scalcal::commands

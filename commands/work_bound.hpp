@@ -5,6 +5,7 @@
 // and err on the high side; they decide only whether to start, never what is computed.
 #pragma once
 #include <string>
+#include <string_view>
 
 namespace scalcal::commands {
 
@@ -25,8 +26,8 @@ double available_memory_bytes();
 void check_work(const std::string& what, const WorkEstimate& estimate, const std::string& advice);
 
 // The estimates, one per kind of work whose cost grows faster than its input.
-// random: `count` programs of N positions for a model with `parameters` parameters.
-WorkEstimate random_search_work(long long count, int positions, int parameters);
+// random: `count` programs of N positions for a model with `parameters` parameters, by `criterion`.
+WorkEstimate random_search_work(long long count, int positions, int parameters, std::string_view criterion);
 // polish (and optimize --digits): Newton in MPFR at `digits` digits on N positions (a dense Jacobian
 // of ~3N x 3N numbers and its orthogonal decomposition).
 WorkEstimate polish_work(int positions, int digits);
@@ -34,5 +35,13 @@ WorkEstimate polish_work(int positions, int digits);
 WorkEstimate certify_work(int positions, int digits);
 // augment: the joint polish of N given plus added positions in double (a dense ~3N x 3N step).
 WorkEstimate augment_work(int positions);
+// plan: the run order of N positions with `settings` bench settings each on average (the distance of
+// every pair of positions over every pair of their settings, nearest-neighbour paths, 2-opt).
+WorkEstimate plan_work(int positions, double settings);
+// simulate's Monte-Carlo: `trials` calibrations of N positions with `samples` samples each for a model
+// of `parameters` parameters.
+WorkEstimate monte_carlo_work(long long trials, int positions, long long samples, int parameters);
+// plot: the region's pixels tested against its zones and candidates, and the program's positions.
+WorkEstimate plot_work(int positions, int zones, int candidates, bool shaded_disks);
 
 }  // namespace scalcal::commands

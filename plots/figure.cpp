@@ -5,6 +5,8 @@
 #include <spawn.h>
 #include <sys/wait.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -19,26 +21,63 @@ extern char** environ;
 
 namespace scalcal::plots {
 
-// Inside gnuplot's single quotes only '' is special, but a line break ends the command whatever the
-// quotes: control characters become '?', so no text can leave its string.
+namespace {
+
+// The length of the valid UTF-8 sequence that starts at s[i] (2 to 4 bytes; 0 when it is not one:
+// a stray continuation byte, a truncated or overlong sequence, a surrogate, beyond U+10FFFF).
+std::size_t utf8_length(const std::string& s, std::size_t i) {
+  const auto at = [&](std::size_t k) { return i + k < s.size() ? static_cast<unsigned char>(s[i + k]) : 0u; };
+  const unsigned b = at(0);
+  const std::size_t n = b >= 0xC2 && b <= 0xDF ? 2 : b >= 0xE0 && b <= 0xEF ? 3 : b >= 0xF0 && b <= 0xF4 ? 4 : 0;
+  if (n == 0) return 0;
+  for (std::size_t k = 1; k < n; ++k)
+    if ((at(k) & 0xC0) != 0x80) return 0;
+  const unsigned second = at(1);
+  if ((b == 0xE0 && second < 0xA0) || (b == 0xED && second > 0x9F) || (b == 0xF0 && second < 0x90) ||
+      (b == 0xF4 && second > 0x8F))
+    return 0;
+  return n;
+}
+
+// Bytes that mean nothing inside a double-quoted gnuplot string (and are no markup gnuplot's scanner
+// looks for): written as they are.
+bool plain(unsigned char c) { return std::isalnum(c) || std::strchr(" !#%&'()*+,-./:;<=>?[]^_{|}~", c); }
+
+}  // namespace
+
+// gnuplot reads "\ooo" (first digit 1-3) as three octal digits and "\0ooo" as a 0 and up to three
+// more: each escape is written at its full length, so a digit after it is never taken into it.
 std::string gp_quote(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) {
-    const auto u = static_cast<unsigned char>(c);
-    if (c == '\'')
-      q += "''";
-    else if (u < 0x20 || u == 0x7f)
-      q += '?';
-    else
-      q += c;
+  std::string q = "\"";
+  for (std::size_t i = 0; i < s.size();) {
+    const auto c = static_cast<unsigned char>(s[i]);
+    if (c == 0) throw std::invalid_argument("a gnuplot string cannot hold a NUL byte");
+    if (c < 0x80 && plain(c)) {
+      q += s[i++];
+    } else if (const std::size_t n = utf8_length(s, i); n > 0) {
+      q.append(s, i, n);
+      i += n;
+    } else {
+      char escape[8];
+      std::snprintf(escape, sizeof escape, c < 0100 ? "\\0%03o" : "\\%03o", c);
+      q += escape;
+      ++i;
+    }
   }
-  return q + "'";
+  return q + "\"";
+}
+
+std::string gp_file(const std::string& name) {
+  if (name.find('/') != std::string::npos)
+    throw std::invalid_argument("a figure's file is named without a folder, got '" + one_line(name) + "'");
+  return gp_quote("./" + name);
 }
 
 std::string one_line(const std::string& s) {
   std::string out = s;
   for (char& c : out)
     if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = '?';
+  if (!out.empty() && out.back() == '\\') out += ' ';
   return out;
 }
 
@@ -122,27 +161,36 @@ std::vector<Format> formats(const FigureSpec& spec) {
 }  // namespace
 
 std::string figure_script(const FigureSpec& spec) {
+  std::string files;
+  for (const auto& f : spec.files) {
+    const bool identifier = !f.variable.empty() && !std::isdigit(static_cast<unsigned char>(f.variable[0])) &&
+                            std::all_of(f.variable.begin(), f.variable.end(),
+                                        [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; });
+    if (!identifier) throw std::invalid_argument("not a gnuplot variable: '" + one_line(f.variable) + "'");
+    files += f.variable + " = " + gp_file(f.name) + "\n";
+  }
   std::ostringstream script;
-  script << "# " << one_line(spec.name) << ": " << one_line(spec.comment) << "\n"
+  const std::string name = one_line(spec.name);
+  script << "# " << name << ": " << one_line(spec.comment) << "\n"
          << "# intended print width: " << num(10 * spec.width_cm) << " mm (" << width_name(spec.width_cm)
          << "), height " << num(10 * spec.height_cm) << " mm; text " << num(spec.font_pt)
          << " pt there, indices and exponents " << num(spec.font_pt * kIndexScale) << " pt\n"
-         << "# " << spec.name << ".pdf is that size; " << spec.name << ".png the same drawing at "
-         << num(kPngPixelsPerInch) << " pixels per inch, " << spec.name << ".svg at " << num(kSvgPixelsPerInch)
-         << " (CSS pixels)\n"
+         << "# " << name << ".pdf is that size; " << name << ".png the same drawing at " << num(kPngPixelsPerInch)
+         << " pixels per inch, " << name << ".svg at " << num(kSvgPixelsPerInch) << " (CSS pixels)\n"
          << "# Written by `" << one_line(spec.written_by) << "`; re-make the figure with: cd <this folder> && gnuplot "
-         << spec.name << ".gp\n";
+         << name << ".gp\n";
   for (const auto& f : formats(spec))
     script << "\n# ---- " << f.extension << " ----\nreset\nset terminal " << f.terminal << "\nset output "
-           << gp_quote(spec.name + "." + f.extension) << "\nset datafile separator ','\n"
-           << spec.body << "\nunset output\n";
+           << gp_file(spec.name + "." + f.extension) << "\nset datafile separator ','\n"
+           << files << spec.body << "\nunset output\n";
   return script.str();
 }
 
 RenderedFigure render(const std::filesystem::path& dir, const FigureSpec& spec) {
   namespace fs = std::filesystem;
-  if (spec.name.empty() || spec.name != one_line(spec.name) || spec.name.find('/') != std::string::npos)
-    throw std::invalid_argument("a figure's name must be a plain file stem, got '" + one_line(spec.name) + "'");
+  if (spec.name.empty() || spec.name.find('/') != std::string::npos || spec.name.find('\0') != std::string::npos)
+    throw std::invalid_argument("a figure's name must be a file stem without a folder, got '" + one_line(spec.name) +
+                                "'");
   if (!(spec.width_cm > 0 && spec.height_cm > 0))
     throw std::invalid_argument(spec.name + ": the print size must be positive");
   if (!(spec.font_pt * kIndexScale >= kMinTextPt))

@@ -7,6 +7,7 @@
 #pragma once
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace scalcal::plots {
 
@@ -22,6 +23,13 @@ inline constexpr double kIndexScale = 0.8 * 1.1;
 inline constexpr double kPngPixelsPerInch = 300;  // sharp when printed at the intended width
 inline constexpr double kSvgPixelsPerInch = 96;   // CSS pixels: the SVG opens at its print size
 
+// A data file the body reads, by a string variable the script sets: `VARIABLE = "./NAME"` (gp_file),
+// so that a body names its files without holding any text from outside (`plot positions using 1:2`).
+struct ScriptFile {
+  std::string variable;  // a gnuplot identifier
+  std::string name;      // the file in the figure's folder
+};
+
 struct FigureSpec {
   std::string name;                  // file stem: fig4 -> fig4.gp, fig4.pdf, fig4.png, fig4.svg
   std::string comment;               // one line at the top of the script: what the figure shows
@@ -29,6 +37,7 @@ struct FigureSpec {
   double height_cm = 6.5;
   double font_pt = 8;                            // at print size; render() refuses indices below kMinTextPt
   std::string body;                              // gnuplot commands; data files are named relative to the output folder
+  std::vector<ScriptFile> files;                 // set before the body, for each format
   std::string written_by = "scalcal reproduce";  // the command named in the script's header
 };
 
@@ -42,11 +51,22 @@ RenderedFigure render(const std::filesystem::path& dir, const FigureSpec& spec);
 // The whole NAME.gp of a figure (what render() writes).
 std::string figure_script(const FigureSpec& spec);
 
-// A gnuplot string literal in single quotes ('' escapes a quote; control characters, which would end
-// the command, become '?'). Every text from outside that reaches a script goes through it.
+// A gnuplot string literal that holds exactly the bytes of `s` and nothing gnuplot acts on. Every
+// text from outside that reaches a script goes through it. It is double-quoted, the one form that can
+// hold any byte: letters, digits, plain punctuation and valid UTF-8 stay as they are, every other byte
+// is an octal escape, so no quote, backslash, backtick (gnuplot substitutes commands in backquotes
+// inside double quotes), '@' (a macro), '$', line break or stray byte appears as itself. Throws
+// std::invalid_argument for a NUL byte, which would end the string.
 std::string gp_quote(const std::string& s);
 
-// The text with control characters as '?': for a comment line of a script.
+// A file in the figure's folder as gnuplot must be given it: "./NAME" through gp_quote, so that no
+// name is a pipe ('<cmd' in a plot, '|cmd' as the output), standard input ('-'), a pseudo-file ('+',
+// '++'), a data block ('$name') or a home folder ('~'). Throws std::invalid_argument for a name with
+// a '/' (a figure's files are all in its folder).
+std::string gp_file(const std::string& name);
+
+// The text as one comment line of a script: control characters become '?', and a backslash at its
+// end (which would join the next line to the comment) is followed by a space.
 std::string one_line(const std::string& s);
 
 // Enhanced-text index and exponent that stay at kMinTextPt: sub("bias") is "_{/*1.1 bias}".

@@ -1,6 +1,7 @@
 // Python arguments as Values (arguments.hpp).
 #include "python/arguments.hpp"
 
+#include <algorithm>
 #include <charconv>
 
 #include "commands/usage_error.hpp"
@@ -34,19 +35,37 @@ std::string text_of(const Option& o, py::handle v) {
   wrong_type(o, "a str", v);
 }
 
+// A number as Python and NumPy spell them: int, float and their NumPy kinds (numbers.Integral and
+// numbers.Real, which NumPy registers), never a bool (True is an int to Python).
+bool is_bool(py::handle v) { return py::isinstance<py::bool_>(v) || type_name(v) == "bool_" || type_name(v) == "bool"; }
+bool is_integral(py::handle v) {
+  static const py::object integral = py::module_::import("numbers").attr("Integral");
+  return !is_bool(v) && py::isinstance(v, integral);
+}
+bool is_real(py::handle v) {
+  static const py::object real = py::module_::import("numbers").attr("Real");
+  return !is_bool(v) && py::isinstance(v, real);
+}
+
+// An integral number as its exact decimal text (operator.index: NumPy's integers too, and a Python int
+// of any size, which the option's range then refuses by name); a real one as the shortest text of its
+// double (a float32 widened exactly).
+std::string number_text(py::handle v) {
+  if (is_integral(v)) return py::str(py::module_::import("operator").attr("index")(v)).cast<std::string>();
+  return shortest(py::float_(py::reinterpret_borrow<py::object>(v)).cast<double>());
+}
+
 std::string value_text(const Option& o, py::handle v) {
   switch (o.kind) {
     case OptionKind::integer:
-      if (py::isinstance<py::bool_>(v) || !py::isinstance<py::int_>(v)) wrong_type(o, "an int", v);
-      return py::str(v).cast<std::string>();
+      if (!is_integral(v)) wrong_type(o, "an int", v);
+      return number_text(v);
     case OptionKind::number:
-      if (py::isinstance<py::bool_>(v) || !(py::isinstance<py::int_>(v) || py::isinstance<py::float_>(v)))
-        wrong_type(o, "a number", v);
-      return shortest(v.cast<double>());
+      if (!is_real(v)) wrong_type(o, "a number", v);
+      return number_text(v);
     default:
       // A number where the option takes text (--magnitude 9.81|auto) is written as the CLI would read it.
-      if (!py::isinstance<py::bool_>(v) && (py::isinstance<py::int_>(v) || py::isinstance<py::float_>(v)))
-        return py::isinstance<py::int_>(v) ? py::str(v).cast<std::string>() : shortest(v.cast<double>());
+      if (is_real(v)) return number_text(v);
       return text_of(o, v);
   }
 }
@@ -104,10 +123,17 @@ void set(commands::Values& values, const Option& o, py::handle v) {
 commands::Values arguments(const commands::CommandTable& table, const py::tuple& args, const py::dict& kwargs) {
   commands::Values values(table);
   std::size_t next = 0;
+  const auto positional = std::count_if(table.options.begin(), table.options.end(), [](const Option& o) {
+    return o.kind == OptionKind::positional && !o.cli_only;
+  });
+  if (static_cast<std::ptrdiff_t>(args.size()) > positional)
+    throw py::type_error(table.name + "() takes " + std::to_string(positional) + " positional argument" +
+                         (positional == 1 ? "" : "s") + " but " + std::to_string(args.size()) +
+                         (args.size() == 1 ? " was" : " were") + " given");
   for (const auto& arg : args) {
-    while (next < table.options.size() && table.options[next].kind != OptionKind::positional) ++next;
-    if (next == table.options.size())
-      throw py::type_error(table.name + "() takes " + std::to_string(next ? 1 : 0) + " positional argument(s)");
+    while (next < table.options.size() &&
+           (table.options[next].kind != OptionKind::positional || table.options[next].cli_only))
+      ++next;
     set(values, table.options[next++], arg);
   }
   for (const auto& [key, v] : kwargs) {
@@ -121,6 +147,7 @@ commands::Values arguments(const commands::CommandTable& table, const py::tuple&
   for (const auto& o : table.options)
     if (o.required() && !o.cli_only && !values.given(o.name))
       throw py::type_error(table.name + "() missing required argument '" + o.python_name() + "'");
+  commands::check_distinct_outputs(values);
   return values;
 }
 

@@ -103,10 +103,11 @@ Binding simulate_binding() {
             const auto r = commands::rehearse(*q.rehearsal);
             if (q.rehearsal->grouped)
               write_file(v.text("--bench-file"), "bench_file",
-                         [&](std::ostream& out) { commands::write_bench_file(out, r); });
+                         [&](std::ostream& out) { commands::write_bench_file(out, r, v.text("--bench-file")); });
             else
-              write_file(v.text("--log"), "log",
-                         [&](std::ostream& out) { commands::write_raw_log(out, r, v.text("--format") == "text"); });
+              write_file(v.text("--log"), "log", [&](std::ostream& out) {
+                commands::write_raw_log(out, r, v.text("--format") == "text", v.text("--log"));
+              });
             const commands::Json truth = commands::truth_json(r);
             if (v.given("--truth"))
               write_file(v.text("--truth"), "truth",

@@ -56,7 +56,12 @@ CsvTable table_of(const std::string& name, const std::vector<Column>& columns, b
   CsvTable t;
   t.file = name;
   const py::ssize_t rows = columns.empty() ? 0 : columns.front().second.shape(0);
-  for (const auto& c : columns) t.columns.push_back(c.first);
+  for (const auto& c : columns) {
+    // As the CSV reader refuses a header naming one column twice (compared without case: IX and ix).
+    if (t.column(c.first) >= 0)
+      throw InputError(name, 0, "column '" + c.first + "' appears twice (column names are compared without case)");
+    t.columns.push_back(c.first);
+  }
   for (py::ssize_t i = 0; i < rows; ++i) {
     CsvTable::Row row;
     row.line = static_cast<int>(i + 1);

@@ -1,11 +1,17 @@
 // The extension `scalcal._scalcal`: the option tables of every command and one entry point that runs
 // a command from Python arguments (python/scalcal/__init__.py turns each table into a function with
-// its signature and docstring). The GIL is released while scalcal computes; between units of work the
-// command's progress callback takes it back to check for Ctrl-C (KeyboardInterrupt stops the command).
+// its signature and docstring). Calls from several threads take turns (one lock); the GIL is released
+// while scalcal computes in a thread of its own, and the caller's thread checks for Ctrl-C meanwhile
+// (KeyboardInterrupt stops the command within a unit of work).
 #include <charconv>
+#include <chrono>
 #include <cmath>
+#include <condition_variable>
+#include <mutex>
 #include <optional>
 #include <string>
+#include <system_error>
+#include <thread>
 #include <vector>
 
 #include <pybind11/numpy.h>
@@ -15,6 +21,7 @@
 #include "commands/usage_error.hpp"
 #include "numeric/calibration/measurements_csv.hpp"
 #include "numeric/io/input_error.hpp"
+#include "numeric/io/interrupt.hpp"
 #include "numeric/io/resource_error.hpp"
 #include "numeric/program/catalogue.hpp"
 #include "python/arguments.hpp"
@@ -80,22 +87,98 @@ py::list tables() {
   return out;
 }
 
+// One call into the library at a time: GiNaC/CLN (program names, families) and Ipopt/MUMPS are not
+// thread-safe, and two Python threads calling at once crashed the interpreter. The lock is taken
+// with the GIL released, so a thread waiting for it never holds up the one that has it.
+std::mutex& library_mutex() {
+  static std::mutex m;
+  return m;
+}
+
+class LibraryLock {
+ public:
+  LibraryLock() {
+    py::gil_scoped_release free;
+    library_mutex().lock();
+  }
+  ~LibraryLock() { library_mutex().unlock(); }
+  LibraryLock(const LibraryLock&) = delete;
+  LibraryLock& operator=(const LibraryLock&) = delete;
+};
+
+// Interval at which a running command lets Python see Ctrl-C.
+constexpr auto kSignalPoll = std::chrono::milliseconds(50);
+
+// b.run(values) in a thread of its own while this one, every 50 ms, takes the GIL and lets Python
+// run its signal handlers: Ctrl-C raises KeyboardInterrupt here, the library is asked to stop
+// (numeric/io/interrupt.hpp; its loops look between units of work) and the call returns once it has.
+// Without a thread to spare (a process limit) the command runs here and Ctrl-C waits for its end.
+Output run_interruptibly(const Binding& b, const commands::Values& values) {
+  const commands::Progress stop_point = [](std::string_view, int, int) { check_interrupt(); };
+  std::optional<Output> out;
+  std::exception_ptr error;
+  std::mutex m;
+  std::condition_variable finished;
+  bool done = false;
+  bool interrupted = false;
+  {
+    py::gil_scoped_release free;
+    const auto work = [&] {
+      try {
+        out = b.run(values, stop_point);
+      } catch (...) {
+        error = std::current_exception();
+      }
+      const std::lock_guard<std::mutex> g(m);
+      done = true;
+      finished.notify_all();
+    };
+    std::thread worker;
+    try {
+      worker = std::thread(work);
+    } catch (const std::system_error&) {
+      work();
+    }
+    std::unique_lock<std::mutex> wait(m);
+    while (!done) {
+      if (finished.wait_for(wait, kSignalPoll, [&] { return done; })) break;
+      wait.unlock();
+      {
+        py::gil_scoped_acquire hold;
+        // The error indicator PyErr_CheckSignals sets stays on this thread until it is raised below.
+        if (!interrupted && PyErr_CheckSignals() != 0) {
+          interrupted = true;
+          interrupt_request().store(true);
+        }
+      }
+      wait.lock();
+    }
+    wait.unlock();
+    if (worker.joinable()) worker.join();
+    interrupt_request().store(false);
+  }
+  if (interrupted) throw py::error_already_set();
+  if (error) std::rethrow_exception(error);
+  return std::move(*out);
+}
+
 // run(name, args, kwargs) -> (result, [(subject, message)], status)
 py::tuple run(const std::string& name, const py::tuple& args, const py::dict& kwargs) {
   const Binding& b = binding(name);
-  const commands::Values values = arguments(*b.table, args, kwargs);
-  const commands::Progress check_signals = [](std::string_view, int, int) {
-    py::gil_scoped_acquire hold;
-    if (PyErr_CheckSignals() != 0) throw py::error_already_set();
-  };
   std::optional<Output> out;
   {
-    py::gil_scoped_release free;
-    out = b.run(values, check_signals);
+    const LibraryLock lock;  // the arguments too: a program name may be a family's (GiNaC)
+    const commands::Values values = arguments(*b.table, args, kwargs);
+    out = run_interruptibly(b, values);
   }
   py::list warnings;
   for (const auto& w : out->warnings) warnings.append(py::make_tuple(w.subject, w.message));
   return py::make_tuple(to_python(out->json), warnings, out->status);
+}
+
+py::object program(const std::string& name) {
+  const LibraryLock lock;
+  return to_python(commands::program_json(resolve_program(name)));
 }
 
 }  // namespace
@@ -121,10 +204,5 @@ PYBIND11_MODULE(_scalcal, m) {
   });
   m.def("tables", &sp::tables);
   m.def("run", &sp::run, py::arg("name"), py::arg("args"), py::arg("kwargs"));
-  m.def(
-      "program",
-      [](const std::string& name) {
-        return sp::to_python(scalcal::commands::program_json(scalcal::resolve_program(name)));
-      },
-      py::arg("name"));
+  m.def("program", &sp::program, py::arg("name"));
 }

@@ -18,7 +18,7 @@ else
     -DCMAKE_EXE_LINKER_FLAGS="$sanitizer_link_flags" -DSCALCAL_FUZZ=ON -DSCALCAL_MPI=OFF -DSCALCAL_PYTHON=OFF >/dev/null
 fi
 targets=(fuzz_program_csv fuzz_measurements_csv fuzz_catalogue_name fuzz_region_spec fuzz_calibration_json
-  fuzz_family_params fuzz_program_name)
+  fuzz_family_params fuzz_program_name fuzz_file_quoting)
 cmake --build "$build" -j"$(nproc)" $(printf -- '--target %s ' "${targets[@]}")
 
 # Seeds: the programs and bench files in the repository, and a few catalogue names.
@@ -71,6 +71,13 @@ i=0
 for name in 'jig:cube@orientation=aa:1,2,3,40' 'jig:cuboctahedron' 'jig:dodecahedron@orientation=q:1,0,0,1' \
   'dodecahedral-12' 'icosahedral-20'; do
   printf '%s' "$name" >"$corpus/fuzz_program_name/$((i++))"
+done
+# Quoting (issue 50): gnuplot strings (first byte even) and region lines (odd; specs apart by 0x1E).
+i=0
+for q in $'\x02x\'.system(\'touch P\').\'.pdf' $'\x02a"b\\c`touch P`@m$v\nline\x1b\xff\xfe\xc3\xa9' \
+  $'\x02\xe2\x89\xa5 \xce\xb8_{/*1.1 bias}' $'\x01cap:30\x1ecandidates:a;b.csv' \
+  $'\x01candidates: sp ace\nx\x1ecap:20:0,0,-1' $'\x01candidates:"q"\\x\rz'; do
+  printf '%s' "$q" >"$corpus/fuzz_file_quoting/$((i++))"
 done
 export SCALCAL_DATA="$PWD/data"
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1"

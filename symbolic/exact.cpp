@@ -3,6 +3,12 @@
 // forms are equal.
 #include "symbolic/exact.hpp"
 
+#include <algorithm>
+#include <optional>
+#include <regex>
+
+#include <cln/integer_io.h>
+#include <cln/rational.h>
 #include <cln/real.h>
 
 namespace scalcal::symbolic {
@@ -106,6 +112,36 @@ struct ExactDecimals : GiNaC::map_function {
 ex exact_decimals(const ex& e) {
   ExactDecimals exact;
   return exact(e);
+}
+
+namespace {
+
+// The exact number a decimal literal names ([+-]digits[.digits][e[+-]digits], spaces around it),
+// or nothing when the text is not one.
+std::optional<cln::cl_RA> decimal_literal(const std::string& text) {
+  static const std::regex literal(R"(\s*([+-]?)(\d*)(?:\.(\d*))?(?:[eE]([+-]?\d+))?\s*)");
+  std::smatch m;
+  if (!std::regex_match(text, m, literal) || (m[2].length() == 0 && m[3].length() == 0)) return std::nullopt;
+  const std::string digits = m[2].str() + m[3].str();
+  const std::string trimmed = digits.substr(std::min(digits.find_first_not_of('0'), digits.size()));
+  const cln::cl_I mantissa =
+      trimmed.empty() ? cln::cl_I(0) : cln::read_integer(10, 0, trimmed.c_str(), 0, trimmed.size());
+  // The exponent's size is bounded before (a decimal exponent above 1000 is refused where text is read).
+  const long exponent = (m[4].length() ? std::stol(m[4].str()) : 0) - static_cast<long>(m[3].length());
+  const cln::cl_RA scale = cln::expt(cln::cl_RA(10), exponent);
+  return m[1] == "-" ? cln::cl_RA(-mantissa * scale) : cln::cl_RA(mantissa * scale);
+}
+
+}  // namespace
+
+ex reduced_degrees(const ex& value, const std::string& text) {
+  if (!GiNaC::is_a<GiNaC::numeric>(value) || !GiNaC::ex_to<GiNaC::numeric>(value).is_real()) return value;
+  const GiNaC::numeric& n = GiNaC::ex_to<GiNaC::numeric>(value);
+  const std::optional<cln::cl_RA> literal = decimal_literal(text);
+  const cln::cl_RA exact = literal ? *literal : cln::rational(cln::realpart(n.to_cl_N()));
+  const cln::cl_RA reduced = exact - cln::cl_RA(360) * cln::cl_RA(cln::floor1(exact / 360));
+  const GiNaC::numeric out(reduced);
+  return n.is_rational() ? ex(out) : ex(GiNaC::evalf(out));
 }
 
 }  // namespace scalcal::symbolic

@@ -49,6 +49,13 @@ std::string canonical_text(const GiNaC::ex& e);
 // from run to run (the fuzzer found both).
 GiNaC::ex exact_decimals(const GiNaC::ex& e);
 
+// An angle in degrees reduced exactly modulo 360 into [0, 360), before it becomes radians: a decimal
+// literal by its text (1e20 is 10^20, 280 modulo 360, whatever a float of it would hold), any other
+// number by the value it holds (a fraction exactly, a float's binary value exactly). The result is
+// exact when the number was (an integer or fraction), a float when it was a float (a literal with a
+// point or an exponent); anything that is not a real number is returned as it is.
+GiNaC::ex reduced_degrees(const GiNaC::ex& value, const std::string& text);
+
 // True when e is provably zero after canonical().
 inline bool is_zero_exact(const GiNaC::ex& e) { return canonical(e).is_zero(); }
 

@@ -9,6 +9,8 @@
 #include <set>
 #include <stdexcept>
 
+#include <cln/integer.h>
+
 #include "numeric/io/input_error.hpp"
 #include "numeric/program/program_csv.hpp"
 #include "numeric/program/program_names.hpp"
@@ -283,8 +285,46 @@ void collect_symbols(const GiNaC::ex& e, std::set<std::string>& names) {
 
 }  // namespace
 
+namespace {
+
+// The functions a parameter may call: the elementary ones. GiNaC's others compute exactly as they are
+// read, before any range check (factorial(100000) took 22 s and its 456574 digits reached the output;
+// factorial(10^7) would run for hours).
+const GiNaC::prototype_table& elementary_functions() {
+  static const GiNaC::prototype_table table = [] {
+    static const std::set<std::string> allowed = {"sqrt", "pow",  "power", "sin", "cos", "tan",
+                                                  "asin", "acos", "atan",  "exp", "log", "abs"};
+    GiNaC::prototype_table t;
+    for (const auto& [prototype, reader] : GiNaC::get_default_reader())
+      if (allowed.count(prototype.first)) t.insert({prototype, reader});
+    return t;
+  }();
+  return table;
+}
+
+// The largest numerator or denominator among the numbers of e, in bits: exact forms cost the
+// square of it and more (a 456574-digit factorial reached the output as it was).
+long long largest_bits(const GiNaC::ex& e) {
+  if (GiNaC::is_a<GiNaC::numeric>(e)) {
+    const GiNaC::numeric& n = GiNaC::ex_to<GiNaC::numeric>(e);
+    if (!n.is_rational()) return 0;
+    const auto bits = [](const GiNaC::numeric& integer) {
+      return static_cast<long long>(cln::integer_length(The(cln::cl_I)(integer.to_cl_N())));
+    };
+    return std::max(bits(n.numer()), bits(n.denom()));
+  }
+  long long most = 0;
+  for (std::size_t i = 0; i < e.nops(); ++i) most = std::max(most, largest_bits(e.op(i)));
+  return most;
+}
+
+// A parameter's numbers hold at most this many decimal digits (3322 bits).
+constexpr long long kMaxDigits = 1000;
+
+}  // namespace
+
 ParamMap parse_params(const Family& family, const std::vector<std::string>& settings) {
-  GiNaC::parser reader;
+  GiNaC::parser reader(GiNaC::symtab(), false, elementary_functions());
   ParamMap out;
   auto read = [&](const FamilyParam& p, const std::string& text) {
     check_exponents(p.key, text);
@@ -295,6 +335,11 @@ ParamMap parse_params(const Family& family, const std::vector<std::string>& sett
           GiNaC::is_a<GiNaC::numeric>(typed) ? !GiNaC::ex_to<GiNaC::numeric>(typed).is_real() : typed.has(GiNaC::I);
       if (imaginary) throw InputError("--param", 0, p.key + "=" + display_name(text) + ": not a real number");
       const GiNaC::ex value = exact_decimals(typed);
+      if (const long long bits = largest_bits(value); bits > kMaxDigits * 3.3219280948873623)
+        throw InputError("--param", 0,
+                         p.key + "=" + display_name(text) + ": a number of about " +
+                             std::to_string(static_cast<long long>(bits * 0.3010299956639812)) + " digits; at most " +
+                             std::to_string(kMaxDigits) + " (the exact forms would grow with it)");
       std::set<std::string> own;
       collect_symbols(value, own);
       if (static_cast<int>(own.size()) > p.max_symbols)
@@ -343,10 +388,11 @@ int integer_param(const ParamMap& p, const std::string& key, int lo, int hi) {
   const GiNaC::ex v = p.at(key);
   if (!GiNaC::is_a<GiNaC::numeric>(v) || !GiNaC::ex_to<GiNaC::numeric>(v).is_integer())
     throw InputError("--param", 0, key + " must be an integer");
-  const long n = GiNaC::ex_to<GiNaC::numeric>(v).to_long();
+  // Compared as exact integers: to_long() keeps only the low 64 bits (2^64 passed as 0).
+  const GiNaC::numeric& n = GiNaC::ex_to<GiNaC::numeric>(v);
   if (n < lo || n > hi)
     throw InputError("--param", 0, key + " must lie in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
-  return static_cast<int>(n);
+  return static_cast<int>(n.to_int());
 }
 
 Program rounded_program(const std::vector<WeightedPoint>& points) {
@@ -355,8 +401,9 @@ Program rounded_program(const std::vector<WeightedPoint>& points) {
     if (!GiNaC::is_a<GiNaC::numeric>(w.weight) || !GiNaC::ex_to<GiNaC::numeric>(w.weight).is_integer() ||
         GiNaC::ex_to<GiNaC::numeric>(w.weight).is_negative())
       throw InputError("", 0, "a multiplicity must be a non-negative integer, not " + canonical_text(w.weight));
+    if (GiNaC::ex_to<GiNaC::numeric>(w.weight) > kMaximumPositions)  // exactly, before to_long() keeps 64 bits
+      throw InputError("", 0, "a multiplicity above " + std::to_string(kMaximumPositions));
     const long times = GiNaC::ex_to<GiNaC::numeric>(w.weight).to_long();
-    if (times > kMaximumPositions) throw InputError("", 0, "a multiplicity above " + std::to_string(kMaximumPositions));
     Vec3 v;
     for (int c = 0; c < 3; ++c) {
       const GiNaC::ex x = GiNaC::evalf(w.eta[c]);

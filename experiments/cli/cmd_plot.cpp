@@ -7,6 +7,7 @@
 #include "commands/plot.hpp"
 #include "experiments/cli/command.hpp"
 #include "experiments/cli/output_file.hpp"
+#include "numeric/io/input_error.hpp"
 #include "plots/figure.hpp"
 
 namespace scalcal::cli {
@@ -16,8 +17,11 @@ int run(const commands::Values& v) {
   const commands::PlotResult r = commands::plot(commands::plot_request(v));
   print_warnings("plot", r.warnings);
   const std::filesystem::path folder(r.folder);
-  for (const auto& d : r.data) write_output_file((folder / d.file).string(), [&](std::ostream& out) { out << d.text; });
   plots::FigureSpec spec;
+  for (const auto& d : r.data) {
+    write_output_file((folder / d.file).string(), [&](std::ostream& out) { out << d.text; });
+    spec.files.push_back({d.variable, d.file});
+  }
   spec.name = r.stem;
   spec.comment = r.comment;
   spec.width_cm = r.width_cm;
@@ -26,8 +30,9 @@ int run(const commands::Values& v) {
   spec.written_by = "scalcal plot";
   try {
     const plots::RenderedFigure f = plots::render(folder, spec);
-    std::cout << "plot (" << r.view << "): " << f.pdf.string() << ", " << f.png.string() << ", " << f.svg.string()
-              << " (script " << f.script.string() << ")\n";
+    // Names as messages show them (control characters as '?'), one line whatever --out holds.
+    std::cout << "plot (" << r.view << "): " << display_name(f.pdf.string()) << ", " << display_name(f.png.string())
+              << ", " << display_name(f.svg.string()) << " (script " << display_name(f.script.string()) << ")\n";
   } catch (const std::runtime_error& e) {
     throw OutputError(std::string("plot: ") + e.what());
   }

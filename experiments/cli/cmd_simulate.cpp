@@ -62,10 +62,12 @@ int rehearse(const commands::Values& v, const commands::RehearsalRequest& q) {
   const commands::RehearsalResult r = commands::rehearse(q);
   print_warnings("simulate", r.warnings);
   if (q.grouped)
-    write_output_file(v.text("--bench-file"), [&](std::ostream& out) { commands::write_bench_file(out, r); });
+    write_output_file(v.text("--bench-file"),
+                      [&](std::ostream& out) { commands::write_bench_file(out, r, v.text("--bench-file")); });
   else
-    write_output_file(v.text("--log"),
-                      [&](std::ostream& out) { commands::write_raw_log(out, r, v.text("--format") == "text"); });
+    write_output_file(v.text("--log"), [&](std::ostream& out) {
+      commands::write_raw_log(out, r, v.text("--format") == "text", v.text("--log"));
+    });
   const commands::Json truth = commands::truth_json(r);
   if (v.given("--truth")) write_output_file(v.text("--truth"), [&](std::ostream& out) { write_json(out, truth); });
   if (v.flag("--json")) {

@@ -29,6 +29,7 @@ void route_standard_output(const commands::CommandTable& table, const commands::
   if (dashes.size() > 1)
     throw UsageError("options " + dashes[0] + " and " + dashes[1] +
                      " both write to standard output ('-'): give one of them a file");
+  commands::check_distinct_outputs(v);
   if (dashes.size() == 1) divert_report();
 }
 

@@ -1,6 +1,7 @@
 // scalcal: the one CLI of the toolkit. Builds the CLI11 parser from the registered subcommands and
 // dispatches. Bad options or input: one line on stderr, exit 2; a result that cannot be written:
 // exit 1; `--help`, `help` and `--version` print to stdout and exit 0.
+#include <filesystem>
 #include <iostream>
 #include <map>
 #include <new>
@@ -35,10 +36,29 @@ void print_overview(std::ostream& out) {
 // CLI11 says "--x: ..." or "--x is required"; scalcal's messages say "option --x ...".
 std::string option_message(const std::string& what) { return what.rfind("--", 0) == 0 ? "option " + what : what; }
 
-// Anything CLI11 left over is a mistake of the user's: an unknown option or a stray argument.
+// A file whose name starts with '-' is read as an option: the message says how to give it.
+std::string dash_file_hint(const std::string& token) {
+  std::error_code ec;
+  if (token.size() < 2 || token[0] != '-' || !std::filesystem::exists(token, ec)) return "";
+  return "; '" + scalcal::display_name(token) + "' is a file: give a name that starts with '-' after -- or as ./" +
+         scalcal::display_name(token);
+}
+
+// The first argument that names an existing file but was read as an option, as dash_file_hint says.
+std::string dash_file_hint(const std::vector<std::string>& args) {
+  for (const auto& a : args) {
+    if (a == "--") break;
+    if (const std::string hint = dash_file_hint(a); !hint.empty()) return hint;
+  }
+  return "";
+}
+
+// Anything CLI11 left over is a mistake of the user's: an unknown option or a stray argument. The
+// "--" that ends the options is not one (CLI11 keeps it among the leftovers).
 void reject_leftovers(const CLI::App& sub) {
   for (const auto& t : sub.remaining()) {
-    if (t.size() > 1 && t[0] == '-') throw scalcal::cli::UsageError("unknown option " + t);
+    if (t == "--") continue;
+    if (t.size() > 1 && t[0] == '-') throw scalcal::cli::UsageError("unknown option " + t + dash_file_hint(t));
     throw scalcal::cli::UsageError("unexpected argument '" + t + "'");
   }
 }
@@ -81,6 +101,17 @@ int print_man_page(const std::vector<std::string>& args) {
   return fail("", "--man: unknown command '" + args[1] + "' (try `scalcal help`)", 2);
 }
 
+// What the help, the man pages and the version print is a result too: lost on a full disk, it is an
+// error (exit 1), as a command's output is.
+int checked(int status) {
+  try {
+    scalcal::cli::check_stdout();
+  } catch (const scalcal::cli::OutputError& e) {
+    return fail("", e.what(), 1);
+  }
+  return status;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -99,9 +130,9 @@ int main(int argc, char** argv) {
   }
   if (args[0] == "--help" || args[0] == "-h" || (args[0] == "help" && args.size() == 1)) {
     print_overview(std::cout);
-    return 0;
+    return checked(0);
   }
-  if (args[0] == "--man") return print_man_page(args);
+  if (args[0] == "--man") return checked(print_man_page(args));
 
   CLI::App app("scalar calibration programs for vector meters", "scalcal");
   app.set_help_flag();
@@ -125,7 +156,7 @@ int main(int argc, char** argv) {
     if (args.size() > 2 || it == subs.end())
       return fail("", "help takes one command name, got '" + args[1] + "' (try `scalcal help`)", 2);
     std::cout << it->second->help("scalcal");
-    return 0;
+    return checked(0);
   }
   const std::string name = args[0];
   if (name != "--version" && !subs.count(name))
@@ -135,11 +166,20 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
+    if (e.get_exit_code() == 0) return checked(app.exit(e));  // --help, --version
     return fail(subs.count(name) ? name : "",
-                option_message(e.what()) + " (see `scalcal " + (subs.count(name) ? name + " --help`)" : "help`)"), 2);
+                option_message(e.what()) + dash_file_hint(args) + " (see `scalcal " +
+                    (subs.count(name) ? name + " --help`)" : "help`)"),
+                2);
   }
   if (const std::string why = address_space_too_small(); !why.empty()) return fail(name, why, 1);
+  // A date a file would state (calibrate's "created") that does not parse stops every command before
+  // any work, as the reproducible-builds convention asks of a malformed SOURCE_DATE_EPOCH.
+  try {
+    scalcal::commands::check_source_date_epoch();
+  } catch (const scalcal::UsageError& e) {
+    return fail(name, e.what(), 2);
+  }
   try {
     reject_leftovers(*subs.at(name));
     const int status = runners.at(name)();

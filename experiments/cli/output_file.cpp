@@ -9,6 +9,7 @@
 
 #include <unistd.h>
 
+#include "commands/region_request.hpp"
 #include "numeric/program/program_csv.hpp"
 
 namespace scalcal::cli {
@@ -79,7 +80,9 @@ void write_output_file(const std::string& path, const std::function<void(std::os
 
 void write_program_file(const std::string& path, const Program& program, const std::vector<ExtraColumn>& extra,
                         const ProgramNotes& notes) {
-  write_output_file(path, [&](std::ostream& out) { write_program_csv(out, program, extra, notes); });
+  ProgramNotes as_written = notes;  // its candidates paths as the file's folder sees them
+  as_written.region = commands::specs_written_to(notes.region, path);
+  write_output_file(path, [&](std::ostream& out) { write_program_csv(out, program, extra, as_written); });
 }
 
 void check_stdout() {

@@ -1,6 +1,8 @@
 // Monte-Carlo validation of the estimator on simulated meters (monte_carlo.hpp).
 #include "numeric/calibration/monte_carlo.hpp"
 
+#include "numeric/io/interrupt.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -104,6 +106,7 @@ MonteCarloResult run_monte_carlo(const MonteCarloOptions& o, const std::function
   std::vector<Eigen::VectorXd> estimates;
   double noise_ratio = 0, iterations = 0;
   for (int t = 0; t < o.trials; ++t) {
+    check_interrupt();
     if (progress && (t % 100 == 0)) progress(t, o.trials);
     const Estimate c = estimate(simulate(o.noise, o.bench_error_deg, o.samples, rng));
     if (!c.summary.converged()) continue;

@@ -7,6 +7,8 @@
 #include <Eigen/Cholesky>
 #include <Eigen/QR>
 
+#include "numeric/io/interrupt.hpp"
+
 namespace scalcal::polish_detail {
 
 Real newton_least_squares(const std::function<VecX(const VecX&)>& residual, VecX& z, int P, int max_iterations,
@@ -18,6 +20,7 @@ Real newton_least_squares(const std::function<VecX(const VecX&)>& residual, VecX
   for (int it = 0; it < max_iterations && norm > target; ++it) {
     MatX J(F.size(), z.size());
     for (int j = 0; j < z.size(); ++j) {
+      check_interrupt();  // a column costs two residuals: the finest unit of the polish's work
       VecX zp = z, zm = z;
       zp(j) += h;
       zm(j) -= h;

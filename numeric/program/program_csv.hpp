@@ -41,8 +41,14 @@ void write_program_csv(std::ostream& out, const Program& program, const std::vec
                        const ProgramNotes& notes = {});
 bool write_program_csv(const std::string& path, const Program& program);
 
-// The region a program file's text carries: the specs of its first `# region:` line (split at ';')
-// and that line's number; no specs when it has none.
+// The `# region: A;B` line of these specs (with its newline). A spec is written as it is unless it
+// holds ';', '"', a backslash, a control character or a space at either end (a `candidates:` path
+// may): then it is quoted, "..." with \" \\ \n \r \t and \xHH, so the line reads back as these specs.
+std::string region_line(const std::vector<std::string>& specs);
+
+// The region a program file's text carries: the specs of its first `# region:` line (split at ';',
+// quoted specs unquoted) and that line's number; no specs when it has none. InputError for a quoted
+// spec that does not end or an escape that is not one of region_line's.
 struct ProgramRegion {
   std::vector<std::string> specs;
   int line = 0;

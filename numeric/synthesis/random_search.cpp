@@ -10,6 +10,7 @@
 #include <chrono>
 #include <stdexcept>
 #include <string>
+#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -18,6 +19,7 @@
 
 #include "numeric/criteria/evaluation.hpp"
 #include "numeric/criteria/model_evaluation.hpp"
+#include "numeric/io/interrupt.hpp"
 #include "numeric/synthesis/seeds.hpp"
 
 namespace scalcal {
@@ -129,6 +131,7 @@ SCALCAL_KERNEL void search_chunk_body(Xoshiro256x4& rng, long long begin, long l
   // px, py, pz (the paper's model on the sphere, batch_information).
   const bool on_sphere = draw != nullptr && !sampler && !model_score;
   for (long long k0 = begin; k0 < end; k0 += kBatch) {
+    if (interrupt_requested()) return;  // random_search throws once its threads have stopped
     const int lanes = static_cast<int>(std::min<long long>(kBatch, end - k0));
     if (on_sphere) {
       if constexpr (draw != nullptr) {
@@ -233,12 +236,18 @@ RandomSearchResult random_search(int positions, long long count, CriterionKind c
     }
   };
   std::vector<std::thread> pool;
-  for (int t = 1; t < nthreads; ++t) pool.emplace_back(worker, t);
+  // A thread the system refuses (ulimit -u) leaves the chunks to fewer threads: the same results.
+  for (int t = 1; t < nthreads; ++t) try {
+      pool.emplace_back(worker, t);
+    } catch (const std::system_error&) {
+      break;
+    }
   worker(0);
   for (auto& th : pool) th.join();
+  check_interrupt();
 
   const Best* winner = &best[0];
-  for (const auto& b : best)
+  for (const auto& b : best)  // the threads not started kept index -1
     if (b.index >= 0 &&
         (winner->index < 0 || b.value < winner->value || (b.value == winner->value && b.index < winner->index)))
       winner = &b;

@@ -24,6 +24,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "numeric/io/interrupt.hpp"
 #include "numeric/io/resource_error.hpp"
 
 namespace scalcal {
@@ -166,11 +167,17 @@ std::vector<LocalResult> run_in_workers(int tasks, int workers, int positions,
   std::vector<char> buf(record);
   int open = workers, done = 0;
   bool failed = false;
-  std::exception_ptr stopped;  // the progress callback threw (Python's Ctrl-C): end the workers, rethrow
+  std::exception_ptr stopped;  // a stop was asked (Python's Ctrl-C): end the workers, rethrow
   while (open > 0 && !stopped) {
-    if (::poll(fds.data(), fds.size(), -1) < 0) {
+    // A task may run for long: the stop request is looked at every 100 ms while the workers run.
+    const int ready = ::poll(fds.data(), fds.size(), 100);
+    if (ready < 0) {
       if (errno == EINTR) continue;
       failed = true;
+      break;
+    }
+    if (interrupt_requested()) {
+      stopped = std::make_exception_ptr(Interrupted());
       break;
     }
     for (auto& p : fds) {
@@ -225,6 +232,7 @@ std::vector<LocalResult> run_in_threads(int tasks, int threads, const std::funct
   auto work = [&] {
     for (int k; (k = next.fetch_add(1)) < tasks;) {
       try {
+        check_interrupt();
         results[static_cast<std::size_t>(k)] = task(k);
         const std::lock_guard<std::mutex> g(lock);
         ++done;

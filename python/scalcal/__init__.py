@@ -6,8 +6,8 @@ seed=3)``. The functions are made from the same option tables as the CLI's parse
 same C++ and return the CLI's ``--json`` object as a dict (arrays of numbers as NumPy arrays). A
 program may also be given as an (N, 3) array of directions. Warnings go to ``warnings.warn``; bad
 input raises ``InputError``, bad options ``UsageError``, a result that did not converge
-``ConvergenceError`` (its ``result`` attribute holds the result). Ctrl-C stops a long run within a
-unit of work (a start of a multistart).
+``ConvergenceError`` (its ``result`` attribute holds the result). Calls from several threads take
+turns; Ctrl-C stops a long run within a second.
 """
 import inspect
 import json as _json

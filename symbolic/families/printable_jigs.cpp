@@ -126,7 +126,7 @@ GiNaC::matrix orientation_matrix(const std::string& text, GiNaC::parser& reader)
       try {
         v.push_back(reader(part));
         // q: and rows: components and aa:'s axis are exact (exact_decimals); aa:'s angle keeps its
-        // float, reduced modulo 360 below.
+        // float, reduced exactly modulo 360 below.
         if (!(text.rfind("aa:", 0) == 0 && v.size() == 4)) v.back() = exact_decimals(v.back());
       } catch (const std::exception& e) {
         throw fail("'" + display_name(part) + "' is not an expression (" + e.what() + ")");
@@ -151,12 +151,9 @@ GiNaC::matrix orientation_matrix(const std::string& text, GiNaC::parser& reader)
     const auto c = components(3, 4);
     const ex n2 = c[0] * c[0] + c[1] * c[1] + c[2] * c[2];
     if (auto n = numeric_value(n2); n && *n == 0) throw fail("the axis is zero");
-    ex degrees = c[3];
-    // A decimal angle is a float to GiNaC, which would reduce 1e20 degrees with 17 digits: reduce it
-    // modulo 360 in double first (fmod is exact), as an exact angle is reduced exactly by cos and sin.
-    if (GiNaC::is_a<GiNaC::numeric>(degrees) && GiNaC::ex_to<GiNaC::numeric>(degrees).is_real() &&
-        !GiNaC::ex_to<GiNaC::numeric>(degrees).is_rational())
-      degrees = GiNaC::numeric(std::fmod(GiNaC::ex_to<GiNaC::numeric>(degrees).to_double(), 360.0));
+    // Reduced exactly modulo 360 before it becomes radians: a float of 1e20 degrees times pi/180 keeps
+    // 17 digits of a number whose remainder sits in its 21st.
+    const ex degrees = reduced_degrees(c[3], text.substr(text.rfind(',') + 1));
     const ex theta = degrees * GiNaC::Pi / 180, cs = GiNaC::cos(theta), sn = GiNaC::sin(theta), n = GiNaC::sqrt(n2);
     // Rodrigues: R = cos I + sin [a]x + (1 - cos) a a^T; the rows of O = R^T are R's columns.
     const ex a[3] = {c[0] / n, c[1] / n, c[2] / n};

@@ -66,7 +66,10 @@ std::vector<Family> rotation_families() {
   Family f;
   f.name = "rotation";
   f.summary = "k positions per ring while rotating about each axis in turn (3k positions)";
-  f.params = {{"k", "6", "positions per ring (k >= 3)"}, {"phase", "0", "phase of the rings, degrees"}};
+  f.params = {{"k", "6", "positions per ring (k >= 3)"},
+              {"phase", "0", "phase of the rings, degrees",
+               // reduced exactly modulo 360 (1e20 degrees is 280 degrees, not what a double of it gives)
+               [](const std::string& text, GiNaC::parser& reader) { return reduced_degrees(reader(text), text); }}};
   f.instance = [](const ParamMap& p) {
     const int k = integer_param(p, "k", 3, 100000);
     // For k = 3, 4 the criteria are rational functions of cos and sin of 3 or 4 phase, too

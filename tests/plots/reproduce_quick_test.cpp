@@ -63,26 +63,44 @@ std::vector<std::map<std::string, std::string>> read_csv(const fs::path& p) {
   return rows;
 }
 
+// A shell word in single quotes, whatever bytes it holds.
+std::string shell_word(const std::string& s) {
+  std::string q = "'";
+  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+// Issue 50 item 1: the figures are drawn into a folder whose name would run a command if any text of
+// it reached a gnuplot script or a shell (quotes, system(), backticks, a new line, $( )).
+const char* const kMarker = "PWNED_issue50";
+
 class ReproduceQuick : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    dir_ = fs::temp_directory_path() / ("scalcal_reproduce_test_" + std::to_string(::getpid()));
-    fs::remove_all(dir_);
-    const std::string cmd = std::string(SCALCAL_CLI) + " reproduce --quick --out " + dir_.string() + " > " +
-                            (dir_.string() + ".log") + " 2>&1";
+    base_ = fs::temp_directory_path() / ("scalcal_reproduce_test_" + std::to_string(::getpid()));
+    dir_ = base_ / (std::string("out x'.system('touch ") + kMarker + "').'\n`touch " + kMarker + "` $(touch " +
+                    kMarker + ") \"@m\xff");
+    fs::remove_all(base_);
+    fs::create_directories(base_);
+    const std::string cmd = "cd " + shell_word(base_.string()) + " && " + std::string(SCALCAL_CLI) +
+                            " reproduce --quick --out " + shell_word(dir_.string()) + " > " +
+                            shell_word(base_.string() + "/reproduce.log") + " 2>&1";
     status_ = std::system(cmd.c_str());
   }
-  static void TearDownTestSuite() {
-    fs::remove_all(dir_);
-    fs::remove(dir_.string() + ".log");
-  }
-  static fs::path dir_;
+  static void TearDownTestSuite() { fs::remove_all(base_); }
+  static std::string log() { return slurp(base_ / "reproduce.log"); }
+  static fs::path base_, dir_;
   static int status_;
 };
+fs::path ReproduceQuick::base_;
 fs::path ReproduceQuick::dir_;
 int ReproduceQuick::status_ = -1;
 
-TEST_F(ReproduceQuick, ExitsCleanly) { EXPECT_EQ(status_, 0) << slurp(dir_.string() + ".log"); }
+TEST_F(ReproduceQuick, ExitsCleanly) { EXPECT_EQ(status_, 0) << log(); }
+
+TEST_F(ReproduceQuick, NoTextOfTheFolderRan) {
+  for (const fs::path& where : {base_, dir_, fs::current_path()}) EXPECT_FALSE(fs::exists(where / kMarker)) << where;
+}
 
 const char* const kFigures[] = {"fig4", "fig5", "fig6", "fig7", "fig8", "fig9", "fig10", "fig11", "fig12", "fig13"};
 
@@ -147,7 +165,7 @@ TEST_F(ReproduceQuick, FiguresFiveSevenEightStateKeyUnitAndScale) {
   const std::string fig5 = pdf_section(slurp(dir_ / "fig5.gp"));
   EXPECT_EQ(fig5.find("unset key"), std::string::npos);
   for (const char* t :
-       {"title 'uniform'", "title 'rotation [12]'", "title 'optimised for D'", "title 'printable jigs'"})
+       {"title \"uniform\"", "title \"rotation [12]\"", "title \"optimised for D\"", "title \"printable jigs\""})
     EXPECT_NE(fig5.find(t), std::string::npos) << t;
   EXPECT_EQ(std::regex_search(pdf_section(slurp(dir_ / "fig7.gp")), std::regex("set ylabel \"θ[^\n]*per unit σ")),
             true);
@@ -186,7 +204,7 @@ TEST_F(ReproduceQuick, FigElevenAndThirteenHideNothing) {
 
 // stderr is a log here, not a terminal: one line per stage with the time left, no carriage returns.
 TEST_F(ReproduceQuick, ProgressReachesALogAsLines) {
-  const std::string log = slurp(dir_.string() + ".log");
+  const std::string log = ReproduceQuick::log();
   EXPECT_EQ(log.find('\r'), std::string::npos);
   EXPECT_NE(log.find("[reproduce] 1/13 analytic programs"), std::string::npos) << log;
   EXPECT_NE(log.find("[reproduce] 13/13 summary"), std::string::npos) << log;
