@@ -25,6 +25,18 @@ void print_text(const commands::EvaluateResult& r) {
       std::snprintf(buffer, sizeof buffer, "%.4f", e ? *e : 0.0);
       text << " " << criterion_name(c) << " " << (e ? std::string(buffer) : std::string("n/a (no known limit)"));
     }
+    text << "\nlimits on " << r.region->text() << ":";
+    const char* separator = " ";
+    for (auto c : kCriteria) {
+      const auto& l = r.limits[static_cast<std::size_t>(c.index())];
+      if (!l) continue;
+      char buffer[32];
+      std::snprintf(buffer, sizeof buffer, "%.10g", l->statement.value);
+      text << separator << criterion_name(c) << " " << buffer << " (" << status_name(l->statement.status);
+      if (!l->statement.theorem.empty()) text << ": " << l->statement.theorem;
+      text << ")";
+      separator = ", ";
+    }
     text << "\n";
   }
   std::cout << text.str();

@@ -1,7 +1,7 @@
 // `scalcal limits [--model NAME] [--region SPEC]... [--out FILE] [--json]`: the infimum of each normalised
 // criterion over all measures on the sphere, derived symbolically, with the moments of an optimal
 // measure; on a restricted region, an optimal measure found numerically and a lower bound certified
-// by weak duality over the whole region (commands/limits.hpp).
+// by weak duality over the whole region, or the closed form where a theorem gives one (commands/limits.hpp).
 #include <cstdio>
 #include <iostream>
 #include <sstream>
@@ -30,6 +30,8 @@ std::string exact_and_decimal(const commands::SphereLimit& s) {
   return s.exact + (d.str() == s.exact ? "" : " = " + d.str());
 }
 
+// One line per criterion: "E = 147 (proven: proofs/cap_es_limits.md)" where a theorem gives the limit,
+// "A in [lower, value] (certified: ...)" where an interval bound and an optimal measure enclose it.
 void print_region(const commands::LimitsResult& r) {
   std::cout << "region " << r.region->text() << "\n";
   for (const auto& l : r.criteria) {
@@ -38,13 +40,26 @@ void print_region(const commands::LimitsResult& r) {
       std::cout << ": no known limit\n";
       continue;
     }
-    std::cout << " >= " << decimal("%.10g", l.region->value) << " (numerically, an optimal measure on "
-              << l.region->candidates << " candidates)";
-    if (l.region->lower_bound)
-      std::cout << "; proven >= " << decimal("%.10g", *l.region->lower_bound) << " (gap "
-                << decimal("%.2g", (l.region->value - *l.region->lower_bound) / l.region->value) << " relative)";
-    std::cout << "; " << decimal("%.4g", l.region->value / *l.sphere_value) << " x the sphere's; support "
-              << l.region->support.size() << " positions\n";
+    const RegionLimit& g = *l.region;
+    const std::string value = decimal("%.10g", g.value);
+    switch (status_of(g)) {
+      case LimitStatus::proven:
+        std::cout << " = " << value << (l.region_exact == value ? "" : " = " + l.region_exact)
+                  << " (proven: " << g.theorem << ")";
+        break;
+      case LimitStatus::certified:
+        std::cout << " in [" << decimal("%.10g", *g.lower_bound) << ", " << value
+                  << "] (certified: the lower end by interval arithmetic, the upper an optimal measure on "
+                  << g.candidates << " candidates; gap " << decimal("%.2g", (g.value - *g.lower_bound) / g.value)
+                  << " relative)";
+        break;
+      case LimitStatus::numerical:
+        std::cout << " = " << value << " (numerical: an optimal measure on " << g.candidates
+                  << " candidates, no proven bound)";
+        break;
+    }
+    std::cout << "; " << decimal("%.4g", g.value / *l.sphere_value) << " x the sphere's; support " << g.support.size()
+              << " positions\n";
   }
 }
 
@@ -69,14 +84,15 @@ void print_sphere(const commands::LimitsResult& r) {
 }
 
 // --out: one row per criterion; a cell is empty where the limit, its exact form or a proven lower
-// bound is not known (the exact form is the sphere's; the lower bound a region's).
+// bound is not known (the exact form is the sphere's or a theorem's on the region; the lower bound a
+// region's).
 void write_table(std::ostream& out, const commands::LimitsResult& r) {
   out << "criterion,limit,exact,lower_bound\n";
   for (const auto& l : r.criteria) {
     out << criterion_name(l.criterion) << ',';
     if (r.region && l.region)
-      out << shortest_text(l.region->value) << ",,"
-          << (l.region->lower_bound ? shortest_text(*l.region->lower_bound) : "");
+      out << shortest_text(l.region->value) << "," << (l.region_exact.empty() ? "" : "\"" + l.region_exact + "\"")
+          << "," << (l.region->lower_bound ? shortest_text(*l.region->lower_bound) : "");
     else if (!r.region && l.sphere)
       out << shortest_text(l.sphere->value) << ",\"" << l.sphere->exact << "\",";
     else
