@@ -14,9 +14,9 @@ namespace scalcal::symbolic {
 // cos(half-angle) exactly: the half-angle's shortest decimal text read as a rational number of degrees.
 GiNaC::ex cap_cosine(double half_angle_deg);
 
-// The closed form at the cap's c: "147", "5283", "4707+2296*sqrt(3))*..." (canonical), D's
-// "61509375/4" beyond 133.62 degrees, and below
-//   "D(alpha(c), t(c); c) at c = 0, t(c) the root in (0, 1) of 10*t^5-29*t^4-26*t^3-29*t^2+18".
+// The closed form at the cap's c: "147", "5283", radicals at 30 or 45 degrees (canonical), or where c stays
+// cos(...) the theorem's "(3*c^4+...)/(1-c)^4 at c = cos(1/18*Pi)"; D's "61509375/4" beyond 133.62 degrees, and
+// below "D(alpha(c), t(c); c) at c = 0, t(c) the root in (0, 1) of 18-29*t^2-26*t^3-29*t^4+10*t^5".
 std::string cap_limit_exact(CriterionKind c, const CapClosedForm& form);
 
 // The same as an expression where it is one (E, S, D at the sphere's limit); D below 133.62 degrees

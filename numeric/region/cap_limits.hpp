@@ -27,8 +27,8 @@ struct CapClosedForm {
 std::optional<double> single_cap_angle(const Region& region);
 
 // The closed form of criterion c on the region, when a theorem gives one; none elsewhere (a band, a
-// union, E or S on a cap about another axis or beyond the proven half-angles, another criterion). Half-
-// angles within 1e-9 of a theorem's threshold get none: long double cannot tell their side.
+// union, E or S on a cap about another axis or beyond the proven half-angles, another criterion). A cap
+// whose cosine is within 1e-12 of a theorem's threshold gets none: long double may not tell its side.
 std::optional<CapClosedForm> cap_closed_form(CriterionKind c, const Region& region);
 
 // The thresholds (cosines) of the theorems, to 40 digits: D reaches the sphere's limit for
