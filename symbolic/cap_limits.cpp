@@ -65,8 +65,7 @@ std::string cap_limit_exact(CriterionKind criterion, const CapClosedForm& form) 
   const ex c = cap_cosine(form.half_angle_deg);
   const std::string ct = canonical_text(c);
   // At a cosine GiNaC keeps as cos(...) the expanded form would repeat it a dozen times: the theorem's form.
-  if (criterion == CriterionKind::E && has_function(c))
-    return "(3*c^4+36*c^3+194*c^2+260*c+147)/(1-c)^4 at c = " + ct;
+  if (criterion == CriterionKind::E && has_function(c)) return "(3*c^4+36*c^3+194*c^2+260*c+147)/(1-c)^4 at c = " + ct;
   if (criterion == CriterionKind::S && has_function(c)) return "((3+c)/(1-c))^4 at c = " + ct;
   if (criterion != CriterionKind::D || form.sphere_limit) return canonical_text(cap_limit_expression(criterion, form));
   if (has_function(c))  // cos(1/18*Pi): the quintic's coefficients would be long; the theorem names it
