@@ -2,6 +2,8 @@
 // criterion over all measures on the sphere, derived symbolically, with the moments of an optimal
 // measure; on a restricted region, an optimal measure found numerically and a lower bound certified
 // by weak duality over the whole region, or the closed form where a theorem gives one (commands/limits.hpp).
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <sstream>
@@ -30,8 +32,22 @@ std::string exact_and_decimal(const commands::SphereLimit& s) {
   return s.exact + (d.str() == s.exact ? "" : " = " + d.str());
 }
 
+// x rounded down (up) to `digits` significant digits: the ends of an enclosure printed outward, with their
+// trailing zeros (so that both ends show the same digits).
+std::string rounded(double x, int digits, bool up) {
+  const int exponent = static_cast<int>(std::floor(std::log10(x)));
+  const double unit = std::pow(10.0, exponent - (digits - 1));
+  const double r = (up ? std::ceil(x / unit) : std::floor(x / unit)) * unit;
+  const int decimals = digits - 1 - exponent;
+  if (exponent < -4 || exponent >= 15 || decimals < 0)
+    return decimal(("%." + std::to_string(digits - 1) + "e").c_str(), r);
+  return decimal(("%." + std::to_string(decimals) + "f").c_str(), r);
+}
+
 // One line per criterion: "E = 147 (proven: proofs/cap_es_limits.md)" where a theorem gives the limit,
-// "A in [lower, value] (certified: ...)" where an interval bound and an optimal measure enclose it.
+// "A in [lower, upper] (certified: ...)" where an interval bound and an optimal measure enclose it. The
+// enclosure is printed outward to the digits its gap leaves, and the gap as the power of ten above it:
+// the solver's last bits differ with the BLAS kernel, and the printed text should not.
 void print_region(const commands::LimitsResult& r) {
   std::cout << "region " << r.region->text() << "\n";
   for (const auto& l : r.criteria) {
@@ -47,19 +63,20 @@ void print_region(const commands::LimitsResult& r) {
         std::cout << " = " << value << (l.region_exact == value ? "" : " = " + l.region_exact)
                   << " (proven: " << g.theorem << ")";
         break;
-      case LimitStatus::certified:
-        std::cout << " in [" << decimal("%.10g", *g.lower_bound) << ", " << value
-                  << "] (certified: the lower end by interval arithmetic, the upper an optimal measure on "
-                  << g.candidates << " candidates; gap " << decimal("%.2g", (g.value - *g.lower_bound) / g.value)
-                  << " relative)";
+      case LimitStatus::certified: {
+        const double gap = std::max((g.value - *g.lower_bound) / g.value, 1e-15);
+        const int digits = std::clamp(static_cast<int>(std::floor(-std::log10(gap))), 4, 12);
+        std::cout << " in [" << rounded(*g.lower_bound, digits, false) << ", " << rounded(g.value, digits, true)
+                  << "] (certified: the lower end by interval arithmetic, the upper an optimal measure's; gap below "
+                  << decimal("%.0e", std::pow(10.0, std::ceil(std::log10(gap)))) << " relative)";
         break;
+      }
       case LimitStatus::numerical:
-        std::cout << " = " << value << " (numerical: an optimal measure on " << g.candidates
-                  << " candidates, no proven bound)";
+        std::cout << " = " << value << " (numerical: an optimal measure's, no proven bound)";
         break;
     }
-    std::cout << "; " << decimal("%.4g", g.value / *l.sphere_value) << " x the sphere's; support " << g.support.size()
-              << " positions\n";
+    std::cout << "; " << decimal("%.4g", g.value / *l.sphere_value) << " x the sphere's; support "
+              << distinct_support(g) << " positions\n";
   }
 }
 

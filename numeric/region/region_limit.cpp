@@ -284,6 +284,24 @@ RegionLimit region_limit(CriterionKind c, const Region& region, const RegionLimi
   return visit_criterion(c, [&](auto C) { return limit_of<decltype(C)>(region, options); });
 }
 
+int distinct_support(const RegionLimit& l) {
+  const double same = std::cos(1e-3 * M_PI / 180.0);
+  std::vector<Vec3> positions;
+  std::vector<double> weights;
+  for (std::size_t i = 0; i < l.support.size(); ++i) {
+    std::size_t k = 0;
+    while (k < positions.size() && positions[k].dot(l.support[i]) < same) ++k;
+    if (k == positions.size()) {
+      positions.push_back(l.support[i]);
+      weights.push_back(0.0);
+    }
+    weights[k] += l.weights[i];
+  }
+  if (weights.empty()) return 0;
+  const double top = *std::max_element(weights.begin(), weights.end());
+  return static_cast<int>(std::count_if(weights.begin(), weights.end(), [top](double w) { return w >= 1e-3 * top; }));
+}
+
 std::string_view status_name(LimitStatus s) {
   switch (s) {
     case LimitStatus::proven:

@@ -25,6 +25,12 @@ struct RegionLimit {
   std::string_view theorem;           // the proof of the closed form the value comes from ("": none)
 };
 
+// How many distinct positions the measure holds, robustly: support positions within 1e-3 degrees of each
+// other are one (a refined candidate beside its first copy), and a position counts when it carries at least
+// 1e-3 of the largest weight (so that weights near the solver's noise, which differ with the BLAS kernel,
+// do not change the count).
+int distinct_support(const RegionLimit& l);
+
 // What stands behind a limit: a theorem's closed form (proven), a proven lower bound with an optimal
 // measure's value (certified: the limit lies between them), or an optimal measure alone (numerical).
 enum class LimitStatus { proven, certified, numerical };
