@@ -52,11 +52,10 @@ EvaluateResult evaluate(const EvaluateRequest& q, const Progress& progress) {
   for (auto c : kCriteria) {
     if (progress)
       progress("the " + std::string(criterion_name(c)) + " limit on " + r.region->text(), c.index(), kCriterionCount);
-    try {
-      r.efficiency[static_cast<std::size_t>(c.index())] =
-          efficiency(c, limit_value(c, *r.region), r.evaluation.value(c), r.evaluation.parameters);
-    } catch (const std::invalid_argument&) {  // no known limit for this criterion
-    }
+    const auto i = static_cast<std::size_t>(c.index());
+    r.limits[i] = reported_limit(c, q.model, r.region);  // none: no known limit for this criterion
+    if (r.limits[i])
+      r.efficiency[i] = efficiency(c, r.limits[i]->statement.value, r.evaluation.value(c), r.evaluation.parameters);
   }
   return r;
 }
@@ -65,12 +64,14 @@ Json to_json(const EvaluateResult& r) {
   Json j = evaluation_json(r.evaluation, r.program);
   if (r.region) {
     j["region"] = r.region->text();
-    Json e = Json::object();
+    Json e = Json::object(), l = Json::object();
     for (auto c : kCriteria) {
-      const auto& v = r.efficiency[static_cast<std::size_t>(c.index())];
-      e[std::string(criterion_name(c))] = v ? Json(*v) : Json(nullptr);
+      const auto i = static_cast<std::size_t>(c.index());
+      e[std::string(criterion_name(c))] = r.efficiency[i] ? Json(*r.efficiency[i]) : Json(nullptr);
+      l[std::string(criterion_name(c))] = r.limits[i] ? to_json(*r.limits[i]) : Json(nullptr);
     }
     j["efficiency"] = e;
+    j["limits"] = l;
   }
   return j;
 }

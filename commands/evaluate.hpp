@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "commands/json.hpp"
+#include "commands/limits_statement.hpp"
 #include "commands/option_table.hpp"
 #include "commands/progress.hpp"
 #include "commands/values.hpp"
@@ -33,6 +34,7 @@ struct EvaluateResult {
   std::optional<Region> region;  // with --region
   // limit / value per criterion on the region (D as its P-th root); nullopt: no known limit there.
   std::array<std::optional<double>, kCriterionCount> efficiency{};
+  std::array<std::optional<ReportedLimit>, kCriterionCount> limits{};  // what each efficiency is against
   std::vector<ExtraColumn> columns;  // tilt and azimuth for a program file, on a one-zone region
   Warnings warnings;
 };
@@ -45,7 +47,8 @@ EvaluateRequest evaluate_request(const Values& values);
 // UsageError for regions under a model other than paper9.
 EvaluateResult evaluate(const EvaluateRequest& request, const Progress& progress = {});
 
-// The evaluation's JSON (evaluation_json.hpp) with `region` and `efficiency` when a region was given.
+// The evaluation's JSON (evaluation_json.hpp) with `region`, `efficiency` and `limits` (each with its
+// status: limits_statement.hpp) when a region was given.
 Json to_json(const EvaluateResult& result);
 
 }  // namespace scalcal::commands

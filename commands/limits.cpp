@@ -10,8 +10,10 @@
 
 #include "commands/region_request.hpp"
 #include "commands/usage_error.hpp"
+#include "numeric/region/cap_limits.hpp"
 #include "numeric/region/region_limits.hpp"
 #include "numeric/synthesis/seeds.hpp"
+#include "symbolic/cap_limits.hpp"
 #include "symbolic/exact.hpp"
 #include "symbolic/limits.hpp"
 
@@ -29,6 +31,7 @@ std::optional<SphereLimit> paper9_limit(CriterionKind c) {
   s.x4 = symbolic::canonical_text(l.x4);
   s.x2y2 = symbolic::canonical_text(l.b);
   s.b = number(l.b);
+  s.theorem = std::string(criterion_limit(c).theorem);
   return s;
 }
 
@@ -45,6 +48,7 @@ std::optional<SphereLimit> model_limit(ModelKind model, CriterionKind c) {
   s.measure = std::string(l->measure);
   s.attained = std::string(l->attained);
   s.proof = std::string(visit_model(model, [](auto M) { return decltype(M)::proof; }));
+  s.theorem = s.proof;
   return s;
 }
 
@@ -92,7 +96,13 @@ LimitsResult limits(const LimitsRequest& q, const Progress& progress) {
   const std::vector<RegionLimit> limits = region_limits(tasks, {}, thread_count(0), [&](int done, int total) {
     if (progress) progress(stage, done, total);
   });
-  for (std::size_t i = 0; i < tasks.size(); ++i) r.criteria[task_row[i]].region = limits[i];
+  for (std::size_t i = 0; i < tasks.size(); ++i) {
+    CriterionLimits& row = r.criteria[task_row[i]];
+    row.region = limits[i];
+    if (!row.region->theorem.empty())
+      if (const auto form = cap_closed_form(row.criterion, *r.region))
+        row.region_exact = symbolic::cap_limit_exact(row.criterion, *form);
+  }
   return r;
 }
 

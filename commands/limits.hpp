@@ -1,5 +1,6 @@
 // `scalcal limits` as a function: the N -> infinity limits of the normalised criteria, exact on the
-// sphere (symbolic/limits.hpp) or a model's stated limits, and certified bounds on a region.
+// sphere (symbolic/limits.hpp) or a model's stated limits, and on a region a theorem's closed form where
+// one applies (a cap: numeric/region/cap_limits.hpp), certified bounds elsewhere.
 #pragma once
 #include <optional>
 #include <string>
@@ -26,12 +27,14 @@ struct SphereLimit {
   std::string x4, x2y2, x6;              // E[x^4], E[x^2 y^2], E[x^6] as exact text ("" when not stated)
   std::optional<double> b;               // E[x^2 y^2] as a number
   std::string measure, attained, proof;  // a model's own statement (empty for the paper's model)
+  std::string theorem;                   // the document that proves the limit
 };
 
 struct CriterionLimits {
   CriterionKind criterion = CriterionKind::D;
   std::optional<SphereLimit> sphere;   // on the sphere (none: no known limit)
   std::optional<RegionLimit> region;   // on the region, when one was given
+  std::string region_exact;            // its closed form where a theorem gives one (region->theorem)
   std::optional<double> sphere_value;  // the sphere's limit the region's is compared with
 };
 

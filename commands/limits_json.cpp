@@ -1,5 +1,6 @@
 // The JSON form of `scalcal limits` (limits.hpp): keyed by criterion; a criterion without a known
-// limit is null.
+// limit is null. Each limit says what stands behind it: `status` proven (with `exact` and `theorem`),
+// certified (`lower_bound` proven, `value` an optimal measure's) or numerical.
 #include <algorithm>
 #include <cmath>
 
@@ -15,6 +16,8 @@ Json sphere_json(const SphereLimit& s, bool stated) {
   if (!s.x6.empty()) moments["E[x^6]"] = s.x6;
   moments["odd"] = "0";
   Json j{{"exact", s.exact}, {"value", s.value}, {"moments", moments}, {"b", s.b ? Json(*s.b) : Json(nullptr)}};
+  j["status"] = "proven";
+  j["theorem"] = s.theorem;
   if (stated) {
     j["measure"] = s.measure;
     j["attained"] = s.attained;
@@ -23,12 +26,17 @@ Json sphere_json(const SphereLimit& s, bool stated) {
   return j;
 }
 
-Json region_json(const RegionLimit& l, double sphere) {
+Json region_json(const RegionLimit& l, const std::string& exact, double sphere) {
   Json support = Json::array();
   for (std::size_t i = 0; i < l.support.size(); ++i)
     support.push_back(
         Json{{"position", Json{l.support[i].x(), l.support[i].y(), l.support[i].z()}}, {"weight", l.weights[i]}});
   Json entry{{"value", l.value}};
+  entry["status"] = std::string(status_name(status_of(l)));
+  if (!l.theorem.empty()) {
+    entry["exact"] = exact;
+    entry["theorem"] = std::string(l.theorem);
+  }
   entry["lower_bound"] = l.lower_bound ? Json(*l.lower_bound) : Json(nullptr);
   entry["relative_to_sphere"] = l.value / sphere;
   entry["support"] = support;
@@ -53,7 +61,7 @@ Json to_json(const LimitsResult& r) {
   for (const auto& l : r.criteria) {
     const std::string key(criterion_name(l.criterion));
     if (r.region)
-      j[key] = l.region ? region_json(*l.region, *l.sphere_value) : Json(nullptr);
+      j[key] = l.region ? region_json(*l.region, l.region_exact, *l.sphere_value) : Json(nullptr);
     else if (l.sphere)
       j[key] = sphere_json(*l.sphere, r.model != ModelKind::paper9);
     else if (r.model == ModelKind::paper9)

@@ -154,15 +154,11 @@ OptimizeResult optimize(const OptimizeRequest& q, const Progress& progress) {
   r.program = r.polished ? r.polished->program : r.synthesis.program;
   if (r.region) r.columns = region_columns(*r.region, r.program);
   const int P = model_parameters(opt.model);
-  try {
-    if (opt.model != ModelKind::paper9) {
-      if (const auto l = stated_limit(opt.model, criterion_name(opt.criterion))) r.limit = l->value;
-    } else if (r.region) {
-      if (progress)
-        progress("the " + std::string(criterion_name(opt.criterion)) + " limit on " + r.region->text(), 0, 0);
-      r.limit = limit_value(opt.criterion, *r.region);
-    }
-  } catch (const std::invalid_argument&) {  // no known limit for this criterion
+  if (opt.model != ModelKind::paper9 || r.region) {
+    if (r.region && progress)
+      progress("the " + std::string(criterion_name(opt.criterion)) + " limit on " + r.region->text(), 0, 0);
+    r.limit_statement = reported_limit(opt.criterion, opt.model, r.region);  // none: no known limit
+    if (r.limit_statement) r.limit = r.limit_statement->statement.value;
   }
   if (r.limit) r.efficiency = efficiency(opt.criterion, *r.limit, r.synthesis.value, P);
   return r;
@@ -185,11 +181,13 @@ Json to_json(const OptimizeResult& r) {
     j["model"] = std::string(model_name(r.model));
     if (r.limit) {
       j["limit"] = *r.limit;
+      j["limit_statement"] = to_json(*r.limit_statement);
       j["efficiency"] = *r.efficiency;
     }
   } else if (r.region && r.limit) {
     j["region"] = r.region->text();
     j["limit"] = *r.limit;
+    j["limit_statement"] = to_json(*r.limit_statement);
     j["efficiency"] = *r.efficiency;
   }
   if (r.designed_on) j["designed_on"] = r.designed_on->text();

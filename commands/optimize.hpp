@@ -7,6 +7,7 @@
 
 #include "commands/common_options.hpp"
 #include "commands/json.hpp"
+#include "commands/limits_statement.hpp"
 #include "commands/progress.hpp"
 #include "commands/warning.hpp"
 #include "numeric/polish/polish.hpp"
@@ -35,6 +36,7 @@ struct OptimizeResult {
   std::optional<Region> region;       // with --region (as given: the limit and the program file's region line)
   std::optional<Region> designed_on;  // with --margin: the region inset by the margin, where positions lie
   std::optional<double> limit;        // the region's, or the model's stated limit; none when unknown
+  std::optional<ReportedLimit> limit_statement;  // the same with its status, theorem and exact form
   std::optional<double> efficiency;
   std::vector<ExtraColumn> columns;  // for the program file on a one-zone region
   Warnings warnings;

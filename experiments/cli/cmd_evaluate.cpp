@@ -25,6 +25,21 @@ void print_text(const commands::EvaluateResult& r) {
       std::snprintf(buffer, sizeof buffer, "%.4f", e ? *e : 0.0);
       text << " " << criterion_name(c) << " " << (e ? std::string(buffer) : std::string("n/a (no known limit)"));
     }
+    text << "\nlimits on " << r.region->text() << ":";
+    const char* separator = " ";
+    for (auto c : kCriteria) {
+      const auto& l = r.limits[static_cast<std::size_t>(c.index())];
+      if (!l) continue;
+      // A theorem's value to 10 digits; a solver's to 6, which its last bits (they differ with the BLAS
+      // kernel) do not reach.
+      char buffer[32];
+      std::snprintf(buffer, sizeof buffer, l->statement.status == LimitStatus::proven ? "%.10g" : "%.6g",
+                    l->statement.value);
+      text << separator << criterion_name(c) << " " << buffer << " (" << status_name(l->statement.status);
+      if (!l->statement.theorem.empty()) text << ": " << l->statement.theorem;
+      text << ")";
+      separator = ", ";
+    }
     text << "\n";
   }
   std::cout << text.str();

@@ -1,7 +1,9 @@
 // `scalcal limits [--model NAME] [--region SPEC]... [--out FILE] [--json]`: the infimum of each normalised
 // criterion over all measures on the sphere, derived symbolically, with the moments of an optimal
 // measure; on a restricted region, an optimal measure found numerically and a lower bound certified
-// by weak duality over the whole region (commands/limits.hpp).
+// by weak duality over the whole region, or the closed form where a theorem gives one (commands/limits.hpp).
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <sstream>
@@ -30,6 +32,22 @@ std::string exact_and_decimal(const commands::SphereLimit& s) {
   return s.exact + (d.str() == s.exact ? "" : " = " + d.str());
 }
 
+// x rounded down (up) to `digits` significant digits: the ends of an enclosure printed outward, with their
+// trailing zeros (so that both ends show the same digits).
+std::string rounded(double x, int digits, bool up) {
+  const int exponent = static_cast<int>(std::floor(std::log10(x)));
+  const double unit = std::pow(10.0, exponent - (digits - 1));
+  const double r = (up ? std::ceil(x / unit) : std::floor(x / unit)) * unit;
+  const int decimals = digits - 1 - exponent;
+  if (exponent < -4 || exponent >= 15 || decimals < 0)
+    return decimal(("%." + std::to_string(digits - 1) + "e").c_str(), r);
+  return decimal(("%." + std::to_string(decimals) + "f").c_str(), r);
+}
+
+// One line per criterion: "E = 147 (proven: proofs/cap_es_limits.md)" where a theorem gives the limit,
+// "A in [lower, upper] (certified: ...)" where an interval bound and an optimal measure enclose it. The
+// enclosure is printed outward to the digits its gap leaves, and the gap as the power of ten above it:
+// the solver's last bits differ with the BLAS kernel, and the printed text should not.
 void print_region(const commands::LimitsResult& r) {
   std::cout << "region " << r.region->text() << "\n";
   for (const auto& l : r.criteria) {
@@ -38,13 +56,27 @@ void print_region(const commands::LimitsResult& r) {
       std::cout << ": no known limit\n";
       continue;
     }
-    std::cout << " >= " << decimal("%.10g", l.region->value) << " (numerically, an optimal measure on "
-              << l.region->candidates << " candidates)";
-    if (l.region->lower_bound)
-      std::cout << "; proven >= " << decimal("%.10g", *l.region->lower_bound) << " (gap "
-                << decimal("%.2g", (l.region->value - *l.region->lower_bound) / l.region->value) << " relative)";
-    std::cout << "; " << decimal("%.4g", l.region->value / *l.sphere_value) << " x the sphere's; support "
-              << l.region->support.size() << " positions\n";
+    const RegionLimit& g = *l.region;
+    const std::string value = decimal("%.10g", g.value);
+    switch (status_of(g)) {
+      case LimitStatus::proven:
+        std::cout << " = " << value << (l.region_exact == value ? "" : " = " + l.region_exact)
+                  << " (proven: " << g.theorem << ")";
+        break;
+      case LimitStatus::certified: {
+        const double gap = std::max((g.value - *g.lower_bound) / g.value, 1e-15);
+        const int digits = std::clamp(static_cast<int>(std::floor(-std::log10(gap))), 4, 12);
+        std::cout << " in [" << rounded(*g.lower_bound, digits, false) << ", " << rounded(g.value, digits, true)
+                  << "] (certified: the lower end by interval arithmetic, the upper an optimal measure's; gap below "
+                  << decimal("%.0e", std::pow(10.0, std::ceil(std::log10(gap)))) << " relative)";
+        break;
+      }
+      case LimitStatus::numerical:
+        std::cout << " = " << value << " (numerical: an optimal measure's, no proven bound)";
+        break;
+    }
+    std::cout << "; " << decimal("%.4g", g.value / *l.sphere_value) << " x the sphere's; support "
+              << distinct_support(g) << " positions\n";
   }
 }
 
@@ -69,14 +101,15 @@ void print_sphere(const commands::LimitsResult& r) {
 }
 
 // --out: one row per criterion; a cell is empty where the limit, its exact form or a proven lower
-// bound is not known (the exact form is the sphere's; the lower bound a region's).
+// bound is not known (the exact form is the sphere's or a theorem's on the region; the lower bound a
+// region's).
 void write_table(std::ostream& out, const commands::LimitsResult& r) {
   out << "criterion,limit,exact,lower_bound\n";
   for (const auto& l : r.criteria) {
     out << criterion_name(l.criterion) << ',';
     if (r.region && l.region)
-      out << shortest_text(l.region->value) << ",,"
-          << (l.region->lower_bound ? shortest_text(*l.region->lower_bound) : "");
+      out << shortest_text(l.region->value) << "," << (l.region_exact.empty() ? "" : "\"" + l.region_exact + "\"")
+          << "," << (l.region->lower_bound ? shortest_text(*l.region->lower_bound) : "");
     else if (!r.region && l.sphere)
       out << shortest_text(l.sphere->value) << ",\"" << l.sphere->exact << "\",";
     else

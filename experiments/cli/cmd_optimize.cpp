@@ -4,6 +4,7 @@
 // with --digits, --out and the JSON program are the polished program.
 #include <iomanip>
 #include <iostream>
+#include <string>
 
 #include "commands/optimize.hpp"
 #include "experiments/cli/command.hpp"
@@ -13,6 +14,13 @@
 namespace scalcal::cli {
 namespace {
 
+// "proven: proofs/cap_es_limits.md", "certified", "numerical".
+std::string limit_status(const commands::ReportedLimit& l) {
+  std::string s(status_name(l.statement.status));
+  if (!l.statement.theorem.empty()) s += ": " + std::string(l.statement.theorem);
+  return s;
+}
+
 void print_text(const commands::OptimizeResult& r) {
   const SynthesisResult& s = r.synthesis;
   std::cout << criterion_name(r.criterion) << " = " << std::setprecision(15) << s.value << "  (N = " << r.positions
@@ -21,12 +29,13 @@ void print_text(const commands::OptimizeResult& r) {
             << std::setprecision(3) << s.seconds << " s)\n";
   if (r.designed_on) std::cout << "designed on " << r.designed_on->text() << "\n";
   if (r.limit && r.model != ModelKind::paper9)
-    std::cout << "model " << model_name(r.model) << ": limit " << std::setprecision(10) << *r.limit << ", efficiency "
-              << std::setprecision(9) << *r.efficiency << " (limit / value; D as its " << model_parameters(r.model)
-              << "th root)\n";
+    std::cout << "model " << model_name(r.model) << ": limit " << std::setprecision(10) << *r.limit << " ("
+              << limit_status(*r.limit_statement) << "), efficiency " << std::setprecision(9) << *r.efficiency
+              << " (limit / value; D as its " << model_parameters(r.model) << "th root)\n";
   else if (r.limit && r.region)
-    std::cout << "on " << r.region->text() << ": limit " << std::setprecision(10) << *r.limit << ", efficiency "
-              << std::setprecision(9) << *r.efficiency << " (limit / value; D as its 9th root)\n";
+    std::cout << "on " << r.region->text() << ": limit " << std::setprecision(10) << *r.limit << " ("
+              << limit_status(*r.limit_statement) << "), efficiency " << std::setprecision(9) << *r.efficiency
+              << " (limit / value; D as its 9th root)\n";
   if (r.polished)
     std::cout << criterion_name(r.criterion) << " = " << r.polished->value_digits << "  (" << r.polished->digits
               << " digits, residual " << std::setprecision(3) << r.polished->residual << ", "

@@ -244,9 +244,11 @@ void figure_regions(Context& ctx) {
   rep.paragraph(
       "Data: [fig12.csv](fig12.csv), [fig12_thetas.csv](fig12_thetas.csv), [fig12_n.csv](fig12_n.csv). A cap "
       "of half-angle φ holds the directions within φ of +z, a band those within φ of the horizontal plane, "
-      "the six faces those within φ of ±x, ±y or ±z. D on a cap or band is exact (numeric/region/zonal_d.hpp, "
-      "proofs/cap_d_limit.md); A, E, S are optimal measures found numerically (`scalcal limits --region` "
-      "adds their proven lower bounds). The smallest N is the first of N = " +
+      "the six faces those within φ of ±x, ±y or ±z. D on a cap is a theorem's closed form "
+      "(proofs/cap_d_limit.md), and so are E and S on caps up to 110.38° and 99.88° (proofs/cap_es_limits.md); "
+      "D on a band is solved as a one-dimensional problem (numeric/region/zonal_d.hpp); the others are optimal "
+      "measures found numerically (`scalcal limits --region` adds their proven lower bounds). The smallest N is "
+      "the first of N = " +
       std::to_string(n_scan.front()) + ", " + std::to_string(n_scan.front() + 1) + ", ..., " +
       std::to_string(n_scan.back()) + " whose best program (" + std::to_string(ctx.options.quick ? 2 : 4) +
       " exchange starts) comes within 1 %:");

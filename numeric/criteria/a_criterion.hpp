@@ -40,7 +40,7 @@ struct ACriterion {
     if constexpr (std::is_same_v<Model, Paper9Model>) {
       const Scalar s2 = sqrt(Scalar(2));
       return CriterionLimitTpl<Scalar>{Scalar(45) + Scalar(18) * s2, Scalar(1) / (Scalar(9) + Scalar(3) * s2),
-                                       "45+18*sqrt(2)"};
+                                       "45+18*sqrt(2)", "proofs/aes_limits.md"};
     }
     return std::nullopt;
   }

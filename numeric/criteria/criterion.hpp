@@ -32,7 +32,8 @@ template <class Scalar>
 struct CriterionLimitTpl {
   Scalar value;
   Scalar moment_b;
-  std::string_view exact;  // the value in closed form
+  std::string_view exact;    // the value in closed form
+  std::string_view theorem;  // the document that proves it
 };
 
 // d phi = tr(G dM) and dG = c (A dM B + B dM A): all a solver over the positions needs of a smooth

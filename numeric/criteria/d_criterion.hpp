@@ -43,7 +43,8 @@ struct DCriterion {
   template <class Model, class Scalar>
   static std::optional<CriterionLimitTpl<Scalar>> limit() {
     if constexpr (std::is_same_v<Model, Paper9Model>)
-      return CriterionLimitTpl<Scalar>{Scalar(61509375) / Scalar(4), Scalar(1) / Scalar(15), "61509375/4"};
+      return CriterionLimitTpl<Scalar>{Scalar(61509375) / Scalar(4), Scalar(1) / Scalar(15), "61509375/4",
+                                       "proofs/d_limit.md"};
     return std::nullopt;
   }
 

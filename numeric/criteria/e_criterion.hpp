@@ -42,7 +42,7 @@ struct ECriterion {
   template <class Model, class Scalar>
   static std::optional<CriterionLimitTpl<Scalar>> limit() {
     if constexpr (std::is_same_v<Model, Paper9Model>)
-      return CriterionLimitTpl<Scalar>{Scalar(12), Scalar(1) / Scalar(12), "12"};
+      return CriterionLimitTpl<Scalar>{Scalar(12), Scalar(1) / Scalar(12), "12", "proofs/aes_limits.md"};
     return std::nullopt;
   }
 };

@@ -44,7 +44,8 @@ struct SCriterion {
     using std::sqrt;
     if constexpr (std::is_same_v<Model, Paper9Model>) {
       const Scalar s3 = sqrt(Scalar(3));
-      return CriterionLimitTpl<Scalar>{Scalar(6) + Scalar(3) * s3, (Scalar(2) - s3) / Scalar(3), "6+3*sqrt(3)"};
+      return CriterionLimitTpl<Scalar>{Scalar(6) + Scalar(3) * s3, (Scalar(2) - s3) / Scalar(3), "6+3*sqrt(3)",
+                                       "proofs/aes_limits.md"};
     }
     return std::nullopt;
   }

@@ -6,6 +6,7 @@
 #include <numeric>
 
 #include "numeric/criteria/evaluation.hpp"
+#include "numeric/region/cap_limits.hpp"
 #include "numeric/region/climb.hpp"
 #include "numeric/region/dual_certificate.hpp"
 #include "numeric/region/measure_weights.hpp"
@@ -35,8 +36,7 @@ bool is_new(const Vec3& x, const std::vector<Vec3>& candidates) {
   return std::none_of(candidates.begin(), candidates.end(), [&](const Vec3& c) { return c.dot(x) >= cos_tol; });
 }
 
-RegionLimit zonal_limit(const Zone& zone) {
-  const ZonalMeasure m = zonal_d_limit(zone);
+RegionLimit zonal_limit(const Zone& zone, const ZonalMeasure& m) {
   RegionLimit out;
   out.value = m.value;
   out.lower_bound = m.lower_bound;
@@ -49,6 +49,20 @@ RegionLimit zonal_limit(const Zone& zone) {
     M += out.weights[i] * h * h.transpose();
   }
   out.K = M.llt().solve(Mat9::Identity());
+  return out;
+}
+
+// A theorem's closed form: its value is the limit (and so its own lower bound), its measure optimal.
+// Each circle as 5 equally spaced positions reproduces the circle's moments to degree 4, which is
+// all the information matrix holds, whatever the criterion.
+RegionLimit closed_form_limit(const Zone& zone, const CapClosedForm& f) {
+  ZonalMeasure m;
+  m.heights = f.heights;
+  m.weights = f.weights;
+  m.value = f.value;
+  m.lower_bound = f.value;
+  RegionLimit out = zonal_limit(zone, m);
+  out.theorem = f.theorem;
   return out;
 }
 
@@ -182,7 +196,7 @@ int add_peaks(const Eigen::Matrix<double, Eigen::Dynamic, P>& C, const Region& r
 template <class Crit>
 RegionLimit limit_of(const Region& region, const RegionLimitOptions& options) {
   if constexpr (kDeterminantOnly<Crit>)
-    if (is_single_zone(region)) return zonal_limit(region.zones.front());
+    if (is_single_zone(region)) return zonal_limit(region.zones.front(), zonal_d_limit(region.zones.front()));
   const std::vector<Vec3> grid = region.measure_grid(options.grid_step_deg);
   std::vector<Vec3> candidates = grid;
   std::vector<double> weights;
@@ -265,12 +279,56 @@ bool is_single_zone(const Region& region) {
 }
 
 RegionLimit region_limit(CriterionKind c, const Region& region, const RegionLimitOptions& options) {
+  if (options.closed_forms)
+    if (const auto f = cap_closed_form(c, region)) return closed_form_limit(region.zones.front(), *f);
   return visit_criterion(c, [&](auto C) { return limit_of<decltype(C)>(region, options); });
 }
 
-double limit_value(CriterionKind c, const Region& region) {
-  return region.is_sphere() ? criterion_limit(c).value : region_limit(c, region).value;
+int distinct_support(const RegionLimit& l) {
+  const double same = std::cos(1e-3 * M_PI / 180.0);
+  std::vector<Vec3> positions;
+  std::vector<double> weights;
+  for (std::size_t i = 0; i < l.support.size(); ++i) {
+    std::size_t k = 0;
+    while (k < positions.size() && positions[k].dot(l.support[i]) < same) ++k;
+    if (k == positions.size()) {
+      positions.push_back(l.support[i]);
+      weights.push_back(0.0);
+    }
+    weights[k] += l.weights[i];
+  }
+  if (weights.empty()) return 0;
+  const double top = *std::max_element(weights.begin(), weights.end());
+  return static_cast<int>(std::count_if(weights.begin(), weights.end(), [top](double w) { return w >= 1e-3 * top; }));
 }
+
+std::string_view status_name(LimitStatus s) {
+  switch (s) {
+    case LimitStatus::proven:
+      return "proven";
+    case LimitStatus::certified:
+      return "certified";
+    case LimitStatus::numerical:
+      break;
+  }
+  return "numerical";
+}
+
+LimitStatus status_of(const RegionLimit& l) {
+  if (!l.theorem.empty()) return LimitStatus::proven;
+  return l.lower_bound ? LimitStatus::certified : LimitStatus::numerical;
+}
+
+LimitStatement limit_statement(CriterionKind c, const Region& region) {
+  if (region.is_sphere()) {
+    const auto l = criterion_limit(c);  // throws where the criterion has no known limit
+    return {l.value, l.value, LimitStatus::proven, l.theorem};
+  }
+  const RegionLimit l = region_limit(c, region);
+  return {l.value, l.lower_bound, status_of(l), l.theorem};
+}
+
+double limit_value(CriterionKind c, const Region& region) { return limit_statement(c, region).value; }
 
 double efficiency(CriterionKind c, double limit, double value, int parameters) {
   const double e = limit / value;

@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <numeric>
 
+#include "numeric/region/cap_limits.hpp"
 #include "numeric/synthesis/workers.hpp"
 
 namespace scalcal {
@@ -66,28 +67,38 @@ std::size_t rough_cost(const RegionLimitTask& t, const RegionLimitOptions& optio
 
 std::vector<RegionLimit> region_limits(const std::vector<RegionLimitTask>& tasks, const RegionLimitOptions& options,
                                        int workers, const std::function<void(int, int)>& progress) {
-  const int count = static_cast<int>(tasks.size());
   std::vector<RegionLimit> out(tasks.size());
-  if (workers <= 1 || count <= 1) {
-    for (int k = 0; k < count; ++k) {
-      out[static_cast<std::size_t>(k)] = region_limit(tasks[static_cast<std::size_t>(k)].criterion,
-                                                      tasks[static_cast<std::size_t>(k)].region, options);
-      if (progress) progress(k + 1, count);
+  // A theorem's closed form takes no time: here, not in a worker (and its theorem's name stays with it).
+  std::vector<std::size_t> solve;
+  for (std::size_t k = 0; k < tasks.size(); ++k)
+    if (options.closed_forms && cap_closed_form(tasks[k].criterion, tasks[k].region))
+      out[k] = region_limit(tasks[k].criterion, tasks[k].region, options);
+    else
+      solve.push_back(k);
+  const int count = static_cast<int>(tasks.size()), done = count - static_cast<int>(solve.size());
+  const auto report = [&](int n, int) {
+    if (progress) progress(done + n, count);
+  };
+  if (workers <= 1 || solve.size() <= 1) {
+    int n = 0;
+    for (std::size_t k : solve) {
+      out[k] = region_limit(tasks[k].criterion, tasks[k].region, options);
+      report(++n, count);
     }
     return out;
   }
-  std::vector<std::size_t> cost(tasks.size()), order(tasks.size());
-  for (std::size_t k = 0; k < tasks.size(); ++k) cost[k] = rough_cost(tasks[k], options);
-  std::iota(order.begin(), order.end(), 0);
+  std::vector<std::size_t> cost(tasks.size());
+  for (std::size_t k : solve) cost[k] = rough_cost(tasks[k], options);
+  std::vector<std::size_t> order = solve;
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return cost[a] > cost[b]; });
   const std::vector<std::vector<double>> records = run_values_in_workers(
-      count, workers, kRecordSize,
-      [&](int k) {
-        const RegionLimitTask& t = tasks[order[static_cast<std::size_t>(k)]];
+      static_cast<int>(order.size()), workers, kRecordSize,
+      [&](int j) {
+        const RegionLimitTask& t = tasks[order[static_cast<std::size_t>(j)]];
         return pack(region_limit(t.criterion, t.region, options));
       },
-      progress);
-  for (std::size_t j = 0; j < tasks.size(); ++j) {
+      report);
+  for (std::size_t j = 0; j < order.size(); ++j) {
     const std::size_t k = order[j];
     if (!unpack(records[j], out[k])) out[k] = region_limit(tasks[k].criterion, tasks[k].region, options);
   }

@@ -21,9 +21,13 @@ using scalcal::proofs::check;
 using scalcal::proofs::on_sphere;
 namespace sym = scalcal::symbolic;
 
-int main() {
-  const ex s2 = GiNaC::sqrt(ex(2));
-  const ex b = (3 - s2) / 21;
+namespace {
+
+const ex s2 = GiNaC::sqrt(ex(2));
+const ex closed_sigma = (1 + 2 * s2) / 7;
+
+// Step 2: k(eta, xi) of the symmetric moment matrix with E[x^2 y^2] = b is the closed form on the sphere.
+bool kernel_identity(const ex& b) {
   const GiNaC::matrix K = sym::symmetric_moment_matrix(b).inverse();
   const symbol x1("x1"), y1("y1"), z1("z1"), x2("x2"), y2("y2"), z2("z2");
   const GiNaC::matrix h1 = sym::design_row({x1, y1, z1}), h2 = sym::design_row({x2, y2, z2});
@@ -32,14 +36,25 @@ int main() {
   const ex s = x1 * x1 * x2 * x2 + y1 * y1 * y2 * y2 + z1 * z1 * z2 * z2;
   const ex closed = 3 * t + ex(3) / 2 * (3 + s2) * t * t + ex(3) / 2 * (2 * s2 - 1) * s - ex(3) / 2 * s2;
   // Reduce modulo both sphere equations: z1^2 = 1 - x1^2 - y1^2, then z2^2 = 1 - x2^2 - y2^2.
-  const ex rest = on_sphere(on_sphere(GiNaC::expand(kernel - closed), x1, y1, z1), x2, y2, z2);
-  check(sym::is_zero_exact(rest),
+  return sym::is_zero_exact(on_sphere(on_sphere(GiNaC::expand(kernel - closed), x1, y1, z1), x2, y2, z2));
+}
+
+// Step 3: the curve's sigma* agrees with the optimal moments, sigma* = 1 - 6b.
+bool consistent(const ex& b) { return sym::is_zero_exact(closed_sigma - (1 - 6 * b)); }
+
+}  // namespace
+
+int main() {
+  const ex b = (3 - s2) / 21;
+  check(kernel_identity(b),
         "k(eta, xi) = 3t + 3/2 (3+sqrt2) t^2 + 3/2 (2 sqrt2 - 1) s - 3/2 sqrt2 on the sphere (M_A^-1 exact)");
-  const ex sigma = (1 + 2 * s2) / 7;
+  const ex sigma = closed_sigma;
   check(sym::is_zero_exact(3 + ex(3) / 2 * (3 + s2) + ex(3) / 2 * (2 * s2 - 1) * sigma - ex(3) / 2 * s2 - 9),
         "k(eta, eta) = 9 iff sigma4(eta) = (1 + 2 sqrt 2)/7 (t = 1, s = sigma4; the coefficient of s is > 0)");
-  check(sym::is_zero_exact(sigma - (1 - 6 * b)),
-        "sigma* = 1 - 6 b_A = 3 E[x^4]: consistent with the optimal moments (mean of sigma4)");
+  check(consistent(b), "sigma* = 1 - 6 b_A = 3 E[x^4]: consistent with the optimal moments (mean of sigma4)");
+  // Controls: with E's b = 1/12 in place of b_A both fail, as they must.
+  check(!kernel_identity(ex(1) / 12) && !consistent(ex(1) / 12),
+        "control: with E's b = 1/12 the kernel identity and the consistency of sigma* fail");
 
   // The cap argument in MPFI.
   using namespace scalcal::certify_detail;

@@ -16,6 +16,7 @@
 
 #include "proofs/checks/check.hpp"
 #include "proofs/checks/sphere_reduction.hpp"
+#include "proofs/checks/sturm.hpp"
 #include "symbolic/exact.hpp"
 
 using GiNaC::ex;
@@ -29,27 +30,7 @@ namespace {
 
 const symbol c("c");
 
-// Sturm's theorem: distinct real roots of p in (a, b] (p(a), p(b) != 0 not needed for the count of
-// sign variations of the chain, which is exact for distinct roots).
-int roots_in(const ex& p, const numeric& a, const numeric& b) {
-  std::vector<ex> chain{GiNaC::expand(p), GiNaC::expand(p.diff(c))};
-  while (chain.back().degree(c) > 0) {
-    const ex r = GiNaC::expand(-GiNaC::rem(chain[chain.size() - 2], chain.back(), c));
-    if (r.is_zero()) break;
-    chain.push_back(r);
-  }
-  auto variations = [&chain](const numeric& at) {
-    int count = 0, last = 0;
-    for (const ex& q : chain) {
-      const numeric v = GiNaC::ex_to<numeric>(q.subs(c == at));
-      const int s = v.is_zero() ? 0 : (v > 0 ? 1 : -1);
-      if (s != 0 && last != 0 && s != last) ++count;
-      if (s != 0) last = s;
-    }
-    return count;
-  };
-  return variations(a) - variations(b);
-}
+int roots_in(const ex& p, const numeric& a, const numeric& b) { return scalcal::proofs::roots_in(p, c, a, b); }
 
 // p with every factor (c - 1) divided out (the cap's c < 1 never reaches that root).
 ex without_one(ex p) {
@@ -199,5 +180,16 @@ int main() {
   check(at(wE[0], 0, numeric(53, 147)) && at(wE[1], 0, numeric(68, 147)) && at(wS[0], 0, numeric(1, 3)) &&
             at(wS[1], 0, numeric(4, 9)),
         "hemisphere weights: E (53, 68, 26)/147, S (3, 4, 2)/9 on rim, 60-degree circle, pole");
+
+  // Controls: with 1/1000 moved from the rim to the pole (the weights still sum to 1) the eigenvector
+  // identity of E and the value of K_66 for S fail, as they must.
+  const ex moved = ex(1) / 1000;
+  const GiNaC::matrix ME_off =
+      rim.mul_scalar(wE[0] - moved).add(middle.mul_scalar(wE[1])).add(pole.mul_scalar(wE[2] + moved));
+  check(!all_zero(ME_off.mul(u).sub(u.mul_scalar(1 / E))), "control: perturbed E weights break M_E u = u / E(c)");
+  const GiNaC::matrix MS_off =
+      rim.mul_scalar(wS[0] - moved).add(middle.mul_scalar(wS[1])).add(pole.mul_scalar(wS[2] + moved));
+  check(!GiNaC::normal(sub(MS_off, {2, 3, 4, 5}).inverse()(3, 3) - S).is_zero(),
+        "control: perturbed S weights break K_66 = S(c)");
   return scalcal::proofs::finish();
 }

@@ -61,6 +61,44 @@ std::vector<GiNaC::matrix> d3() {
   return g;
 }
 
+// Whether O(p) - |G| M_u lies in the span of the invariants J on the sphere, entry by entry, for the
+// orbit map of the group G; the coefficient matrices A_k (row-major) when it does.
+bool spanned_by(const std::vector<GiNaC::matrix>& group, const std::vector<ex>& J, const symbol& x, const symbol& y,
+                const symbol& z, std::vector<std::vector<ex>>& A) {
+  std::vector<sym::WeightedPoint> orbit;
+  for (const auto& g : group) {
+    const GiNaC::matrix p = g.mul(GiNaC::matrix{{x}, {y}, {z}});
+    orbit.push_back({ex(1), {p(0, 0), p(1, 0), p(2, 0)}});
+  }
+  const GiNaC::matrix O = sym::moment_matrix(orbit);
+  const GiNaC::matrix Mu = sym::symmetric_moment_matrix(ex(1) / 15);
+  const symbol a1("a1"), a2("a2"), a3("a3"), a4("a4");
+  const GiNaC::lst unknowns = {a1, a2, a3, a4};
+  A.assign(4, std::vector<ex>(81));
+  for (int r = 0; r < 9; ++r)
+    for (int c = 0; c < 9; ++c) {
+      const ex rest =
+          O(r, c) - static_cast<int>(group.size()) * Mu(r, c) - a1 * J[0] - a2 * J[1] - a3 * J[2] - a4 * J[3];
+      GiNaC::lst equations;
+      for (const ex& e : coefficients(on_sphere(rest, x, y, z), x, y, z)) equations.append(e == 0);
+      const ex solution = GiNaC::lsolve(equations, unknowns);
+      if (solution.nops() != 4 || !sym::is_zero_exact(on_sphere(rest.subs(solution), x, y, z))) return false;
+      for (int k = 0; k < 4; ++k) A[k][9 * r + c] = unknowns.op(k).subs(solution);
+    }
+  return true;
+}
+
+// The invariant sums of step (3) for heights z1^2, z2^2 (J1, J2) and the circle condition of the turns
+// for S1^2 = t: all zero for the design.
+bool sums_vanish(const ex& z1s, const ex& z2s) {
+  return sym::is_zero_exact(ex(1) / 3 * (1 - ex(1) / 3) + (z1s - ex(1) / 3) + (z2s - ex(1) / 3)) &&
+         sym::is_zero_exact(ex(1) / 3 * (1 - ex(1) / 5) + (z1s * z1s - ex(1) / 5) + (z2s * z2s - ex(1) / 5));
+}
+bool turns_exist(const ex& z1s, const ex& z2s, const ex& t) {
+  const ex r1_6 = GiNaC::pow(1 - z1s, 3), r2_6 = GiNaC::pow(1 - z2s, 3);
+  return sym::is_zero_exact(r1_6 * ((1 - t) * z2s + z1s * t) - r2_6 * z2s);
+}
+
 }  // namespace
 
 int main() {
@@ -76,32 +114,10 @@ int main() {
   check(closed, "the six D3 elements are rotations (R R^T = I, det R = 1)");
 
   // (1) O(p) - 6 M_u in the span of the four invariants on the sphere, entry by entry.
-  std::vector<sym::WeightedPoint> orbit;
-  for (const auto& g : group) {
-    const GiNaC::matrix p = g.mul(GiNaC::matrix{{x}, {y}, {z}});
-    orbit.push_back({ex(1), {p(0, 0), p(1, 0), p(2, 0)}});
-  }
-  const GiNaC::matrix O = sym::moment_matrix(orbit);
-  const GiNaC::matrix Mu = sym::symmetric_moment_matrix(ex(1) / 15);
   const std::vector<ex> J = {z * z - ex(1) / 3, GiNaC::pow(z, 4) - ex(1) / 5, x * x * x - 3 * x * y * y,
                              z * (3 * x * x * y - y * y * y)};
-  const symbol a1("a1"), a2("a2"), a3("a3"), a4("a4");
-  const GiNaC::lst unknowns = {a1, a2, a3, a4};
-  std::vector<std::vector<ex>> A(4, std::vector<ex>(81));  // A_k entries, row-major
-  bool spanned = true;
-  for (int r = 0; r < 9 && spanned; ++r)
-    for (int c = 0; c < 9 && spanned; ++c) {
-      const ex rest = O(r, c) - 6 * Mu(r, c) - a1 * J[0] - a2 * J[1] - a3 * J[2] - a4 * J[3];
-      GiNaC::lst equations;
-      for (const ex& e : coefficients(on_sphere(rest, x, y, z), x, y, z)) equations.append(e == 0);
-      const ex solution = GiNaC::lsolve(equations, unknowns);
-      if (solution.nops() != 4) {
-        spanned = false;
-        break;
-      }
-      spanned = sym::is_zero_exact(on_sphere(rest.subs(solution), x, y, z));
-      for (int k = 0; k < 4; ++k) A[k][9 * r + c] = unknowns.op(k).subs(solution);
-    }
+  std::vector<std::vector<ex>> A;
+  const bool spanned = spanned_by(group, J, x, y, z, A);
   check(spanned,
         "O(p) - 6 M_u = sum_k A_k J_k(p) on the sphere, A_k constant (J = z^2-1/3, z^4-1/5, "
         "x^3-3xy^2, z(3x^2y-y^3))");
@@ -117,15 +133,12 @@ int main() {
   // (3) The invariant sums.
   const ex s35 = GiNaC::sqrt(ex(35));
   const ex z1s = (10 + s35) / 45, z2s = (10 - s35) / 45;  // z1^2, z2^2
-  check(sym::is_zero_exact(ex(1) / 3 * (1 - ex(1) / 3) + (z1s - ex(1) / 3) + (z2s - ex(1) / 3)),
-        "J1: J1(e_z)/3 + J1(p1) + J1(p2) = (2/3)/3 + z1^2 + z2^2 - 2/3 = 0 (E[z^2] = 1/3)");
-  check(sym::is_zero_exact(ex(1) / 3 * (1 - ex(1) / 5) + (z1s * z1s - ex(1) / 5) + (z2s * z2s - ex(1) / 5)),
+  check(sums_vanish(z1s, z2s),
+        "J1: J1(e_z)/3 + J1(p1) + J1(p2) = (2/3)/3 + z1^2 + z2^2 - 2/3 = 0 (E[z^2] = 1/3); "
         "J2: (4/5)/3 + z1^4 + z2^4 - 2/5 = 0 (E[z^4] = 1/5)");
   const ex t = ex(7261) / 9826 - ex(1431) * s35 / 68782;  // S1^2
-  const ex r1_6 = GiNaC::pow(1 - z1s, 3), r2_6 = GiNaC::pow(1 - z2s, 3);
   // C2^2 + S2^2 = (r1/r2)^6 (C1^2 + (z1/z2)^2 S1^2) = 1, times r2^6 z2^2:
-  check(sym::is_zero_exact(r1_6 * ((1 - t) * z2s + z1s * t) - r2_6 * z2s),
-        "C2^2 + S2^2 = 1: (r1^6 ((1-t) z2^2 + z1^2 t) = r2^6 z2^2, exact in Q(sqrt 35))");
+  check(turns_exist(z1s, z2s, t), "C2^2 + S2^2 = 1: (r1^6 ((1-t) z2^2 + z1^2 t) = r2^6 z2^2, exact in Q(sqrt 35))");
   // 0 < t < 1 and 0 < z2^2 < z1^2 < 1 by rational bounds on sqrt 35 (5.916 < sqrt 35 < 5.9161).
   const GiNaC::numeric lo_s("5.916"), hi_s("5.9161");
   check(lo_s * lo_s < 35 && hi_s * hi_s > 35, "5.916 < sqrt 35 < 5.9161");
@@ -136,5 +149,15 @@ int main() {
                        z2_hi = (10 - lo_s) / 45;
   check(z2_lo > 0 && z2_hi < z1_lo && z1_hi < 1,
         "0 < z2^2 < z1^2 < 1: heights +-1, +-z1, +-z2 are six distinct values, r1, r2 > 0 (14 distinct points)");
+
+  // Controls: the same checks fail, as they must, for a wrong height, a wrong t, and the cyclic group C3
+  // (rotations about z only) in place of D3, whose orbits leave more invariants than these four.
+  check(!sums_vanish(z1s + ex(1) / 100, z2s), "control: a height off by 1/100 in z1^2 breaks the moment sums");
+  check(!turns_exist(z1s, z2s, t + ex(1) / 1000), "control: t off by 1/1000 gives no turns (C2^2 + S2^2 != 1)");
+  std::vector<GiNaC::matrix> c3;
+  for (std::size_t k = 0; k < group.size(); k += 2) c3.push_back(group[k]);  // R3^k
+  std::vector<std::vector<ex>> unused;
+  check(c3.size() == 3 && !spanned_by(c3, J, x, y, z, unused),
+        "control: the C3 orbit map is not in the span of the four invariants (more invariants survive)");
   return scalcal::proofs::finish();
 }

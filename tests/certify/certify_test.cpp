@@ -28,9 +28,8 @@ Program optimum(int n, CriterionKind c) {
   return synthesize(o).program;
 }
 
-void expect_enclosure_holds_polish(int n, const char* name) {
+void expect_enclosure_holds_polish(const Program& p, const char* name) {
   const CriterionKind c = *parse_criterion(name);
-  const Program p = optimum(n, c);
   const CertifyResult r = certify(p, c);
   ASSERT_EQ(r.status, CertifiedStatus::missed_local_optimum) << r.reason;
   EXPECT_GE(r.enclosure_digits, 30);
@@ -42,6 +41,10 @@ void expect_enclosure_holds_polish(int n, const char* name) {
   const certify_detail::Real slack = abs(value) * certify_detail::Real("1e-48");
   EXPECT_LE(lo - slack, value) << r.enclosure_lo << " vs " << polished.value_digits;
   EXPECT_GE(hi + slack, value) << r.enclosure_hi << " vs " << polished.value_digits;
+}
+
+void expect_enclosure_holds_polish(int n, const char* name) {
+  expect_enclosure_holds_polish(optimum(n, *parse_criterion(name)), name);
 }
 
 TEST(Certify, DAtNineIsACertifiedLocalOptimumHoldingThePolishedValue) { expect_enclosure_holds_polish(9, "D"); }
@@ -119,7 +122,16 @@ TEST(Certify, ProgramsThatAreNotStrictOptimaAreNotCertified) {
   EXPECT_EQ(certify(resolve_program("random-18-s7"), *parse_criterion("A")).status, CertifiedStatus::missed_numerical);
 }
 
-TEST(Certify, EAtNineIsACertifiedLocalOptimumHoldingThePolishedValue) { expect_enclosure_holds_polish(9, "E"); }
+// E at N = 9 from the committed best program (proofs/designs/e9_best.csv, E = 12.1871926420): the multistart's
+// 16 starts reach it under some BLAS kernels and not others (Haswell's best start ends at 12.3957, a
+// different critical point whose 4-fold cluster is no strict minimum), so the certificate is tested on
+// the program itself, whatever the kernel.
+TEST(Certify, EAtNineIsACertifiedLocalOptimumHoldingThePolishedValue) {
+  const Program best = read_program_csv(std::string(SCALCAL_SOURCE_DIR) + "/proofs/designs/e9_best.csv");
+  ASSERT_EQ(best.size(), 9);
+  EXPECT_NEAR(criterion_value(best, *parse_criterion("E")), 12.1871926420, 1e-9);
+  expect_enclosure_holds_polish(best, "E");
+}
 
 // The E certificate claims a strict local minimum of a nonsmooth function (the smallest eigenvalue of
 // M is 5-fold there): no small random move of the positions may lower E. A D optimum is no E

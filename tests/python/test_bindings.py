@@ -115,6 +115,12 @@ def test_limits():
     same(scalcal.limits(), cli_json("limits"))
     same(scalcal.limits(model="bias3"), cli_json("limits", "--model", "bias3"))
     assert scalcal.limits()["D"]["exact"] == "61509375/4"
+    assert scalcal.limits()["D"]["theorem"] == "proofs/d_limit.md"
+    # On the hemisphere the theorems' closed forms come through with their status (A is certified).
+    cap = scalcal.limits(region="cap:90")
+    same(cap, cli_json("limits", "--region", "cap:90"))
+    assert (cap["E"]["exact"], cap["E"]["theorem"], cap["E"]["status"]) == ("147", "proofs/cap_es_limits.md", "proven")
+    assert (cap["S"]["exact"], cap["A"]["status"]) == ("81", "certified")
 
 
 def simulated_bench(seed):

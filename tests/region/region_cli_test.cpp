@@ -1,5 +1,6 @@
 // --region on the commands as a user runs them: the JSON keys the issue fixes (optimize: region,
-// limit, efficiency), the tilt/azimuth columns of --out for a cap, and the refusals.
+// limit, efficiency), what stands behind each limit (status, theorem, exact), the tilt/azimuth columns
+// of --out for a cap, and the refusals.
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -29,6 +30,8 @@ TEST(RegionCli, OptimizeOnACapReportsLimitAndEfficiency) {
   EXPECT_NEAR(efficiency, std::pow(j["limit"].get<double>() / j["value"].get<double>(), 1.0 / 9), 1e-12);
   EXPECT_GT(efficiency, 0.99);
   EXPECT_LE(efficiency, 1.0 + 1e-12);
+  EXPECT_EQ(j["limit_statement"]["status"], "proven");
+  EXPECT_EQ(j["limit_statement"]["theorem"], "proofs/cap_d_limit.md");
   // --out for a cap writes the region line, then adds tilt_deg and azimuth_deg; every tilt is within the cap.
   std::istringstream csv(slurp(out));
   std::string region_line, header, line;
@@ -54,8 +57,13 @@ TEST(RegionCli, OptimizeOnACapReportsLimitAndEfficiency) {
   }
   EXPECT_EQ(rows, 24);
   // The written program reads back and lies in the region.
-  const auto e = run_cli("evaluate " + out + " --region cap:90");
-  EXPECT_EQ(e.status, 0) << e.err;
+  const auto e = run_cli("evaluate " + out + " --region cap:90 --json");
+  ASSERT_EQ(e.status, 0) << e.err;
+  // evaluate states the limits it judges against as limits does.
+  const Json limits = Json::parse(e.out)["limits"];
+  EXPECT_EQ(limits["E"]["exact"], "147");
+  EXPECT_EQ(limits["E"]["status"], "proven");
+  EXPECT_EQ(limits["A"]["status"], "certified");
 }
 
 TEST(RegionCli, DigitsCannotKeepPositionsInsideARegion) {
@@ -82,6 +90,29 @@ TEST(RegionCli, LimitsJsonOnACap) {
     EXPECT_GT(total, 1.0 - 1e-4) << c;
   }
   EXPECT_NEAR(j["D"]["value"].get<double>() / 2.10863441696092520e13, 1.0, 1e-10);
+}
+
+// The issue's "done when": the hemisphere's E and S exactly, with their theorem; D proven; A certified (its
+// value an optimal measure's, its bound proven, no exact form); the sphere's limits proven too.
+TEST(RegionCli, LimitsStateTheTheoremsOnTheHemisphere) {
+  const auto r = run_cli("limits --region cap:90 --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const Json j = Json::parse(r.out);
+  EXPECT_EQ(j["E"]["exact"], "147");
+  EXPECT_EQ(j["E"]["theorem"], "proofs/cap_es_limits.md");
+  EXPECT_EQ(j["S"]["exact"], "81");
+  EXPECT_EQ(j["S"]["theorem"], "proofs/cap_es_limits.md");
+  EXPECT_EQ(j["E"]["value"].get<double>(), 147.0);
+  EXPECT_EQ(j["S"]["value"].get<double>(), 81.0);
+  for (const char* c : {"D", "E", "S"}) EXPECT_EQ(j[c]["status"], "proven") << c;
+  EXPECT_EQ(j["D"]["theorem"], "proofs/cap_d_limit.md");
+  EXPECT_EQ(j["A"]["status"], "certified");
+  EXPECT_FALSE(j["A"].contains("exact"));
+  EXPECT_LT(j["A"]["lower_bound"].get<double>(), j["A"]["value"].get<double>());
+  const auto s = run_cli("limits --region sphere --json");
+  ASSERT_EQ(s.status, 0) << s.err;
+  EXPECT_EQ(Json::parse(s.out)["A"]["theorem"], "proofs/aes_limits.md");
+  EXPECT_EQ(Json::parse(s.out)["A"]["status"], "proven");
 }
 
 }  // namespace

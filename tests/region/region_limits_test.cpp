@@ -21,6 +21,7 @@ void expect_same(const RegionLimit& a, const RegionLimit& b) {
   EXPECT_EQ(a.candidates, b.candidates);
   EXPECT_EQ(a.refinements, b.refinements);
   EXPECT_EQ(a.boxes, b.boxes);
+  EXPECT_EQ(a.theorem, b.theorem);
 }
 
 TEST(RegionLimits, WorkersGiveWhatOneByOneGives) {
@@ -46,12 +47,14 @@ TEST(RegionLimits, WorkersGiveWhatOneByOneGives) {
 }
 
 TEST(RegionLimits, ProvenBoundsCrossThePipeToo) {
-  // D on a cap is one-dimensional (zonal_d.hpp), with its proven bound: the cheap certified case.
-  const std::vector<RegionLimitTask> tasks{{CriterionKind::D, parse_region({"cap:60:1,0,1"})},
-                                           {CriterionKind::D, parse_region({"cap:120"})}};
+  // D on a band is one-dimensional (zonal_d.hpp), with its proven bound: the cheap certified case (on a
+  // cap D is a theorem's closed form, computed in this process).
+  const std::vector<RegionLimitTask> tasks{{CriterionKind::D, parse_region({"band:20:60:1,0,1"})},
+                                           {CriterionKind::D, parse_region({"band:45:135"})}};
   const std::vector<RegionLimit> together = region_limits(tasks, {}, 2);
   for (std::size_t k = 0; k < tasks.size(); ++k) {
     ASSERT_TRUE(together[k].lower_bound.has_value());
+    EXPECT_EQ(status_of(together[k]), LimitStatus::certified);
     expect_same(together[k], region_limit(tasks[k].criterion, tasks[k].region));
   }
 }

@@ -11,6 +11,7 @@
 #include "numeric/criteria/evaluation.hpp"
 #include "numeric/region/region_limit.hpp"
 #include "numeric/region/zonal_d.hpp"
+#include "tests/region/cap_d_enclosures.hpp"
 
 namespace scalcal {
 namespace {
@@ -33,13 +34,7 @@ double direct_d(const std::vector<Vec3>& positions, const std::vector<double>& w
 
 // The proof's enclosures (lower ends, 30 digits), proofs/cap_d_limit.md step 7.
 TEST(ZonalD, CapLimitsMatchTheExactEnclosures) {
-  const struct {
-    double deg, exact;
-  } cases[] = {{30, 1.02240851106493129379295952002523676e+23},
-               {60, 2.10863441696092520602537447015586759e+13},
-               {90, 9.39809328436720974260809992031664894e+08},
-               {120, 2.16835955359789343745625399524988806e+07}};
-  for (const auto& c : cases) {
+  for (const auto& c : testing::kCapDEnclosures) {
     const ZonalMeasure m = zonal_d_limit(cap(c.deg));
     EXPECT_FALSE(m.sphere_limit) << c.deg;
     EXPECT_NEAR(m.value / c.exact, 1.0, 1e-11) << c.deg;
