@@ -63,18 +63,14 @@ static void reported_std(const sc_problem* q, const scalcal_real* cov, scalcal_r
 /* The gains' standard errors from one covariance (scaled by `factor`), and the nominal gain's. */
 static void gain_std(const scalcal_calibration* cal, int p, const scalcal_real* cov, scalcal_real factor,
                      scalcal_real g[3], scalcal_real* nominal) {
-  scalcal_real c[9], sum = 0;
-  int i, j, k, l;
+  scalcal_real sum = 0;
+  int i, j;
+  /* gain_i = nominal gain (1 + dk_i): its relative error is dk_i's, the common part included, with
+   * an unknown magnitude too (the host's gain_errors); only the scale deviations lose it. */
   for (i = 0; i < 3; ++i)
-    for (j = 0; j < 3; ++j) c[i * 3 + j] = factor * cov[(3 + i) * p + 3 + j], sum += c[i * 3 + j];
+    for (j = 0; j < 3; ++j) sum += factor * cov[(3 + i) * p + 3 + j];
   for (i = 0; i < 3; ++i) {
-    scalcal_real d = 0;
-    if (cal->magnitude_auto) {
-      for (k = 0; k < 3; ++k)
-        for (l = 0; l < 3; ++l) d += ((i == k) - (scalcal_real)1 / 3) * c[k * 3 + l] * ((i == l) - (scalcal_real)1 / 3);
-    } else {
-      d = c[i * 3 + i];
-    }
+    const scalcal_real d = factor * cov[(3 + i) * p + 3 + i];
     g[i] = cal->gain[i] * (d > 0 ? SC_SQRT(d) : 0);
   }
   *nominal = cal->nominal_gain * (sum > 0 ? SC_SQRT(sum) : 0) / 3;
