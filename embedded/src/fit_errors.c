@@ -167,8 +167,8 @@ void sc_standard_errors(const sc_problem* q, const scalcal_real* X, scalcal_cali
   const int p = q->p;
   const scalcal_real M = q->magnitude, nan = (scalcal_real)NAN;
   /* K: (H^T W H)^-1; Kn: the covariance per unit of a sample's variance; A, B: scratch. */
-  scalcal_real K[SC_P * SC_P], A[SC_P * SC_P], B[SC_P * SC_P], se[SC_P], gp[3], ga[3], gm[3], np, na, nm,
-      weighted, s2 = 0, v2;
+  scalcal_real K[SC_P * SC_P], A[SC_P * SC_P], B[SC_P * SC_P], se[SC_P], gp[3], ga[3], gm[3], np, na, nm, weighted,
+      s2 = 0, v2;
   const scalcal_real* Kn = K;
   sc_meter m;
   int k, has_noise, has_residuals, modelled;
