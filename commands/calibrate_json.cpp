@@ -59,6 +59,12 @@ Json std_from(const CalibrateResult& r) {
   return j;
 }
 
+// The samples inside interval k that are not its (a noisy window crossed the threshold): [first,
+// last] sample indices of the log, from 0, inclusive.
+Json breaks_of(const CalibrateResult& r, std::size_t k) {
+  return r.detection && k < r.detection->intervals.size() ? Json(r.detection->intervals[k].breaks) : Json::array();
+}
+
 Json intervals_json(const CalibrateResult& r) {
   Json list = Json::array();
   if (r.tumbling) return list;  // every sample is a position: `tumbling` says what was used
@@ -69,7 +75,8 @@ Json intervals_json(const CalibrateResult& r) {
                         {"mean", triple(p.mean)},
                         {"direction", triple(p.direction)},
                         {"residual", number_or_null(p.residual)},
-                        {"standardised_residual", number_or_null(p.standardised_residual)}});
+                        {"standardised_residual", number_or_null(p.standardised_residual)},
+                        {"breaks", breaks_of(r, static_cast<std::size_t>(&p - r.positions.data()))}});
   return list;
 }
 

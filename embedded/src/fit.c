@@ -142,11 +142,13 @@ scalcal_status scalcal_fit(const scalcal_pose_set* set, const scalcal_fit_option
     return SCALCAL_E_ARGUMENT;
   if (!magnitude_auto && !(options->magnitude > 0 && sc_finite(options->magnitude))) return SCALCAL_E_ARGUMENT;
   if (options->max_iterations < 1) return SCALCAL_E_ARGUMENT;
+  if (!(options->noise >= 0 && sc_finite(options->noise))) return SCALCAL_E_ARGUMENT;
   if (!poses_finite(set)) return SCALCAL_E_NOT_FINITE;
   memset(&q, 0, sizeof q);
   q.set = set;
   q.magnitude = magnitude_auto ? 1 : options->magnitude;
   q.weight_by_samples = options->weight_by_samples;
+  q.noise = options->noise;
   status = choose(&q, options->model, magnitude_auto, r);
   if (status != SCALCAL_OK) return status;
   q.p = (int)r->model;

@@ -1,6 +1,7 @@
 /* Noise, residuals and standard errors at the estimate (the host's calibrate_model and
  * calibrate_any_units): the covariance from the noise within poses (K per unit of a sample's
- * variance) and from the residuals between poses (s^2 (H^T W H)^-1), each in the reported units. */
+ * variance), from the residuals between poses (s^2 (H^T W H)^-1) and, where it applies, from the
+ * between-pose error model (between_poses.c), each in the reported units. */
 #include <string.h>
 
 #include "fit_internal.h"
@@ -62,18 +63,14 @@ static void reported_std(const sc_problem* q, const scalcal_real* cov, scalcal_r
 /* The gains' standard errors from one covariance (scaled by `factor`), and the nominal gain's. */
 static void gain_std(const scalcal_calibration* cal, int p, const scalcal_real* cov, scalcal_real factor,
                      scalcal_real g[3], scalcal_real* nominal) {
-  scalcal_real c[9], sum = 0;
-  int i, j, k, l;
+  scalcal_real sum = 0;
+  int i, j;
+  /* gain_i = nominal gain (1 + dk_i): its relative error is dk_i's, the common part included, with
+   * an unknown magnitude too (the host's gain_errors); only the scale deviations lose it. */
   for (i = 0; i < 3; ++i)
-    for (j = 0; j < 3; ++j) c[i * 3 + j] = factor * cov[(3 + i) * p + 3 + j], sum += c[i * 3 + j];
+    for (j = 0; j < 3; ++j) sum += factor * cov[(3 + i) * p + 3 + j];
   for (i = 0; i < 3; ++i) {
-    scalcal_real d = 0;
-    if (cal->magnitude_auto) {
-      for (k = 0; k < 3; ++k)
-        for (l = 0; l < 3; ++l) d += ((i == k) - (scalcal_real)1 / 3) * c[k * 3 + l] * ((i == l) - (scalcal_real)1 / 3);
-    } else {
-      d = c[i * 3 + i];
-    }
+    const scalcal_real d = factor * cov[(3 + i) * p + 3 + i];
     g[i] = cal->gain[i] * (d > 0 ? SC_SQRT(d) : 0);
   }
   *nominal = cal->nominal_gain * (sum > 0 ? SC_SQRT(sum) : 0) / 3;
@@ -115,7 +112,10 @@ static void noise_and_residuals(const sc_problem* q, const sc_meter* m, scalcal_
   cal->residual_rms = SC_SQRT(ss / (scalcal_real)n) * M;
   report->noise_source = SCALCAL_NOISE_NONE;
   cal->noise = 0;
-  if (samples > n) {
+  if (q->noise > 0) {
+    cal->noise = q->noise;
+    report->noise_source = SCALCAL_NOISE_GIVEN;
+  } else if (samples > n) {
     cal->noise = SC_SQRT(scatter / (scalcal_real)(samples - n));
     report->noise_source = SCALCAL_NOISE_SCATTER;
   } else if (n > (uint32_t)q->p) {
@@ -123,7 +123,8 @@ static void noise_and_residuals(const sc_problem* q, const sc_meter* m, scalcal_
     report->noise_source = SCALCAL_NOISE_RESIDUALS;
   }
   report->chi_square = (scalcal_real)NAN;
-  if (report->noise_source == SCALCAL_NOISE_SCATTER && cal->noise > 0 && n > (uint32_t)q->p) {
+  if (report->noise_source >= SCALCAL_NOISE_SCATTER && report->noise_source != SCALCAL_NOISE_RESIDUALS &&
+      cal->noise > 0 && n > (uint32_t)q->p) {
     scalcal_real chi = 0;
     for (i = 0; i < n; ++i) {
       const scalcal_real z =
@@ -134,15 +135,43 @@ static void noise_and_residuals(const sc_problem* q, const sc_meter* m, scalcal_
   }
 }
 
+/* The reported standard errors from one covariance (scaled by factor): se and the gains'. */
+static void from_covariance(const sc_problem* q, const scalcal_calibration* cal, const scalcal_real* cov,
+                            scalcal_real factor, scalcal_real* scratch, scalcal_real* se, scalcal_real g[3],
+                            scalcal_real* nominal) {
+  int k;
+  for (k = 0; k < q->p * q->p; ++k) scratch[k] = factor * cov[k];
+  reported_std(q, scratch, se);
+  if (q->p >= 6) gain_std(cal, q->p, cov, factor, g, nominal);
+}
+
+/* The between-pose error model's standard errors into the report (A and B: P x P scratch). */
+static int error_model(const sc_problem* q, const sc_meter* m, const scalcal_real* K, scalcal_calibration* cal,
+                       scalcal_fit_report* report, scalcal_real* A, scalcal_real* B, scalcal_real g[3],
+                       scalcal_real* nominal) {
+  const scalcal_real M = q->magnitude;
+  sc_between b;
+  if (report->noise_source != SCALCAL_NOISE_SCATTER && report->noise_source != SCALCAL_NOISE_GIVEN) return 0;
+  if (report->dof < SC_ERROR_MODEL_DOF) return 0;
+  if (!sc_between_poses(q, m, (cal->noise / M) * (cal->noise / M), K, A, B, &b)) return 0;
+  report->error_model = 1;
+  report->error_model_iterations = b.iterations;
+  report->between_std = SC_SQRT(b.between) * M;
+  report->within_std = cal->noise;
+  from_covariance(q, cal, B, 1, A, report->model_std, g, nominal);
+  return 1;
+}
+
 void sc_standard_errors(const sc_problem* q, const scalcal_real* X, scalcal_calibration* cal,
                         scalcal_fit_report* report) {
   const int p = q->p;
   const scalcal_real M = q->magnitude, nan = (scalcal_real)NAN;
-  /* K: (H^T W H)^-1; Kn: the covariance per unit of a sample's variance; B: scratch. */
-  scalcal_real K[SC_P * SC_P], A[SC_P * SC_P], B[SC_P * SC_P], se[SC_P], gp[3], ga[3], np, na, weighted, s2 = 0, v2;
+  /* K: (H^T W H)^-1; Kn: the covariance per unit of a sample's variance; A, B: scratch. */
+  scalcal_real K[SC_P * SC_P], A[SC_P * SC_P], B[SC_P * SC_P], se[SC_P], gp[3], ga[3], gm[3], np, na, nm, weighted,
+      s2 = 0, v2;
   const scalcal_real* Kn = K;
   sc_meter m;
-  int k, has_noise, has_residuals;
+  int k, has_noise, has_residuals, modelled;
   sc_meter_of(q, X, &m);
   information(q, &m, 0, K);
   if (!sc_spd_inverse(p, K, K)) memset(K, 0, sizeof K);
@@ -158,14 +187,16 @@ void sc_standard_errors(const sc_problem* q, const scalcal_real* X, scalcal_cali
   has_residuals = report->dof > 0;
   if (has_residuals) s2 = weighted / (scalcal_real)report->dof;
   v2 = (cal->noise / M) * (cal->noise / M);
-  for (k = 0; k < p * p; ++k) B[k] = v2 * Kn[k];
-  reported_std(q, B, report->predicted_std);
-  for (k = 0; k < p * p; ++k) B[k] = s2 * K[k];
-  reported_std(q, B, report->achieved_std);
+  gp[0] = gp[1] = gp[2] = np = ga[0] = ga[1] = ga[2] = na = nan;
+  from_covariance(q, cal, Kn, v2, B, report->predicted_std, gp, &np);
+  from_covariance(q, cal, K, s2, B, report->achieved_std, ga, &na);
+  report->between_std = report->within_std = nan;
+  for (k = 0; k < p; ++k) report->model_std[k] = nan;
+  modelled = error_model(q, &m, K, cal, report, A, B, gm, &nm); /* A (Kn) is spent from here */
   for (k = 0; k < p; ++k) {
     if (!has_noise) report->predicted_std[k] = nan;
     if (!has_residuals) report->achieved_std[k] = nan;
-    se[k] = larger(report->predicted_std[k], report->achieved_std[k]);
+    se[k] = modelled ? report->model_std[k] : larger(report->predicted_std[k], report->achieved_std[k]);
   }
   for (k = 0; k < 3; ++k) {
     cal->bias_std[k] = se[k];
@@ -175,11 +206,9 @@ void sc_standard_errors(const sc_problem* q, const scalcal_real* X, scalcal_cali
   }
   cal->nominal_gain_std = nan;
   if (p >= 6) {
-    gain_std(cal, p, Kn, v2, gp, &np);
-    gain_std(cal, p, K, s2, ga, &na);
     if (!has_noise) gp[0] = gp[1] = gp[2] = np = nan;
     if (!has_residuals) ga[0] = ga[1] = ga[2] = na = nan;
-    for (k = 0; k < 3; ++k) cal->gain_std[k] = larger(gp[k], ga[k]);
-    cal->nominal_gain_std = larger(np, na);
+    for (k = 0; k < 3; ++k) cal->gain_std[k] = modelled ? gm[k] : larger(gp[k], ga[k]);
+    cal->nominal_gain_std = modelled ? nm : larger(np, na);
   }
 }

@@ -67,6 +67,7 @@ typedef struct {
   int weight_by_samples;
   int started;
   sc_correction start; /* its offset relative to the set's origin */
+  scalcal_real noise;  /* one sample's noise given by the caller; 0: from the scatter within poses */
 } sc_problem;
 
 void sc_problem_mean(const sc_problem* q, uint32_t i, scalcal_real y[3]);
@@ -100,6 +101,19 @@ scalcal_real sc_fitted_condition(const sc_problem* q, const scalcal_real* X);
 
 /* The estimator from X = 0 (numeric/calibration/model_calibration.cpp, damped_gauss_newton). */
 void sc_estimate(const sc_problem* q, int max_iterations, scalcal_real* X, scalcal_fit_report* report);
+
+/* The between-pose error model (between_poses.c): applies when the noise comes from the scatter
+ * within poses and the poses outnumber the parameters by at least this (the host's kErrorModelDof). */
+#define SC_ERROR_MODEL_DOF 5
+typedef struct {
+  scalcal_real between; /* sigma_b^2 by REML, >= 0 (the estimator's units: relative to |I|) */
+  int iterations, converged;
+} sc_between;
+/* sigma_b^2 at the estimate (meter m) with one sample's variance `within` (relative to |I|^2), and
+ * the estimator's covariance under the model, K B K, given K = (H^T W0 H)^-1: left in x. a and x are
+ * P x P scratch. 0 when a weighted information matrix is not positive definite. */
+int sc_between_poses(const sc_problem* q, const sc_meter* m, scalcal_real within, const scalcal_real* K,
+                     scalcal_real* a, scalcal_real* x, sc_between* out);
 
 /* Standard errors, noise and residuals at the estimate: fills cal's errors, noise, residual_rms and
  * the report's predicted/achieved standard errors and chi-square. */

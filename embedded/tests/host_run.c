@@ -1,8 +1,11 @@
 /* Test side only (host): a real log fed sample by sample to the embedded library, printed as
  * `key value...` lines (17 significant digits) for tests/compare_cli.py to compare with
  * `scalcal calibrate --json`. Poses come either from the CLI's own intervals (--intervals FILE:
- * lines `start end` in seconds, inclusive, and `exclude LINE` for the samples the CLI left out), or
- * from the library's streaming detector (--detect). */
+ * lines `start end` in seconds, inclusive; `break FIRST LAST` for the samples inside an interval
+ * that are not its, as sample indices of the log from 0; `exclude LINE` for the samples the CLI
+ * left out as outliers), or from the library's streaming detector (--detect). --noise gives the fit
+ * one sample's noise instead of its own first-order estimate (to compare the error model with the
+ * CLI's on the same noise). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -30,16 +33,22 @@ typedef struct {
   double start[MAX_INTERVALS], end[MAX_INTERVALS];
   int excluded_count;
   int excluded[65536];
+  int break_count;
+  int break_first[MAX_INTERVALS], break_last[MAX_INTERVALS];
 } given_intervals;
 
 static int read_intervals(const char* path, given_intervals* g) {
   FILE* f = fopen(path, "r");
   char word[64];
   if (!f) return fprintf(stderr, "%s: cannot open\n", path), 1;
-  g->count = g->excluded_count = 0;
+  g->count = g->excluded_count = g->break_count = 0;
   while (fscanf(f, "%63s", word) == 1) {
     if (!strcmp(word, "exclude")) {
       if (fscanf(f, "%d", &g->excluded[g->excluded_count]) == 1 && g->excluded_count < 65535) g->excluded_count++;
+    } else if (!strcmp(word, "break")) {
+      if (fscanf(f, "%d %d", &g->break_first[g->break_count], &g->break_last[g->break_count]) == 2 &&
+          g->break_count < MAX_INTERVALS - 1)
+        g->break_count++;
     } else if (g->count < MAX_INTERVALS) {
       g->start[g->count] = strtod(word, 0);
       if (fscanf(f, "%lf", &g->end[g->count]) == 1) g->count++;
@@ -49,10 +58,12 @@ static int read_intervals(const char* path, given_intervals* g) {
   return 0;
 }
 
-static int is_excluded(const given_intervals* g, int line) {
+static int is_excluded(const given_intervals* g, int line, int row) {
   int k;
   for (k = 0; k < g->excluded_count; ++k)
     if (g->excluded[k] == line) return 1;
+  for (k = 0; k < g->break_count; ++k)
+    if (row >= g->break_first[k] && row <= g->break_last[k]) return 1;
   return 0;
 }
 
@@ -67,7 +78,7 @@ static int feed_given(const test_log* log, const given_intervals* g, scalcal_pos
     for (row = 0; row < log->rows; ++row) {
       scalcal_real x[3];
       if (!(log->t[row] >= g->start[k] && log->t[row] <= g->end[k])) continue;
-      if (!finite3(log->x[row]) || !isfinite(log->t[row]) || is_excluded(g, log->line[row])) continue;
+      if (!finite3(log->x[row]) || !isfinite(log->t[row]) || is_excluded(g, log->line[row], row)) continue;
       x[0] = (scalcal_real)log->x[row][0], x[1] = (scalcal_real)log->x[row][1], x[2] = (scalcal_real)log->x[row][2];
       scalcal_pose_sum_add(set, &pose, x, (uint32_t)row);
     }
@@ -121,6 +132,11 @@ static void print_result(const scalcal_pose_set* set, const scalcal_calibration*
   print_vec("predicted_std", r->predicted_std, p);
   print_vec("achieved_std", r->achieved_std, p);
   print_vec("chi_square", &r->chi_square, 1);
+  printf("noise_source %d\n", (int)r->noise_source);
+  printf("error_model %d %d\n", r->error_model, r->error_model_iterations);
+  print_vec("between_std", &r->between_std, 1);
+  print_vec("within_std", &r->within_std, 1);
+  print_vec("model_std", r->model_std, p);
   printf("samples %u\n", (unsigned)c->samples);
   if (scalcal_program_quality_of(set, c, r->model, &pq) == SCALCAL_OK) {
     print_vec("program_value", pq.value, 4);
@@ -171,6 +187,8 @@ int main(int argc, char** argv) {
       intervals = argv[++k];
     else if (!strcmp(argv[k], "--capacity") && k + 1 < argc)
       capacity = atoi(argv[++k]);
+    else if (!strcmp(argv[k], "--noise") && k + 1 < argc)
+      o.noise = (scalcal_real)atof(argv[++k]);
     else if (!strcmp(argv[k], "--detect"))
       detect = 1;
     else if (!strcmp(argv[k], "--weights-samples"))

@@ -133,6 +133,53 @@ static void test_truth(double magnitude, int magnitude_auto, const char* what) {
   }
 }
 
+/* The between-pose error model: 40 poses of 200 samples whose field's modulus differs from pose to
+ * pose by 5e-4 relative (a hand-held pose is never the same twice), 7 times the noise of a pose's mean
+ * (2 counts of 1638.4 per g over sqrt(200)). REML must find sigma_b (within 35 %: its relative
+ * standard error with 31 degrees of freedom is about 13 %), the model's standard errors must apply
+ * and carry the truth within 5 of them; the noise-based alone are 7 times too small for that. */
+static void test_between_poses(void) {
+  static scalcal_pose_sum pose;
+  const double sigma_b = 5e-4;
+  meter m;
+  scalcal_pose_set set;
+  scalcal_fit_options o;
+  scalcal_calibration c;
+  scalcal_fit_report r;
+  scalcal_status s;
+  int p, k, n;
+  make_meter(&m, 1.0, 1638.4, 2.0);
+  scalcal_pose_set_init(&set, storage, SCALCAL_MAX_POSES);
+  for (p = 0; p < 40; ++p) {
+    double d[3];
+    const double scale = 1 + sigma_b * gaussian();
+    random_direction(d);
+    for (k = 0; k < 3; ++k) d[k] *= scale;
+    scalcal_pose_sum_clear(&pose);
+    for (n = 0; n < 200; ++n) {
+      scalcal_real x[3];
+      measure(&m, d, x);
+      scalcal_pose_sum_add(&set, &pose, x, (uint32_t)(p * 200 + n));
+    }
+    scalcal_pose_set_append(&set, &pose);
+  }
+  scalcal_fit_options_default(&o);
+  s = scalcal_fit(&set, &o, &c, &r);
+  CHECK(s == SCALCAL_OK && r.model == SCALCAL_MODEL_PAPER9, "between poses: %s model %d", scalcal_status_text(s),
+        (int)r.model);
+  if (s != SCALCAL_OK) return;
+  CHECK(r.error_model == 1, "between poses: the error model does not apply");
+  CHECK(fabs(r.between_std / sigma_b - 1) < 0.35, "between poses: sigma_b %g, truth %g", (double)r.between_std,
+        sigma_b);
+  for (k = 0; k < 3; ++k) {
+    CHECK(c.bias_std[k] == r.model_std[k], "between poses: bias %d's error is not the model's", k);
+    CHECK(fabs(c.offset[k] - m.offset[k]) < 5 * c.bias_std[k], "between poses: offset %d %g truth %g se %g", k,
+          (double)c.offset[k], m.offset[k], (double)c.bias_std[k]);
+    CHECK(fabs(c.gain[k] - m.k[k]) < 5 * c.gain_std[k], "between poses: gain %d %g truth %g se %g", k,
+          (double)c.gain[k], m.k[k], (double)c.gain_std[k]);
+  }
+}
+
 /* Bench data: one sample per pose (18 random directions), weighted by samples: the noise comes from
  * the residuals (N - P degrees of freedom) and the truth is recovered within 5 standard errors. */
 static void test_single_samples(void) {
@@ -294,6 +341,12 @@ static void test_degenerate(void) {
   o.magnitude = 1;
   o.model = (scalcal_model)7;
   CHECK(scalcal_fit(&set, &o, &c, &r) == SCALCAL_E_ARGUMENT, "model 7");
+  o.model = SCALCAL_MODEL_AUTO;
+  o.noise = -1;
+  CHECK(scalcal_fit(&set, &o, &c, &r) == SCALCAL_E_ARGUMENT, "negative noise");
+  o.noise = (scalcal_real)NAN;
+  CHECK(scalcal_fit(&set, &o, &c, &r) == SCALCAL_E_ARGUMENT, "NaN noise");
+  o.noise = 0;
   {
     scalcal_detector_options dop;
     scalcal_detector_options_default(&dop, 0);
@@ -386,6 +439,7 @@ int main(void) {
   test_truth(9.80665, 0, "accelerometer in counts");
   test_truth(48.0, 1, "magnetometer, field unknown");
   test_single_samples();
+  test_between_poses();
   test_fuzz();
   test_degenerate();
   test_record();

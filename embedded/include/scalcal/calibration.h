@@ -23,7 +23,12 @@ typedef enum {
 } scalcal_model;
 
 /* Where the noise (and the noise-based standard errors) came from. */
-typedef enum { SCALCAL_NOISE_NONE = 0, SCALCAL_NOISE_SCATTER, SCALCAL_NOISE_RESIDUALS } scalcal_noise_source;
+typedef enum {
+  SCALCAL_NOISE_NONE = 0,
+  SCALCAL_NOISE_SCATTER,   /* the scatter of the samples within poses */
+  SCALCAL_NOISE_RESIDUALS, /* the residuals between poses (one sample per pose) */
+  SCALCAL_NOISE_GIVEN      /* scalcal_fit_options.noise */
+} scalcal_noise_source;
 
 typedef struct {
   scalcal_model model;
@@ -35,8 +40,9 @@ typedef struct {
   scalcal_real gain[3];             /* k_i: raw units per physical unit (the lengths of matrix^-1's rows) */
   scalcal_real scale_deviation[3];  /* gain / nominal_gain - 1 */
   scalcal_real nonorthogonality[3]; /* gamma_xy, gamma_yz, gamma_zx (radians) */
-  /* Standard errors: the larger of the noise-based and the residual-based (NaN: not estimable,
-   * and for the parameters the model does not have). */
+  /* Standard errors: the between-pose error model's where it applies (scalcal/fit.h), else the
+   * larger of the noise-based and the residual-based (NaN: not estimable, and for the parameters the
+   * model does not have). */
   scalcal_real bias_std[3], scale_deviation_std[3], nonorthogonality_std[3];
   scalcal_real gain_std[3], nominal_gain_std;
   scalcal_real noise;        /* std of one sample's modulus (physical units when started, else raw) */

@@ -4,7 +4,8 @@
  * not within 10 % of the magnitude (or the magnitude is unknown), the paper's iterative least
  * squares on the pose means (Gauss-Newton with the exact derivative where the paper's step stops
  * descending, a halving line search), the correction in the paper's convention, and each
- * parameter's standard error (noise-based and residual-based, the larger kept). A result is
+ * parameter's standard error (the host's between-pose error model where it applies, else the
+ * larger of the noise-based and the residual-based). A result is
  * returned only with SCALCAL_OK: never one the host would not write. */
 #ifndef SCALCAL_FIT_H
 #define SCALCAL_FIT_H
@@ -22,6 +23,10 @@ typedef struct {
   int magnitude_auto;     /* 1: the field's strength is unknown (a magnetometer): unit modulus */
   int weight_by_samples;  /* 0 (default): each pose counts once, as for a raw log; 1: by its samples */
   int max_iterations;     /* 50 */
+  /* 0 (default): one sample's noise from the scatter within poses (to first order: see README.md);
+   * > 0: that noise known beforehand (a long still period's, a datasheet's), in the units of
+   * scalcal_calibration.noise, used in its place. */
+  scalcal_real noise;
 } scalcal_fit_options;
 
 /* How the iteration ended. */
@@ -45,6 +50,14 @@ typedef struct {
   scalcal_real X[SCALCAL_MAX_PARAMETERS];             /* the estimator's parameters (bias / |I|, dk, gamma) */
   scalcal_real predicted_std[SCALCAL_MAX_PARAMETERS]; /* noise-based, reported units (bias raw, dk, rad) */
   scalcal_real achieved_std[SCALCAL_MAX_PARAMETERS];  /* residual-based; NaN when not estimable */
+  /* The between-pose error model (README.md, "Standard errors"): with noise within poses and at
+   * least 5 more poses than parameters, a pose's mean modulus varies by between_std (REML) besides
+   * within_std / sqrt(n_k), and the calibration's standard errors are model_std; else error_model is
+   * 0, these are NaN and the standard errors are the larger of predicted and achieved. */
+  int error_model;
+  int error_model_iterations;                     /* REML's Fisher steps */
+  scalcal_real between_std, within_std;           /* units of scalcal_calibration.noise */
+  scalcal_real model_std[SCALCAL_MAX_PARAMETERS]; /* reported units */
   scalcal_noise_source noise_source;
   scalcal_real chi_square; /* residuals against the noise within poses; NaN when not defined */
 } scalcal_fit_report;
