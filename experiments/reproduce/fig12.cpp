@@ -131,6 +131,32 @@ std::string fig12_script(const std::vector<Family>& fams, int largest_n) {
   return body;
 }
 
+// fig12's figure and its text in the report, once its CSV files are written.
+void report_fig12(Context& ctx, const std::vector<int>& n_scan, const std::string& n_table) {
+  auto& rep = ctx.report;
+  const std::string body = fig12_script(families(ctx.options.quick), n_scan.back());
+  render_figure(ctx, "fig12", "what a restricted bench costs: region limits, RMS errors and the N to reach them", body,
+                plots::kPageWidthCm, 6.5);
+  rep.figure("fig12",
+             "fig12: (a) each criterion's limit on a cap (solid), a band (dashed) and the six faces (dotted) "
+             "relative to the sphere's (D as its 9th root, as the CLI's efficiency, so that its 4.6·10^32 at 10° "
+             "becomes 4.4·10^3 beside the others); (b) the RMS errors θ_bias, θ_scale, θ_nonorth of the region's "
+             "D-optimal measure relative to the sphere's; (c) the smallest N within 1 % of the region's D "
+             "limit");
+  rep.paragraph(
+      "Data: [fig12.csv](fig12.csv), [fig12_thetas.csv](fig12_thetas.csv), [fig12_n.csv](fig12_n.csv). A cap "
+      "of half-angle φ holds the directions within φ of +z, a band those within φ of the horizontal plane, "
+      "the six faces those within φ of ±x, ±y or ±z. D on a cap is a theorem's closed form "
+      "(proofs/cap_d_limit.md), and so are E and S on caps up to 110.38° and 99.88° (proofs/cap_es_limits.md); "
+      "D on a band is solved as a one-dimensional problem (numeric/region/zonal_d.hpp); the others are optimal "
+      "measures found numerically (`scalcal limits --region` adds their proven lower bounds). The smallest N is "
+      "the first of N = " +
+      std::to_string(n_scan.front()) + ", " + std::to_string(n_scan.front() + 1) + ", ..., " +
+      std::to_string(n_scan.back()) + " whose best program (" + std::to_string(ctx.options.quick ? 2 : 4) +
+      " exchange starts) comes within 1 %:");
+  rep.paragraph(n_table);
+}
+
 }  // namespace
 
 using plots::CsvWriter;
@@ -232,27 +258,7 @@ void figure_regions(Context& ctx) {
   errors.close();
   sizes.close();
 
-  const std::string body = fig12_script(families(ctx.options.quick), n_scan.back());
-  render_figure(ctx, "fig12", "what a restricted bench costs: region limits, RMS errors and the N to reach them", body,
-                plots::kPageWidthCm, 6.5);
-  rep.figure("fig12",
-             "fig12: (a) each criterion's limit on a cap (solid), a band (dashed) and the six faces (dotted) "
-             "relative to the sphere's (D as its 9th root, as the CLI's efficiency, so that its 4.6·10^32 at 10° "
-             "becomes 4.4·10^3 beside the others); (b) the RMS errors θ_bias, θ_scale, θ_nonorth of the region's "
-             "D-optimal measure relative to the sphere's; (c) the smallest N within 1 % of the region's D "
-             "limit");
-  rep.paragraph(
-      "Data: [fig12.csv](fig12.csv), [fig12_thetas.csv](fig12_thetas.csv), [fig12_n.csv](fig12_n.csv). A cap "
-      "of half-angle φ holds the directions within φ of +z, a band those within φ of the horizontal plane, "
-      "the six faces those within φ of ±x, ±y or ±z. D on a cap is a theorem's closed form "
-      "(proofs/cap_d_limit.md), and so are E and S on caps up to 110.38° and 99.88° (proofs/cap_es_limits.md); "
-      "D on a band is solved as a one-dimensional problem (numeric/region/zonal_d.hpp); the others are optimal "
-      "measures found numerically (`scalcal limits --region` adds their proven lower bounds). The smallest N is "
-      "the first of N = " +
-      std::to_string(n_scan.front()) + ", " + std::to_string(n_scan.front() + 1) + ", ..., " +
-      std::to_string(n_scan.back()) + " whose best program (" + std::to_string(ctx.options.quick ? 2 : 4) +
-      " exchange starts) comes within 1 %:");
-  rep.paragraph(n_table);
+  report_fig12(ctx, n_scan, n_table);
 }
 
 }  // namespace scalcal::reproduce

@@ -90,6 +90,57 @@ std::vector<Vec3T<Scalar>> position_directions(const std::vector<PositionSamples
   return out;
 }
 
+namespace detail {
+
+// Equal weights: the covariance of X is K (sum_i h_i h_i^T / n_i) K per unit of a sample's variance
+// (each position's mean has variance sigma^2 / n_i); the result holds that, so that
+// X_std = sigma_J sqrt(K(r, r)) stays true.
+template <class Scalar>
+Mat9T<Scalar> equal_weight_covariance(const Mat9T<Scalar>& K, const std::vector<PositionSamplesTpl<Scalar>>& data,
+                                      const std::vector<Vec3T<Scalar>>& means, const Vec9T<Scalar>& X,
+                                      const CalibrationOptionsTpl<Scalar>& options) {
+  const MeterTpl<Scalar> meter = MeterTpl<Scalar>::from_parameters(X, options.magnitude);
+  Mat9T<Scalar> middle = Mat9T<Scalar>::Zero();
+  for (std::size_t i = 0; i < data.size(); ++i) {
+    const Vec3T<Scalar> c = meter.compensate(means[i]);
+    const Vec3T<Scalar> eta =
+        options.modulus == Modulus::norm ? Vec3T<Scalar>(c.normalized()) : Vec3T<Scalar>(data[i].nominal->normalized());
+    const Vec9T<Scalar> h = Paper9Model::row(eta);
+    middle += h * h.transpose() / Scalar(static_cast<int>(data[i].samples.size()));
+  }
+  return K * middle * K;
+}
+
+// The noise: the pooled scatter of the samples about their position's mean when positions repeat,
+// else from the residuals' sum of squares ss (N - 9 degrees of freedom), else none.
+template <class Scalar>
+void estimate_noise(CalibrationResultTpl<Scalar>& r, const std::vector<PositionSamplesTpl<Scalar>>& data,
+                    const Vec9T<Scalar>& X, const CalibrationOptionsTpl<Scalar>& options, const Scalar& ss) {
+  using std::sqrt;
+  const Scalar M = options.magnitude;
+  if (r.samples > r.positions) {
+    const MeterTpl<Scalar> meter = MeterTpl<Scalar>::from_parameters(X, M);
+    Scalar scatter(0);
+    for (const auto& p : data) {
+      std::vector<Scalar> m;
+      Scalar mean(0);
+      for (const auto& s : p.samples) {
+        m.push_back(modulus_of(meter.compensate(s), p, options.modulus));
+        mean += m.back();
+      }
+      mean /= Scalar(static_cast<int>(m.size()));
+      for (const auto& v : m) scatter += (v - mean) * (v - mean);
+    }
+    r.noise = sqrt(scatter / Scalar(r.samples - r.positions));
+    r.noise_source = NoiseSource::scatter;
+  } else if (r.positions > kParameters) {
+    r.noise = sqrt(ss / Scalar(r.positions - kParameters)) * M;
+    r.noise_source = NoiseSource::residuals;
+  }
+}
+
+}  // namespace detail
+
 // Several samples of one position are averaged first and the step is weighted by their count,
 // which for equal counts is eq. (6) itself. The noise is the pooled scatter of the samples about
 // their position's mean when positions repeat, else it comes from the residuals (N - 9 degrees of
@@ -180,44 +231,12 @@ CalibrationResultTpl<Scalar> calibrate(const std::vector<PositionSamplesTpl<Scal
   residuals(X);
   Eigen::LDLT<Mat9T<Scalar>> ldlt(info);
   r.K = ldlt.solve(Mat9T<Scalar>::Identity());
-  if (!options.weight_by_samples) {
-    // Equal weights: the covariance of X is K (sum_i h_i h_i^T / n_i) K per unit of a sample's
-    // variance (each position's mean has variance sigma^2 / n_i); r.K holds that, so that
-    // X_std = sigma_J sqrt(K(r, r)) stays true.
-    const MeterTpl<Scalar> meter = MeterTpl<Scalar>::from_parameters(X, M);
-    Mat9T<Scalar> middle = Mat9T<Scalar>::Zero();
-    for (std::size_t i = 0; i < data.size(); ++i) {
-      const Vec3T<Scalar> c = meter.compensate(means[i]);
-      const Vec3T<Scalar> eta = options.modulus == Modulus::norm ? Vec3T<Scalar>(c.normalized())
-                                                                 : Vec3T<Scalar>(data[i].nominal->normalized());
-      const Vec9T<Scalar> h = Paper9Model::row(eta);
-      middle += h * h.transpose() / Scalar(static_cast<int>(data[i].samples.size()));
-    }
-    r.K = r.K * middle * r.K;
-  }
+  if (!options.weight_by_samples) r.K = detail::equal_weight_covariance(r.K, data, means, X, options);
   Scalar ss(0);
   for (std::size_t i = 0; i < data.size(); ++i) ss += J[i] * J[i];
   r.residual_rms = sqrt(ss / Scalar(r.positions)) * M;
 
-  if (r.samples > r.positions) {
-    const MeterTpl<Scalar> meter = MeterTpl<Scalar>::from_parameters(X, M);
-    Scalar scatter(0);
-    for (const auto& p : data) {
-      std::vector<Scalar> m;
-      Scalar mean(0);
-      for (const auto& s : p.samples) {
-        m.push_back(detail::modulus_of(meter.compensate(s), p, options.modulus));
-        mean += m.back();
-      }
-      mean /= Scalar(static_cast<int>(m.size()));
-      for (const auto& v : m) scatter += (v - mean) * (v - mean);
-    }
-    r.noise = sqrt(scatter / Scalar(r.samples - r.positions));
-    r.noise_source = NoiseSource::scatter;
-  } else if (r.positions > kParameters) {
-    r.noise = sqrt(ss / Scalar(r.positions - kParameters)) * M;
-    r.noise_source = NoiseSource::residuals;
-  }
+  detail::estimate_noise(r, data, X, options, ss);
   if (r.noise_source != NoiseSource::none) {
     const Scalar sigma_J = r.noise / M;
     for (int k = 0; k < 9; ++k) r.X_std(k) = sigma_J * sqrt(r.K(k, k));

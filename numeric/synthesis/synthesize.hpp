@@ -173,15 +173,56 @@ bool starts_need_ipopt(const CriterionOps<Model>& criterion, LocalSolver request
   return starts_solver<Model>(criterion, requested, positions) == LocalSolver::Ipopt;
 }
 
-// The multistart of one criterion under the model (compiled once per model).
 template <class Model>
-SynthesisResult synthesize_with(const CriterionOps<Model>& criterion, const SynthesisOptions& options) {
+void check_synthesis_options(const SynthesisOptions& options) {
   if (options.positions < Model::kParameters)
     throw std::invalid_argument("synthesize: at least " + std::to_string(Model::kParameters) + " positions are needed");
   if (options.starts < 0) throw std::invalid_argument("synthesize: the number of starts must not be negative");
   if (options.first_start && options.first_start->size() != options.positions)
     throw std::invalid_argument("synthesize: the first start has " + std::to_string(options.first_start->size()) +
                                 " positions, not " + std::to_string(options.positions));
+}
+
+// A model other than the paper's states its proven limit (the paper's runs keep their documented
+// counts): no start can go below it, so one that reaches it ends the run.
+template <class Model>
+std::optional<double> stated_proven_limit(const CriterionOps<Model>& criterion) {
+  std::optional<double> proven_limit;
+  if (kModelIndex < Model >> 0 && criterion.kind)
+    if (const auto l = stated_limit(ModelKind(kModelIndex<Model>), criterion_name(*criterion.kind)))
+      proven_limit = l->value;
+  return proven_limit;
+}
+
+// The best start's last steps: confirmed by the Newton solver it came from, or Ipopt's verdict said;
+// a max-diagonal criterion's active conditions solved to rounding below the lifted form's N.
+template <class Model>
+void finish_best(const CriterionOps<Model>& criterion, const SynthesisOptions& options, SynthesisResult& out) {
+  const LocalSolver solver = starts_solver<Model>(criterion, options.local, options.positions);
+  out.local_solver = solver_name(solver);
+  if (solver != LocalSolver::Ipopt) {
+    confirm_best<Model>(criterion, options.positions, out);
+  } else {
+    out.summary.message =
+        out.summary.converged() ? "the best Ipopt start converged" : "the best Ipopt start did not converge";
+  }
+  if (criterion.form == CriterionForm::MaxDiagonal && options.positions < kLiftedFromPositions) {
+    // Ipopt's tolerance leaves S about 1e-12 above its optimum; Newton on the active conditions
+    // takes it to rounding (a dense step: from the lifted form's N on, Ipopt's value stands).
+    const LocalResult refined =
+        refine_active_diagonal<Model>(criterion, LocalResult{out.program, out.value, out.summary});
+    if (refined.value < out.value) {
+      out.program = refined.program;
+      out.value = refined.value;
+      out.summary.message += "; Newton on its active conditions refined it";
+    }
+  }
+}
+
+// The multistart of one criterion under the model (compiled once per model).
+template <class Model>
+SynthesisResult synthesize_with(const CriterionOps<Model>& criterion, const SynthesisOptions& options) {
+  check_synthesis_options<Model>(options);
   const auto t0 = std::chrono::steady_clock::now();
   // --starts forces a count; otherwise the criterion's default is a cap and the stopping rule may
   // end the run sooner.
@@ -222,12 +263,7 @@ SynthesisResult synthesize_with(const CriterionOps<Model>& criterion, const Synt
   const bool in_processes = starts_need_ipopt<Model>(criterion, options.local, options.positions);
   std::vector<LocalResult> results;
   std::string stopping = forced ? "forced " + std::to_string(cap) : "cap " + std::to_string(cap);
-  // A model other than the paper's states its proven limit (the paper's runs keep their documented
-  // counts): no start can go below it, so one that reaches it ends the run.
-  std::optional<double> proven_limit;
-  if (kModelIndex < Model >> 0 && criterion.kind)
-    if (const auto l = stated_limit(ModelKind(kModelIndex<Model>), criterion_name(*criterion.kind)))
-      proven_limit = l->value;
+  const std::optional<double> proven_limit = stated_proven_limit<Model>(criterion);
   bool near_limit = false;
   if (rounded && !forced) {
     // The rounded start alone first: within kNearLimit of the proven limit, it ends the run.
@@ -272,25 +308,7 @@ SynthesisResult synthesize_with(const CriterionOps<Model>& criterion, const Synt
   SynthesisResult out = best_of_starts(results);
   out.starts = starts;
   out.stopping = stopping;
-  const LocalSolver solver = starts_solver<Model>(criterion, options.local, options.positions);
-  out.local_solver = solver_name(solver);
-  if (solver != LocalSolver::Ipopt) {
-    confirm_best<Model>(criterion, options.positions, out);
-  } else {
-    out.summary.message =
-        out.summary.converged() ? "the best Ipopt start converged" : "the best Ipopt start did not converge";
-  }
-  if (criterion.form == CriterionForm::MaxDiagonal && options.positions < kLiftedFromPositions) {
-    // Ipopt's tolerance leaves S about 1e-12 above its optimum; Newton on the active conditions
-    // takes it to rounding (a dense step: from the lifted form's N on, Ipopt's value stands).
-    const LocalResult refined =
-        refine_active_diagonal<Model>(criterion, LocalResult{out.program, out.value, out.summary});
-    if (refined.value < out.value) {
-      out.program = refined.program;
-      out.value = refined.value;
-      out.summary.message += "; Newton on its active conditions refined it";
-    }
-  }
+  finish_best<Model>(criterion, options, out);
   count_hits(results, criterion.symmetry, out);
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;
