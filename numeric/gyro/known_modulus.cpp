@@ -11,6 +11,7 @@
 #include "numeric/calibration/model_choice.hpp"
 #include "numeric/gyro/grouped_least_squares.hpp"
 #include "numeric/io/input_error.hpp"
+#include "numeric/model/paper9.hpp"
 
 namespace scalcal::gyro {
 
@@ -236,20 +237,56 @@ std::vector<Vec3> item_directions(const std::vector<ModulusItem>& items, const s
   return out;
 }
 
+namespace {
+
+// A model's design at the items' directions, with the rests' rows when there are rests (they observe
+// the three offsets directly, as much as the items together): the rows (x, y, z, x^2, ..., zx) of
+// paper9, (x, y, z, x^2, y^2, z^2) of axis6, (x, y, z, 1) of the gyro's bias3 (offsets and one gain).
+Eigen::MatrixXd gyro_information(const std::string& model, const std::vector<Vec3>& eta, bool rests) {
+  const int P = model == "paper9" ? 9 : model == "axis6" ? 6 : 4;
+  Eigen::MatrixXd M = Eigen::MatrixXd::Zero(P, P);
+  for (const Vec3& e : eta) {
+    Eigen::VectorXd h(P);
+    if (model == "bias3")
+      h << e, 1;
+    else
+      h = Paper9Model::row(e).head(P);
+    M += h * h.transpose();
+  }
+  if (rests)
+    for (int c = 0; c < 3; ++c) M(c, c) += static_cast<double>(eta.size()) / 3;
+  return M;
+}
+
+}  // namespace
+
 KnownModulusCalibration calibrate_known_moduli_auto(const std::string& file, const std::vector<ModulusItem>& items,
                                                     const std::vector<LogInterval>& rests, std::string& reason) {
-  Program directions;
-  directions.positions = item_directions(items, rests);
-  const std::optional<ModelChoice> choice = choose_model(directions);
-  if (!choice)
-    throw InputError(
-        file, 0,
-        "the " + std::to_string(items.size()) +
-            " segments or turns carry no model (paper9 needs 9 directions, axis6 6, bias3 3, off one plane)");
-  reason = choice->reason;
-  KnownModulusOptions o;
-  o.model = choice->model;
-  return calibrate_known_moduli(file, items, rests, o);
+  const std::vector<Vec3> eta = item_directions(items, rests);
+  const std::string what =
+      std::to_string(items.size()) + (rests.empty() ? " segments or turns" : " segments or turns and the rests");
+  std::ostringstream why;
+  why.precision(3);
+  for (const char* name : {"paper9", "axis6", "bias3"}) {
+    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(gyro_information(name, eta, !rests.empty()),
+                                                      Eigen::EigenvaluesOnly);
+    const double lo = es.eigenvalues().minCoeff(), hi = es.eigenvalues().maxCoeff();
+    const double condition = lo > 1e-12 * hi ? hi / lo : INFINITY;
+    if (condition > kCarryCondition) {
+      why << (why.tellp() > 0 ? "; " : "") << name << " not (condition " << condition << " > " << kCarryCondition
+          << ")";
+      continue;
+    }
+    std::ostringstream r;
+    r.precision(3);
+    r << "the " << what << " identify " << name << " (condition " << condition << ")";
+    if (why.tellp() > 0) r << "; " << why.str();
+    reason = r.str();
+    KnownModulusOptions o;
+    o.model = *parse_model(name);
+    return calibrate_known_moduli(file, items, rests, o);
+  }
+  throw InputError(file, 0, "the " + what + " carry no model: " + why.str());
 }
 
 }  // namespace scalcal::gyro

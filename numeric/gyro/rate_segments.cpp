@@ -78,8 +78,8 @@ std::vector<Turn> turns_between_rests(const RawLog& log, const RateLogSegments& 
   for (std::size_t k = 0; k + 1 < s.rests.size(); ++k) {
     const LogInterval &a = s.rests[k], &b = s.rests[k + 1];
     Turn turn;
-    turn.begin = (a.span.begin + a.span.end) / 2;
-    turn.end = (b.span.begin + b.span.end) / 2;
+    turn.begin = a.span.end;
+    turn.end = b.span.begin;
     turn.line = log.lines[static_cast<std::size_t>(turn.begin)];
     const Vec3 rest = 0.5 * (a.mean + b.mean);
     Vec3 moved = Vec3::Zero();
@@ -98,6 +98,15 @@ std::vector<Turn> turns_between_rests(const RawLog& log, const RateLogSegments& 
     const double noise = 0.5 * (a.sd.norm() + b.sd.norm()) * dt * std::sqrt(static_cast<double>(between));
     if (between > 0 && moved.norm() > kRestSigmas * noise) out.push_back(turn);
   }
+  return out;
+}
+
+std::vector<Turn> largest_turns(const std::vector<Turn>& turns, const Vec3& rest_mean) {
+  double largest = 0;
+  for (const Turn& t : turns) largest = std::max(largest, (t.integral - t.seconds * rest_mean).norm());
+  std::vector<Turn> out;
+  for (const Turn& t : turns)
+    if ((t.integral - t.seconds * rest_mean).norm() >= (1 - kLargestTurn) * largest) out.push_back(t);
   return out;
 }
 

@@ -36,8 +36,10 @@ LogInterval summarise(const RawLog& log, int begin, int end);
 // Throws InputError as detect_static_intervals does.
 RateLogSegments segment_rate_log(const RawLog& log, const StaticIntervalOptions& options = {});
 
-// A turn: from the middle of one rest to the middle of the next, so the whole motion is inside and
-// the extra samples are rest (bias only, which the calibration models through the duration).
+// A turn: from the end of one rest to the start of the next (a rest ends where the moving window
+// centred on it still holds no motion, so the whole motion is inside), as IMU-TK integrates between
+// poses; the few rest samples inside add the bias times their duration, which the calibration models.
+// Longer spans would add the bias's wander over the rests (imucal's Ferraris session: 2e-4 of a turn).
 struct Turn {
   int begin = 0, end = 0;        // sample indices, inclusive
   Vec3 integral = Vec3::Zero();  // sum of raw (w_i + w_i+1) dt_i / 2: raw units x seconds
@@ -48,5 +50,13 @@ struct Turn {
 // Turns between consecutive rests, skipping pairs of rests with no motion between them (their means
 // and the samples between stay within the rests' noise).
 std::vector<Turn> turns_between_rests(const RawLog& log, const RateLogSegments& segments);
+
+// The known turns among the motions between rests: a turn protocol also moves the meter between
+// faces (imucal's Ferraris session), by a quarter or half turn, and the known turns (whole turns
+// each) are the largest motions. Kept: the motions whose integrated output less the rests' mean
+// over their duration is within kLargestTurn of the largest's (a full turn is twice any face change;
+// the gain's anisotropy moves a whole turn's integral by a few per cent).
+inline constexpr double kLargestTurn = 0.25;
+std::vector<Turn> largest_turns(const std::vector<Turn>& turns, const Vec3& rest_mean);
 
 }  // namespace scalcal::gyro
