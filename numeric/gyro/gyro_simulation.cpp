@@ -162,6 +162,56 @@ HandRotationLogs simulate_hand_rotations(const GyroTruth& truth, const HandRotat
   return out;
 }
 
+HandRotationLogs simulate_hand_rotations_through(const GyroTruth& truth, const std::vector<Vec3>& directions,
+                                                 const HandRotationSimulation& o, std::uint64_t seed) {
+  GaussianSource draw(seed);
+  LogWriter gyro(truth, o.sample_rate, seed ^ 0x9e3779b97f4a7c15ull);
+  GaussianSource acc_noise(seed ^ 0x51ed270b27c1a9f3ull);
+  HandRotationLogs out;
+  if (directions.empty()) return out;
+  for (const Vec3& d : directions) check_axis(d);
+  // The first pose: gravity (world z) along directions[0] in the body: R^T z = eta_0.
+  Mat3 R = rotation_onto(directions[0], Vec3::UnitZ());
+  auto sample = [&](const Vec3& omega) {
+    Vec3 a = o.accelerometer.measure(R.transpose() * Vec3(0, 0, o.gravity));
+    for (int c = 0; c < 3; ++c) a(c) += o.accelerometer_noise * acc_noise();
+    out.accelerometer.t.push_back(gyro.now());
+    out.accelerometer.samples.push_back(a);
+    out.accelerometer.lines.push_back(static_cast<int>(out.accelerometer.lines.size()) + 2);
+    gyro.sample(omega, 0);
+  };
+  auto uniform = [&](double lo, double hi) { return lo + (hi - lo) * draw.sampler().uniform(); };
+  // One phase: a body-frame rotation vector v over T seconds, smooth start and stop.
+  auto turn = [&](const Vec3& v, double T) {
+    const int n = std::max(1, static_cast<int>(std::llround(T * o.sample_rate)));
+    const double dt = gyro.period;
+    for (int i = 0; i < n; ++i) {
+      const double s = i * dt;
+      auto omega = [&](double u) { return Vec3(M_PI / (2 * T) * std::sin(M_PI * std::min(u, T) / T) * v); };
+      sample(omega(s));
+      const double h = dt / kFineSteps;
+      for (int k = 0; k < kFineSteps; ++k) R = R * rotation_exp(omega(s + (k + 0.5) * h) * h);
+    }
+  };
+  for (std::size_t k = 0; k < directions.size(); ++k) {
+    const int rest = static_cast<int>(std::llround(uniform(o.min_rest_seconds, o.max_rest_seconds) * o.sample_rate));
+    for (int i = 0; i < rest; ++i) sample(Vec3::Zero());
+    if (k + 1 == directions.size()) break;
+    const double T = uniform(o.min_motion_seconds, o.max_motion_seconds);
+    const Vec3 g = R.transpose() * Vec3::UnitZ();  // gravity in the body now (the last phase's end)
+    turn(uniform(-M_PI / 3, M_PI / 3) * g, T / 2);
+    // The tilt: exp(theta a) g = next, a = g x next / |g x next|, done as the body rate -theta a.
+    const Vec3 next = directions[k + 1], c = g.cross(next);
+    const double theta = std::atan2(c.norm(), g.dot(next));
+    Vec3 a = c.norm() > 1e-12 ? Vec3(c / c.norm()) : Vec3(g.unitOrthogonal());
+    turn(-theta * a, T / 2);
+  }
+  out.gyro = gyro.out.log;
+  out.gyro.file = "simulated gyro";
+  out.accelerometer.file = "simulated accelerometer";
+  return out;
+}
+
 GyroTruth reference_gyro(bool rotated) {
   Meter m;
   m.scale_deviation = Vec3(0.003, -0.002, 0.001);

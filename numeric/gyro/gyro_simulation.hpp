@@ -77,6 +77,13 @@ struct HandRotationLogs {
 HandRotationLogs simulate_hand_rotations(const GyroTruth& truth, const HandRotationSimulation& options,
                                          std::uint64_t seed);
 
+// Hand rotations through given poses: gravity's direction in the meter's frame at each (unit
+// vectors, a program's positions), each motion a turn about gravity (a random yaw of up to 60
+// degrees, which the accelerometer cannot see) and then the tilt that carries one direction into
+// the next, two phases about different axes.
+HandRotationLogs simulate_hand_rotations_through(const GyroTruth& truth, const std::vector<Vec3>& gravity_directions,
+                                                 const HandRotationSimulation& options, std::uint64_t seed);
+
 // A gyro like an Xsens MTi's: about 4800 counts per rad/s around 32768, a few per mille of scale
 // error, non-orthogonality and rotation against the accelerometer, 27 counts of noise. `rotated`:
 // with a rotation part (hand rotations see it; a rate table does not).
