@@ -23,7 +23,7 @@ namespace scalcal::gyro {
 namespace {
 
 std::string shared_data(const std::string& name) {
-  for (const std::string dir :
+  for (const std::string& dir :
        {std::string(SCALCAL_SOURCE_DIR) + "/data/", std::string(SCALCAL_SOURCE_DIR) + "/../shared/data/"})
     if (std::filesystem::exists(dir + name)) return dir + name;
   return "";
