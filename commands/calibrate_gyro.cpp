@@ -11,6 +11,8 @@
 #include "numeric/gyro/gravity_poses.hpp"
 #include "numeric/gyro/gyro_simulation.hpp"
 #include "numeric/io/input_error.hpp"
+#include "numeric/region/augment.hpp"
+#include "numeric/region/region_limit.hpp"
 
 namespace scalcal::commands {
 
@@ -88,6 +90,18 @@ std::map<int, double> column_by_line(const std::string& file, const std::string&
   return out;
 }
 
+// The items (segments or turns) and rests: the model asked for, or the richest they carry.
+void fit_items(const GyroCalibrateRequest& q, GyroCalibrateResult& r) {
+  if (q.model) {
+    gyro::KnownModulusOptions o;
+    o.model = *q.model;
+    r.scalar = gyro::calibrate_known_moduli(q.file, r.items, r.rests, o);
+    r.model_reason = "requested";
+  } else {
+    r.scalar = gyro::calibrate_known_moduli_auto(q.file, r.items, r.rests, r.model_reason);
+  }
+}
+
 void rate_table(const GyroCalibrateRequest& q, const RawLog& log, GyroCalibrateResult& r) {
   const gyro::RateLogSegments s = gyro::segment_rate_log(log, q.intervals);
   r.detection = s.detection;
@@ -120,14 +134,7 @@ void rate_table(const GyroCalibrateRequest& q, const RawLog& log, GyroCalibrateR
     for (std::size_t i = 0; i < rates.size(); ++i) rates[i] = std::abs(rates[i] + senses[i] * axial);
   }
   r.items = gyro::segment_items(s.segments, rates);
-  if (q.model) {
-    gyro::KnownModulusOptions o;
-    o.model = *q.model;
-    r.scalar = gyro::calibrate_known_moduli(q.file, r.items, r.rests, o);
-    r.model_reason = "requested";
-  } else {
-    r.scalar = gyro::calibrate_known_moduli_auto(q.file, r.items, r.rests, r.model_reason);
-  }
+  fit_items(q, r);
 }
 
 void known_turns(const GyroCalibrateRequest& q, const RawLog& log, GyroCalibrateResult& r) {
@@ -152,14 +159,7 @@ void known_turns(const GyroCalibrateRequest& q, const RawLog& log, GyroCalibrate
     r.items[i].start = log.t[static_cast<std::size_t>(turns[i].begin)];
     r.items[i].stop = log.t[static_cast<std::size_t>(turns[i].end)];
   }
-  if (q.model) {
-    gyro::KnownModulusOptions o;
-    o.model = *q.model;
-    r.scalar = gyro::calibrate_known_moduli(q.file, r.items, r.rests, o);
-    r.model_reason = "requested";
-  } else {
-    r.scalar = gyro::calibrate_known_moduli_auto(q.file, r.items, r.rests, r.model_reason);
-  }
+  fit_items(q, r);
 }
 
 void hand_rotations(const GyroCalibrateRequest& q, const RawLog& log, GyroCalibrateResult& r) {
@@ -185,6 +185,26 @@ void hand_rotations(const GyroCalibrateRequest& q, const RawLog& log, GyroCalibr
   r.offset = r.hand->offset;
 }
 
+// The measured program's criteria, efficiency and the positions to add (paper9's advice as
+// calibrate gives it, on the sphere: the table's axis may point anywhere in the meter's frame).
+void judge_program(GyroCalibrateResult& r) {
+  const Program measured{r.scalar->directions};
+  const ModelKind model = r.scalar->model;
+  r.program = evaluate(model, measured);
+  const int P = model_parameters(model);
+  for (CriterionKind c : kCriteria) {
+    const double v = r.program->value(c);
+    double limit = NAN;
+    if (model == ModelKind::paper9 && has_limit(c))
+      limit = limit_value(c, sphere_region());
+    else if (const auto stated = stated_limit(model, criterion_name(c)))
+      limit = stated->value;
+    r.efficiency.push_back(std::isfinite(limit) && std::isfinite(v) ? efficiency(c, limit, v, P) : NAN);
+  }
+  if (r.program->full_rank() && measured.size() <= 60)
+    r.suggested = augment_program(measured, 3, CriterionKind::D, sphere_region(), model).added;
+}
+
 }  // namespace
 
 bool GyroCalibrateResult::converged() const {
@@ -196,6 +216,7 @@ GyroCalibrateResult calibrate_gyro(const GyroCalibrateRequest& q) {
   GyroCalibrateResult r;
   r.request = q;
   r.method = gyro_method(q);
+  if (r.request.physical_units.empty() && r.method != GyroMethod::rate_table) r.request.physical_units = "rad/s";
   r.warnings = q.warnings;
   const RawLog log = read_raw_log(q.file,
                                   q.format == "csv"    ? LogFormat::csv
@@ -207,6 +228,7 @@ GyroCalibrateResult calibrate_gyro(const GyroCalibrateRequest& q) {
   if (r.method == GyroMethod::known_turns) known_turns(q, log, r);
   if (r.method == GyroMethod::hand_rotations) hand_rotations(q, log, r);
   if (r.scalar) {
+    judge_program(r);
     r.matrix = r.scalar->correction.matrix;
     r.offset = r.scalar->correction.offset;
     r.paper_form = r.scalar->correction;

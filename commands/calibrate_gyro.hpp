@@ -12,6 +12,7 @@
 
 #include "commands/calibrate.hpp"
 #include "commands/json.hpp"
+#include "commands/values.hpp"
 #include "commands/warning.hpp"
 #include "numeric/gyro/hand_rotations.hpp"
 #include "numeric/gyro/known_modulus.hpp"
@@ -28,14 +29,18 @@ struct GyroCalibrateRequest {
   double rate = 0;                  // Hz: row k at k / rate (0: the time column)
   StaticIntervalOptions intervals;  // rests, constant-rate segments (and the accelerometer's poses)
   std::string magnitude;            // rate table: the table's rate (a number), auto, or column:NAME (signed, per row)
-  std::optional<double> turn_angle_deg;  // known turns: each turn's angle
-  std::string accelerometer;             // hand rotations: the accelerometer's log, same rows as the gyro's
-  std::string accelerometer_magnitude;   // its |g| (a number, or auto)
-  std::optional<double> latitude_deg;    // rate table: add the Earth's rate, the table's axis vertical
-  std::optional<ModelKind> model;        // rate table and turns: empty = auto
-  std::string sensor, raw_units, physical_units = "rad/s";
+  std::optional<double> turn_angle_deg;           // known turns: each turn's angle
+  std::string accelerometer;                      // hand rotations: the accelerometer's log, same rows as the gyro's
+  std::string accelerometer_magnitude;            // its |g| (a number, or auto)
+  std::optional<double> latitude_deg;             // rate table: add the Earth's rate, the table's axis vertical
+  std::optional<ModelKind> model;                 // rate table and turns: empty = auto
+  std::string sensor, raw_units, physical_units;  // physical: the --magnitude's unit, else rad/s
   Warnings warnings;
 };
+
+// From calibrate's options with --instrument gyro (UsageError for an accelerometer's option or a
+// contradictory set).
+GyroCalibrateRequest gyro_calibrate_request(const Values& values);
 
 // Which method the options name, and UsageError for a contradictory or incomplete set (one line,
 // naming the options).
@@ -52,6 +57,12 @@ struct GyroCalibrateResult {
   std::vector<gyro::ModulusItem> items;  // the segments or turns, with their known moduli
   std::vector<gyro::LogInterval> rests;
   int motions_skipped = 0;  // turns: motions between rests that are not known turns (face changes)
+  // The segments' or turns' directions judged as a program under the model (Theorem 21: the
+  // accelerometer's criteria), each criterion's efficiency against the sphere's limit, and the three
+  // positions (table axes, signed by the turn) that improve D most.
+  std::optional<ModelEvaluation> program;
+  std::vector<double> efficiency;
+  std::vector<Vec3> suggested;
   // Hand rotations.
   std::optional<gyro::HandRotationCalibration> hand;
   std::optional<CalibrateResult> accelerometer;

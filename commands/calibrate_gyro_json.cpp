@@ -5,6 +5,7 @@
 #include "commands/calibrate_gyro.hpp"
 #include "commands/calibrate_json.hpp"
 #include "commands/tool_info.hpp"
+#include "numeric/criteria/registry.hpp"
 
 namespace scalcal::commands {
 namespace {
@@ -51,6 +52,23 @@ void add_scalar(const GyroCalibrateResult& r, Json& j) {
                          {"residual", c.residuals[i]}});
   }
   j[r.method == GyroMethod::rate_table ? "segments" : "turns"] = items;
+  if (r.program) {
+    Json program{{"positions", r.program->positions},
+                 {"rank", r.program->rank},
+                 {"condition", number_or_null(r.program->condition)}};
+    Json eff = Json::object();
+    std::size_t k = 0;
+    for (CriterionKind cr : kCriteria) {
+      program[std::string(criterion_name(cr))] = number_or_null(r.program->value(cr));
+      eff[std::string(criterion_name(cr))] = number_or_null(k < r.efficiency.size() ? r.efficiency[k] : NAN);
+      ++k;
+    }
+    program["efficiency"] = eff;
+    j["program"] = program;
+    Json suggested = Json::array();
+    for (const Vec3& x : r.suggested) suggested.push_back(triple(x));
+    j["suggested"] = suggested;
+  }
   if (r.method == GyroMethod::known_turns) j["motions_skipped"] = r.motions_skipped;
 }
 

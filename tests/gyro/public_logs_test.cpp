@@ -19,6 +19,7 @@
 #include "numeric/gyro/hand_rotations.hpp"
 #include "numeric/gyro/known_modulus.hpp"
 #include "numeric/gyro/rate_segments.hpp"
+#include "tests/gyro/accelerometer_poses.hpp"
 
 namespace scalcal::gyro {
 namespace {
@@ -50,19 +51,10 @@ void compare_hand(const std::string& log, const std::string& acc_name, const std
   if (acc_file.empty() || gyro_file.empty()) GTEST_SKIP() << gyro_name << " not found";
   const RawLog acc = read_raw_log(acc_file, LogFormat::automatic, rate),
                gyro = read_raw_log(gyro_file, LogFormat::automatic, rate);
-  const IntervalDetection d = detect_static_intervals(acc);
-  std::vector<PositionSamples> data;
-  for (const auto& iv : d.intervals) {
-    PositionSamples p;
-    for (int i = iv.begin; i <= iv.end; ++i) p.samples.push_back(acc.samples[static_cast<std::size_t>(i)]);
-    data.push_back(p);
-  }
-  AnyUnitsOptions ao;
-  ao.magnitude = g;
-  ao.weight_by_samples = false;
-  ao.model = *parse_model(acc_model);
-  const AnyUnitsCalibration a = calibrate_any_units(acc_file, data, ao);
-  const HandRotationCalibration c = calibrate_hand_rotations(gyro, gravity_poses(acc, gyro, d.intervals, a.correction));
+  const testing::AccelerometerPoses ap = testing::accelerometer_poses(acc, gyro, g, acc_model);
+  const AnyUnitsCalibration& a = ap.accelerometer;
+  const HandRotationCalibration c = calibrate_hand_rotations(gyro, ap.poses);
+  const IntervalDetection& d = ap.detection;
   const nlohmann::json ref = reference(log);
   ASSERT_EQ(ref.at("poses").get<int>(), static_cast<int>(d.intervals.size()));
   // The reference's accelerometer frame to ours: the rotation nearest C_ours T_ref^-1.

@@ -4,6 +4,7 @@
 // expected and more is a failure).
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 
 #include <gtest/gtest.h>
 
@@ -14,6 +15,7 @@
 #include "numeric/gyro/hand_rotations.hpp"
 #include "numeric/gyro/known_modulus.hpp"
 #include "numeric/gyro/rate_segments.hpp"
+#include "tests/gyro/accelerometer_poses.hpp"
 
 namespace scalcal::gyro {
 namespace {
@@ -34,6 +36,12 @@ Eigen::Matrix<double, 9, 1> truth_parameters(const GyroTruth& t) {
   return x;
 }
 
+// Seeds per test: a few dozen in CI (seconds); SCALCAL_GYRO_SEEDS=N runs N for a coverage study.
+std::uint64_t seeds(std::uint64_t ci) {
+  const char* n = std::getenv("SCALCAL_GYRO_SEEDS");
+  return n ? std::strtoull(n, nullptr, 10) : ci;
+}
+
 struct Coverage {
   int inside = 0, total = 0;
   double worst = 0;
@@ -45,7 +53,7 @@ struct Coverage {
     worst = std::max(worst, z);
   }
   void report(const char* what) const {
-    std::printf("%s: %d of %d within 3 standard errors (%.1f %%), worst %.2f\n", what, inside, total,
+    std::printf("%s: %d of %d within 3 standard errors (%.2f %%), worst %.2f\n", what, inside, total,
                 100.0 * inside / total, worst);
   }
 };
@@ -54,7 +62,7 @@ TEST(GyroTruth, RateTableSegmentsAndCoverage) {
   const GyroTruth truth = reference_gyro(false);
   const auto want = truth_parameters(truth);
   Coverage cover;
-  for (std::uint64_t seed = 1; seed <= 25; ++seed) {
+  for (std::uint64_t seed = 1; seed <= seeds(25); ++seed) {
     std::vector<TableSegment> plan;
     for (const Vec3& a : icosahedral_axes())
       for (double sense : {1.0, -1.0}) plan.push_back({a, sense * 1.0, 8.0});
@@ -68,15 +76,16 @@ TEST(GyroTruth, RateTableSegmentsAndCoverage) {
     ASSERT_TRUE(c.summary.converged()) << c.summary.message;
     for (int k = 0; k < 9; ++k) cover.add(c.parameters(k) - want(k), c.standard_error(k));
   }
-  cover.report("rate table, paper9, 25 seeds");
-  EXPECT_GE(cover.inside, cover.total - 3);
+  cover.report("rate table, paper9");
+  // 3 sigma misses 0.27 %: allow 1 % of the estimates and at least 3.
+  EXPECT_GE(cover.inside, cover.total - std::max(3, cover.total / 100));
 }
 
 TEST(GyroTruth, KnownTurnsCoverage) {
   const GyroTruth truth = reference_gyro(false);
   const auto want = truth_parameters(truth);
   Coverage cover;
-  for (std::uint64_t seed = 1; seed <= 25; ++seed) {
+  for (std::uint64_t seed = 1; seed <= seeds(25); ++seed) {
     std::vector<KnownTurn> turns;
     for (const Vec3& a : icosahedral_axes())
       for (double sense : {1.0, -1.0}) turns.push_back({a, sense * 2 * M_PI, 4.0});
@@ -89,8 +98,9 @@ TEST(GyroTruth, KnownTurnsCoverage) {
     ASSERT_TRUE(c.summary.converged()) << c.summary.message;
     for (int k = 0; k < 9; ++k) cover.add(c.parameters(k) - want(k), c.standard_error(k));
   }
-  cover.report("known turns, paper9, 25 seeds");
-  EXPECT_GE(cover.inside, cover.total - 3);
+  cover.report("known turns, paper9");
+  // 3 sigma misses 0.27 %: allow 1 % of the estimates and at least 3.
+  EXPECT_GE(cover.inside, cover.total - std::max(3, cover.total / 100));
 }
 
 TEST(GyroTruth, TurnsAboutTheAxesIdentifyAxis6Only) {
@@ -110,7 +120,7 @@ TEST(GyroTruth, TurnsAboutTheAxesIdentifyAxis6Only) {
 
 TEST(GyroTruth, HandRotationsCoverage) {
   Coverage cover;
-  for (std::uint64_t seed = 1; seed <= 12; ++seed) {
+  for (std::uint64_t seed = 1; seed <= seeds(12); ++seed) {
     const GyroTruth truth = reference_gyro(true);
     HandRotationSimulation o;
     o.poses = 25;
@@ -122,20 +132,9 @@ TEST(GyroTruth, HandRotationsCoverage) {
     o.accelerometer_noise = 2;
     const HandRotationLogs logs = simulate_hand_rotations(truth, o, seed);
     // The accelerometer first, as calibrate does: its still poses, its scalar calibration.
-    const IntervalDetection d = detect_static_intervals(logs.accelerometer);
-    ASSERT_EQ(static_cast<int>(d.intervals.size()), o.poses) << "seed " << seed;
-    std::vector<PositionSamples> data;
-    for (const auto& iv : d.intervals) {
-      PositionSamples p;
-      for (int i = iv.begin; i <= iv.end; ++i)
-        p.samples.push_back(logs.accelerometer.samples[static_cast<std::size_t>(i)]);
-      data.push_back(p);
-    }
-    AnyUnitsOptions ao;
-    ao.magnitude = o.gravity;
-    ao.weight_by_samples = false;
-    const AnyUnitsCalibration acc = calibrate_any_units("acc", data, ao);
-    const auto poses = gravity_poses(logs.accelerometer, logs.gyro, d.intervals, acc.correction);
+    const testing::AccelerometerPoses ap = testing::accelerometer_poses(logs.accelerometer, logs.gyro, o.gravity);
+    ASSERT_EQ(static_cast<int>(ap.poses.size()), o.poses) << "seed " << seed;
+    const auto& poses = ap.poses;
     const HandRotationCalibration c = calibrate_hand_rotations(logs.gyro, poses);
     ASSERT_TRUE(c.summary.converged()) << c.summary.message;
     const Mat3 C = truth.correction();
@@ -143,8 +142,9 @@ TEST(GyroTruth, HandRotationsCoverage) {
       for (int b = 0; b < 3; ++b) cover.add(c.matrix(a, b) - C(a, b), c.standard_error(3 * a + b));
     for (int a = 0; a < 3; ++a) cover.add(c.offset(a) - truth.offset(a), c.standard_error(9 + a));
   }
-  cover.report("hand rotations, 12 parameters, 12 seeds");
-  EXPECT_GE(cover.inside, cover.total - 3);
+  cover.report("hand rotations, 12 parameters");
+  // 3 sigma misses 0.27 %: allow 1 % of the estimates and at least 3.
+  EXPECT_GE(cover.inside, cover.total - std::max(3, cover.total / 100));
 }
 
 }  // namespace

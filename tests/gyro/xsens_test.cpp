@@ -18,6 +18,7 @@
 #include "numeric/calibration/static_intervals.hpp"
 #include "numeric/gyro/gravity_poses.hpp"
 #include "numeric/gyro/hand_rotations.hpp"
+#include "tests/gyro/accelerometer_poses.hpp"
 
 namespace scalcal::gyro {
 namespace {
@@ -49,18 +50,9 @@ TEST(Xsens, HandRotationsAgainstImuTk) {
   if (acc_file.empty() || gyro_file.empty()) GTEST_SKIP() << "xsens_gyro.txt is not in data/ nor ../shared/data/";
   const auto t0 = std::chrono::steady_clock::now();
   const RawLog acc = read_raw_log(acc_file), gyro = read_raw_log(gyro_file);
-  const IntervalDetection d = detect_static_intervals(acc);
-  std::vector<PositionSamples> data;
-  for (const auto& iv : d.intervals) {
-    PositionSamples p;
-    for (int i = iv.begin; i <= iv.end; ++i) p.samples.push_back(acc.samples[static_cast<std::size_t>(i)]);
-    data.push_back(p);
-  }
-  AnyUnitsOptions ao;
-  ao.magnitude = 9.81744;
-  ao.weight_by_samples = false;
-  const AnyUnitsCalibration a = calibrate_any_units(acc_file, data, ao);
-  const auto poses = gravity_poses(acc, gyro, d.intervals, a.correction);
+  const testing::AccelerometerPoses ap = testing::accelerometer_poses(acc, gyro, 9.81744);
+  const AnyUnitsCalibration& a = ap.accelerometer;
+  const auto& poses = ap.poses;
   const HandRotationCalibration c = calibrate_hand_rotations(gyro, poses);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   ASSERT_TRUE(c.summary.converged()) << c.summary.message;
