@@ -8,6 +8,7 @@
 #include <Eigen/SVD>
 
 #include "commands/usage_error.hpp"
+#include "numeric/calibration/units.hpp"
 #include "numeric/gyro/gravity_poses.hpp"
 #include "numeric/gyro/gyro_simulation.hpp"
 #include "numeric/io/input_error.hpp"
@@ -63,10 +64,13 @@ namespace {
 // Physical units per rad/s: the Earth's rate, a turn's angle and a hand rotation's matrix are made
 // in rad/s and turned into the calibration's physical unit.
 double per_rad_per_s(const std::string& unit) {
-  if (unit.empty() || unit == "rad/s") return 1;
-  if (unit == "deg/s" || unit == "dps" || unit == "°/s") return 180 / M_PI;
-  throw UsageError("calibrate --instrument gyro: --units PHYSICAL must be rad/s or deg/s for this method, got '" +
-                   unit + "'");
+  if (unit.empty()) return 1;
+  const auto u = parse_unit(unit);
+  if (!u || u->quantity != Quantity::angular_rate)
+    throw UsageError(
+        "calibrate --instrument gyro: --units PHYSICAL must be a unit of angular rate (rad/s, deg/s), got '" + unit +
+        "'");
+  return 1 / u->base;
 }
 
 Vec3 rotation_vector(const Mat3& M) {
@@ -237,6 +241,25 @@ GyroCalibrateResult calibrate_gyro(const GyroCalibrateRequest& q) {
     if (r.paper_form) r.rotation = rotation_vector(r.matrix * r.paper_form->matrix.inverse());
   }
   if (!r.matrix.allFinite() || !r.offset.allFinite()) throw InputError(q.file, 0, "the fit is not finite");
+  // The white noise of one sample: the rests' median scatter per axis (raw units) through the matrix.
+  std::vector<double> sd;
+  if (r.hand) {
+    for (const auto& p : r.poses) {
+      Vec3 s = Vec3::Zero(), s2 = Vec3::Zero();
+      int n = 0;
+      for (int i = p.begin; i <= p.end; ++i)
+        if (log.finite(i))
+          s += log.samples[static_cast<std::size_t>(i)], s2 += log.samples[static_cast<std::size_t>(i)].cwiseAbs2(),
+              ++n;
+      if (n > 1) sd.push_back(std::sqrt(std::max(0.0, ((s2 - s.cwiseAbs2() / n) / (n - 1)).mean())));
+    }
+  } else {
+    for (const auto& x : r.rests) sd.push_back(x.sd.norm() / std::sqrt(3.0));
+  }
+  if (!sd.empty()) {
+    std::nth_element(sd.begin(), sd.begin() + static_cast<std::ptrdiff_t>(sd.size() / 2), sd.end());
+    r.noise = sd[sd.size() / 2] * r.matrix.norm() / std::sqrt(3.0);
+  }
   return r;
 }
 

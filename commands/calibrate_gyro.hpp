@@ -73,6 +73,7 @@ struct GyroCalibrateResult {
   Vec3 offset = Vec3::Zero();
   std::optional<FullCorrection> paper_form;
   Vec3 rotation = Vec3::Zero();  // rad, rotation vector of matrix * paper_form.matrix^-1 (hand rotations)
+  double noise = NAN;            // one sample's white noise in physical units (the rests' scatter through the matrix)
   Warnings warnings;
 
   bool converged() const;

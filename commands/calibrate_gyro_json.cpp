@@ -4,7 +4,9 @@
 
 #include "commands/calibrate_gyro.hpp"
 #include "commands/calibrate_json.hpp"
+#include "commands/calibration_file.hpp"
 #include "commands/tool_info.hpp"
+#include "numeric/calibration/units.hpp"
 #include "numeric/criteria/registry.hpp"
 
 namespace scalcal::commands {
@@ -14,23 +16,42 @@ Json number_or_null(double v) { return std::isfinite(v) ? Json(v) : Json(); }
 Json triple(const Vec3& v) { return Json{number_or_null(v(0)), number_or_null(v(1)), number_or_null(v(2))}; }
 Json rows_of(const Mat3& m) { return Json{triple(m.row(0)), triple(m.row(1)), triple(m.row(2))}; }
 
-const char* kNames[9] = {"bias_x", "bias_y",     "bias_z",     "gain_x",    "gain_y",
-                         "gain_z", "nonorth_xy", "nonorth_yz", "nonorth_zx"};
-
-// Rate table and turns: the meter's nine in the paper's form (gain = raw units per physical unit).
+// Rate table and turns: the model's parameters by the model's names, as calibrate writes them and
+// the calibration-file reader checks them: bias in raw units, scale deviation against the nominal
+// gain (1 when the raw units are the physical ones within 10 %, else the gains' geometric mean),
+// non-orthogonality in rad; the gains themselves (raw units per physical unit) beside them.
 void add_scalar(const GyroCalibrateResult& r, Json& j) {
   const gyro::KnownModulusCalibration& c = *r.scalar;
-  Json p = Json::object(), se = Json::object(), pred = Json::object();
-  for (int k = 0; k < 9; ++k) {
-    p[kNames[k]] = number_or_null(c.parameters(k));
-    se[kNames[k]] = number_or_null(c.standard_error(k));
-    pred[kNames[k]] = number_or_null(c.predicted_std(k));
+  const Vec3 k = c.parameters.segment<3>(3);
+  const double geometric = std::cbrt(k(0) * k(1) * k(2));
+  const double nominal = std::abs(geometric - 1) < 0.1 ? 1.0 : geometric;
+  Json p = Json::object(), se = Json::object(), pred = Json::object(), gain = Json::array(), gain_se = Json::array();
+  const auto names = visit_model(c.model, [](auto m) {
+    std::vector<std::string> n;
+    for (const auto& x : decltype(m)::parameter_names) n.emplace_back(x);
+    return n;
+  });
+  for (std::size_t q = 0; q < names.size(); ++q) {
+    const std::string name(names[q]);
+    // bias_* are entries 0-2, scale_* 3-5 (as gains), nonorth_* 6-8 of the estimator's nine.
+    const int at = name.rfind("bias", 0) == 0    ? name.back() - 'x'
+                   : name.rfind("scale", 0) == 0 ? 3 + (name.back() - 'x')
+                                                 : 6 + static_cast<int>(q % 3);
+    const bool scale = at >= 3 && at < 6;
+    p[name] = number_or_null(scale ? c.parameters(at) / nominal - 1 : c.parameters(at));
+    se[name] = number_or_null(scale ? c.standard_error(at) / nominal : c.standard_error(at));
+    pred[name] = number_or_null(scale ? c.predicted_std(at) / nominal : c.predicted_std(at));
   }
-  j["model"] = std::string(model_name(c.model));
-  j["model_reason"] = r.model_reason;
+  for (int a = 0; a < 3; ++a)
+    gain.push_back(number_or_null(k(a))), gain_se.push_back(number_or_null(c.standard_error(3 + a)));
   j["parameters"] = p;
   j["standard_error"] = se;
   j["predicted_std"] = pred;
+  j["nominal_gain"] = nominal;
+  j["gain"] = gain;
+  j["gain_std"] = gain_se;
+  j["model"] = std::string(model_name(c.model));
+  j["model_reason"] = r.model_reason;
   j["scale_deviation"] = triple(c.meter.scale_deviation);
   j["nonorthogonality"] = triple(c.correction.nonorthogonality);
   j["item_variance_scale"] = c.item_scale;
@@ -112,11 +133,19 @@ void add_hand(const GyroCalibrateResult& r, Json& j) {
 
 Json gyro_calibration_file_json(const GyroCalibrateResult& r) {
   const auto label = [](const std::string& s) { return s.empty() ? Json() : Json(s); };
+  CalibrationUnits units;
+  bool counts = false;
+  if (!r.request.raw_units.empty()) {
+    units.raw = parse_unit(r.request.raw_units);
+    counts = !units.raw;
+  }
+  if (!r.request.physical_units.empty()) units.physical = parse_unit(r.request.physical_units);
+  units.unit_modulus = r.request.magnitude == "auto";
   Json j{{"format_version", kCalibrationFormatVersion},
          {"created", utc_now_iso8601()},
          {"tool", Json{{"name", "scalcal"}, {"version", tool_version()}, {"commit", tool_commit()}}},
          {"sensor", label(r.request.sensor)},
-         {"units", Json{{"raw", label(r.request.raw_units)}, {"physical", label(r.request.physical_units)}}},
+         {"units", units_json(units, counts)},
          {"instrument", "gyro"},
          {"method", gyro_method_name(r.method)},
          {"offset", triple(r.offset)},
@@ -124,7 +153,11 @@ Json gyro_calibration_file_json(const GyroCalibrateResult& r) {
          {"linear", true},
          {"rows", r.rows},
          {"window", r.detection.window},
-         {"noise_floor", number_or_null(r.detection.still_variance)}};
+         {"noise_floor", number_or_null(r.detection.still_variance)},
+         {"sample_rate", r.detection.sample_period > 0 ? Json(1 / r.detection.sample_period) : Json()},
+         {"noise", number_or_null(r.noise)}};
+  if (r.scalar && !r.request.magnitude.empty() && r.request.magnitude.rfind("column:", 0) != 0)
+    j["magnitude"] = r.request.magnitude == "auto" ? Json("auto") : Json(std::stod(r.request.magnitude));
   if (r.paper_form) j["bias"] = triple(r.paper_form->offset);
   Json rests = Json::array();
   for (const auto& x : r.rests)

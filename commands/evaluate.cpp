@@ -19,7 +19,7 @@ const CommandTable& evaluate_table() {
       "evaluate",
       "the criteria (" + criterion_names_text() + "), the RMS errors theta and K of a catalogue program or CSV file",
       10,
-      {program_argument(), model_option(), region_option(), instrument_option(), tolerance_option(),
+      {program_argument(), model_option(), region_option(), design_instrument_option(), tolerance_option(),
        out_option("also write the program as CSV x,y,z,alpha1_deg,alpha2_deg (and its region line)"),
        json_option("print one JSON object (the criteria, the program and K)")}};
   return table;

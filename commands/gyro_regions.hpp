@@ -10,7 +10,7 @@
 namespace scalcal::commands {
 
 // The --instrument option (accel, gyro), shared by limits and optimize.
-Option instrument_option();
+Option design_instrument_option();
 
 // The specs of R u (-R): each cap and band with its axis reversed beside it; sphere and faces are
 // their own antipodes. UsageError for candidates:FILE (list both directions of each candidate in the

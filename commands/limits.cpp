@@ -61,7 +61,7 @@ const CommandTable& limits_table() {
       "N -> infinity limits of the normalised " + criterion_names_text() +
           " criteria: exact on the sphere, certified bounds on a region",
       61,
-      {model_option(), region_option(), instrument_option(),
+      {model_option(), region_option(), design_instrument_option(),
        out_option("write the limits as CSV, one row per criterion: criterion,limit,exact,lower_bound"),
        json_option("print one JSON object keyed by criterion")}};
   return table;

@@ -69,7 +69,7 @@ const CommandTable& optimize_table() {
                                     "start 0 of the multistart is this program (a catalogue name, a family member "
                                     "such as jig:cuboctahedron, or a CSV file); N is its size",
                                     "catalogue name or file path")),
-       criterion_option(), model_option(), region_option(), instrument_option(),
+       criterion_option(), model_option(), region_option(), design_instrument_option(),
        named(number_option("--margin", 0, 10,
                            "design every position this far inside the region's boundaries (the efficiency stays "
                            "judged against the region itself)",

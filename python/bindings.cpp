@@ -8,6 +8,7 @@
 
 #include "commands/augment.hpp"
 #include "commands/calibrate.hpp"
+#include "commands/calibrate_gyro.hpp"
 #include "commands/calibrate_json.hpp"
 #include "commands/catalogue.hpp"
 #include "commands/certify.hpp"
@@ -76,6 +77,10 @@ Binding sweep_binding() {
 // file's object (the header, units and instrument included), which saves to and loads from cal.json.
 Binding calibrate_binding() {
   return {&commands::calibrate_table(), [](const Values& v, const Progress& p) {
+            if (v.text("--instrument") == "gyro") {
+              const auto g = commands::calibrate_gyro(commands::gyro_calibrate_request(v));
+              return Output{commands::gyro_calibration_file_json(g), g.warnings, g.status()};
+            }
             const auto r = commands::calibrate(commands::calibrate_request(v), p);
             return Output{commands::calibration_file_json(r), r.warnings, r.status()};
           }};
