@@ -61,11 +61,12 @@ const CommandTable& calibrate_table() {
       "time_s or timestamp) and ix,iy,iz, or text t ix iy iz",
       "file path", kRequired);
   measurements.takes_columns = true;
-  Option magnitude = text_option("--magnitude", "M|auto",
-                                 "modulus |I| of the measured vector, or auto for a field of unknown strength; with "
-                                 "--instrument gyro the rate table's rate, auto, or column:NAME (the log's signed "
-                                 "rate per row)",
-                                 "physical units", "");
+  Option magnitude =
+      text_option("--magnitude", "M|auto",
+                  "modulus |I| of the measured vector, or auto for a field of unknown strength; for a "
+                  "gyro (--instrument gyro) the rate table's rate, auto, or column:NAME (the log's signed "
+                  "rate per row)",
+                  "physical units", "");
   magnitude.fallback_text = "required, unless --instrument gyro with --turn-angle or --accelerometer";
   magnitude.why_bad = [](const std::string& m) { return m.rfind("column:", 0) == 0 ? "" : magnitude_problem(m); };
   Option model = choice_option("--model", model_choices(),
@@ -132,17 +133,17 @@ const CommandTable& calibrate_table() {
                    "m/s^2, 1 is g, 50 is uT)"),
        instrument_option(),
        number_option("--turn-angle", 0, 36000,
-                     "--instrument gyro, known turns: each turn's angle (the largest motions between rests are the "
+                     "known turns (--instrument gyro): each turn's angle (the largest motions between rests are the "
                      "turns)",
                      "degrees", ""),
        text_option("--accelerometer", "ACC_LOG",
-                   "--instrument gyro, hand rotations: the log of an accelerometer moved with the gyro (the same "
+                   "hand rotations (--instrument gyro): the log of an accelerometer moved with the gyro (the same "
                    "rows); it is calibrated first and the gyro's matrix maps into its corrected frame",
                    "file path"),
-       text_option("--accelerometer-magnitude", "G|auto", "--instrument gyro, hand rotations: the accelerometer's |g|",
+       text_option("--accelerometer-magnitude", "G|auto", "hand rotations (--instrument gyro): the accelerometer's |g|",
                    "the accelerometer's units"),
        number_option("--latitude", -90, 90,
-                     "--instrument gyro, rate table: add the Earth's rate to each segment's (the table's axis "
+                     "a rate table (--instrument gyro): add the Earth's rate to each segment's (the table's axis "
                      "vertical; needs --magnitude column:NAME for each turn's sense)",
                      "degrees", ""),
        out_option("also write the calibration (the JSON object, with \"converged\") to FILE, for `scalcal correct`",
@@ -187,8 +188,8 @@ CalibrateRequest calibrate_request(const Values& v) {
   if (v.given("--instrument")) q.instrument = parse_instrument(v.text("--instrument"));
   if (q.instrument == Instrument::gyro)
     throw UsageError(
-        "--instrument gyro: a gyroscope's calibration (rate tables, known turns, hand rotations) is not in "
-        "this build yet");
+        "--instrument gyro: a gyroscope's calibration is calibrate_gyro's (commands/calibrate_gyro.hpp), not this "
+        "request's");
   read_units(v, q);
   if (v.text("--model") != "auto") q.model = *parse_model(v.text("--model"));
   check_calibrate_request(q);
