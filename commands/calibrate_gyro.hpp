@@ -57,7 +57,7 @@ struct GyroCalibrateResult {
   std::vector<gyro::ModulusItem> items;  // the segments or turns, with their known moduli
   std::vector<gyro::LogInterval> rests;
   int motions_skipped = 0;  // turns: motions between rests that are not known turns (face changes)
-  // The segments' or turns' directions judged as a program under the model (Theorem 21: the
+  // The segments' or turns' directions judged as a program under the model (Theorem 24: the
   // accelerometer's criteria), each criterion's efficiency against the sphere's limit, and the three
   // positions (table axes, signed by the turn) that improve D most.
   std::optional<ModelEvaluation> program;

@@ -12,7 +12,7 @@ namespace scalcal::commands {
 Option design_instrument_option() {
   return choice_option("--instrument", {"accel", "gyro"},
                        "the meter: accel (or a magnetometer), or gyro on a single-axis rate table, whose reversed "
-                       "turns add each reachable direction's antipode (Theorem 21)",
+                       "turns add each reachable direction's antipode (Theorem 24)",
                        "accel");
 }
 

@@ -1,6 +1,6 @@
 // --instrument gyro on the design commands (limits, optimize): a bench that reaches the table-axis
 // directions R on a rate table measures R and -R, a turn reversed being the antipodal position
-// (proofs/gyro_rate_table.md, Theorem 21), so the accelerometer's region R becomes R u (-R).
+// (proofs/gyro_rate_table.md, Theorem 24), so the accelerometer's region R becomes R u (-R).
 #pragma once
 #include <string>
 #include <vector>

@@ -1,7 +1,7 @@
 // rate:DEG:RPM:SECONDS[:flip]: a single-axis rate table (vertical axis) carrying the meter on a
 // tilting fixture (tilt_table.hpp: tilt up to DEG either way, azimuth on the fixture's turntable,
 // :flip also mounts it upside down), turning at RPM revolutions per minute for SECONDS per segment.
-// A gyro's position is the table's axis in the meter's frame signed by the turn (Theorem 21 of
+// A gyro's position is the table's axis in the meter's frame signed by the turn (Theorem 24 of
 // proofs/gyro_rate_table.md), so each mounting measures its axis turning counterclockwise seen from
 // above (rate +RPM) and the antipode turning clockwise (rate -RPM), without a remount: the axis
 // rate_rpm of a setting is the turn's rate and direction, and its `seconds` how long the segment

@@ -1,5 +1,5 @@
 // Scalar calibration of a gyro from items of known modulus: a rate table's segment (its mean output,
-// the table's rate: Theorem 21 of proofs/gyro_rate_table.md, the accelerometer's model with the
+// the table's rate: Theorem 24 of proofs/gyro_rate_table.md, the accelerometer's model with the
 // table's axis as the position) and a known turn (its integrated output over the turn, divided by
 // the turn's duration, whose modulus is the angle over the duration: the bias enters through the
 // duration). The meter is eq. (2)'s, raw = o + diag(k) Phi(gamma) Omega, fitted in the paper's

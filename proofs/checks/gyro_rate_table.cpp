@@ -1,4 +1,4 @@
-// Gyros on a single-axis rate table (proofs/gyro_rate_table.md, Theorem 21), checked with GiNaC
+// Gyros on a single-axis rate table (proofs/gyro_rate_table.md, Theorem 24), checked with GiNaC
 // symbols only (independent of numeric/): the gradient of the gyro's modulus residual at X = 0 is
 // h(eta) whatever the rate; a reversed turn is S h; per-segment rates scale the quadratic part; the
 // symmetrised information is block diagonal; the Earth's rate over whole and partial turns and as a

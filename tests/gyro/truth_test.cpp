@@ -20,7 +20,7 @@
 namespace scalcal::gyro {
 namespace {
 
-// The icosahedron's six axes, each turned both ways: Theorem 21's D-optimal rate-table program.
+// The icosahedron's six axes, each turned both ways: Theorem 24's D-optimal rate-table program.
 std::vector<Vec3> icosahedral_axes() {
   const double p = (1 + std::sqrt(5.0)) / 2;
   std::vector<Vec3> v = {{0, 1, p}, {0, 1, -p}, {1, p, 0}, {1, -p, 0}, {p, 0, 1}, {-p, 0, 1}};
