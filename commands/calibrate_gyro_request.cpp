@@ -1,5 +1,6 @@
 // calibrate --instrument gyro's options as a GyroCalibrateRequest (calibrate_gyro.hpp): the log's
 // options are the accelerometer's; --magnitude, --turn-angle or --accelerometer name the method.
+#include "commands/calibrate.hpp"
 #include "commands/calibrate_gyro.hpp"
 #include "commands/usage_error.hpp"
 
@@ -8,12 +9,7 @@ namespace scalcal::commands {
 GyroCalibrateRequest gyro_calibrate_request(const Values& v) {
   GyroCalibrateRequest q;
   q.file = v.text("--measurements");
-  q.format = v.text("--format");
-  if (v.given("--rate")) q.rate = v.number("--rate");
-  if (v.given("--still")) q.intervals.still_seconds = v.number("--still");
-  q.intervals.window_seconds = v.number("--window");
-  q.intervals.threshold_factor = v.number("--threshold-factor");
-  q.intervals.min_seconds = v.number("--min-interval");
+  read_log_options(v, q.format, q.rate, q.intervals);
   if (v.given("--magnitude")) q.magnitude = v.text("--magnitude");
   if (v.given("--turn-angle")) q.turn_angle_deg = v.number("--turn-angle");
   q.accelerometer = v.text("--accelerometer");

@@ -152,6 +152,15 @@ const CommandTable& calibrate_table() {
   return table;
 }
 
+void read_log_options(const Values& v, std::string& format, double& rate, StaticIntervalOptions& intervals) {
+  format = v.text("--format");
+  if (v.given("--rate")) rate = v.number("--rate");
+  if (v.given("--still")) intervals.still_seconds = v.number("--still");
+  intervals.window_seconds = v.number("--window");
+  intervals.threshold_factor = v.number("--threshold-factor");
+  intervals.min_seconds = v.number("--min-interval");
+}
+
 CalibrateRequest calibrate_request(const Values& v) {
   CalibrateRequest q;
   q.file = v.text("--measurements");
@@ -166,12 +175,7 @@ CalibrateRequest calibrate_request(const Values& v) {
   if (q.magnitude.rfind("column:", 0) == 0)
     throw UsageError("--magnitude column:NAME is a rate table's (--instrument gyro)");
   q.modulus = v.text("--modulus") == "projection" ? Modulus::projection : Modulus::norm;
-  q.format = v.text("--format");
-  if (v.given("--rate")) q.rate = v.number("--rate");
-  if (v.given("--still")) q.intervals.still_seconds = v.number("--still");
-  q.intervals.window_seconds = v.number("--window");
-  q.intervals.threshold_factor = v.number("--threshold-factor");
-  q.intervals.min_seconds = v.number("--min-interval");
+  read_log_options(v, q.format, q.rate, q.intervals);
   q.intervals_given =
       v.given("--window") || v.given("--threshold-factor") || v.given("--min-interval") || v.given("--still");
   q.weights = v.text("--weights");

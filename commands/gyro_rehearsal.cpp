@@ -77,6 +77,12 @@ GyroRehearsalResult rehearse_gyro(const GyroRehearsalRequest& q) {
     r.log.log = logs.gyro;
     r.accelerometer_log = logs.accelerometer;
   }
+  // Every number written is finite (as the accelerometer's rehearsal checks): a rate near the largest
+  // double overflows once the gain and noise are applied.
+  for (const Vec3& s : r.log.log.samples)
+    if (!s.allFinite())
+      throw UsageError("--magnitude " + shortest_text(q.magnitude) +
+                       ": the gyro's outputs overflow double precision; give the rate in smaller units");
   return r;
 }
 

@@ -100,6 +100,11 @@ const CommandTable& simulate_table() {
       "--json's keys and units)");
   truth.name = "--truth";
   truth.cli_only = false;
+  Option accelerometer_log = out_option(  // an output: another output's file is refused (check_distinct_outputs)
+      "rehearsal with --instrument gyro: hand rotations; write the accelerometer's log (same rows as --log) here",
+      "FILE");
+  accelerometer_log.name = "--accelerometer";
+  accelerometer_log.cli_only = false;
   static const CommandTable table{
       "simulate",
       "Monte-Carlo calibration of simulated meters (empirical covariance against sigma^2 K, bias, bench errors), or "
@@ -158,10 +163,7 @@ const CommandTable& simulate_table() {
                                "rehearsal with --instrument gyro: known turns of this angle about each position "
                                "instead of a rate table",
                                "degrees", "")),
-       rehearsal(text_option("--accelerometer", "FILE",
-                             "rehearsal with --instrument gyro: hand rotations; write the accelerometer's log "
-                             "(same rows as --log) here",
-                             "file path")),
+       rehearsal(accelerometer_log),
        rehearsal(number_option("--latitude", -90, 90,
                                "rehearsal with --instrument gyro on a rate table: add the Earth's rate (the table's "
                                "axis vertical)",
@@ -197,7 +199,11 @@ void read_gyro_rehearsal(const Values& v, SimulateRequest& q) {
   g.seed = static_cast<std::uint64_t>(v.integer("--seed"));
   if (g.noise >= kNoiseRefuseAbove)
     throw UsageError("option --noise: must be below 1 |I| (noise as large as the measured vector)");
-  if (g.rate_hz * (2 * g.dwell_s + 4) * g.program.size() > 2e7)
+  check_rehearsal_rate(g.rate_hz);
+  // Seconds per position at most: a rest, the spin-up and stop (or a hand's move) and the segment, and a known
+  // turn's own duration (a quarter turn a second, gyro_rehearsal.cpp).
+  const double turn_s = g.method == "known_turns" ? std::abs(g.turn_angle_deg) / 90 : 0;
+  if (g.rate_hz * (2 * g.dwell_s + 4 + turn_s) * static_cast<double>(g.program.size()) > kMaxRehearsalRows)
     throw UsageError("--rate x --dwell x positions asks for more than 2e7 rows");
   q.gyro_rehearsal = std::move(g);
 }

@@ -176,6 +176,29 @@ def test_calibrate_raw_log(tmp_path):
     assert len(r["intervals"]) >= 9
 
 
+def test_calibrate_gyro(tmp_path):
+    # calibrate --instrument gyro: a rate-table rehearsal and IMU-TK's Xsens pair (hand rotations), the
+    # file's object as the CLI writes it.
+    log = tmp_path / "table.csv"
+    cli("simulate", "--instrument", "gyro", "--program", "dodecahedral-12", "--magnitude", "3.14159", "--noise",
+        "1e-3", "--dwell", "4", "--log", str(log))
+    skip = ("seconds", "created")
+    r = scalcal.calibrate(instrument="gyro", measurements=str(log), magnitude=3.14159)
+    same(r, cli_calibration(tmp_path, "--instrument", "gyro", "--measurements", str(log), "--magnitude", "3.14159"),
+         skip)
+    assert r["instrument"] == "gyro" and r["method"] == "rate_table" and len(r["segments"]) == 12
+    gyro, acc = os.path.join(DATA, "xsens_gyro.txt"), os.path.join(DATA, "xsens_acc.txt")
+    r = scalcal.calibrate(instrument="gyro", measurements=gyro, accelerometer=acc, accelerometer_magnitude=9.81744)
+    want = cli_calibration(tmp_path, "--instrument", "gyro", "--measurements", gyro, "--accelerometer", acc,
+                           "--accelerometer-magnitude", "9.81744")
+
+    def undated(c):  # the accelerometer's calibration beside the gyro's has its own run time
+        return dict(c, accelerometer={k: v for k, v in c["accelerometer"].items() if k != "created"})
+
+    same(undated(r), undated(want), skip)
+    assert r["method"] == "hand_rotations" and r["accelerometer"]["instrument"] == "accel"
+
+
 def test_errors_carry_the_cli_message(tmp_path):
     planar = random_program(12, seed=1)
     planar[:, 2] = 0
