@@ -176,6 +176,25 @@ def test_calibrate_raw_log(tmp_path):
     assert len(r["intervals"]) >= 9
 
 
+def test_simulate_gyro(tmp_path):
+    # simulate --instrument gyro: known turns, and hand rotations with the accelerometer's log; the same
+    # files as the CLI's and its --json (the truth).
+    for method in (["--turn-angle", "360"], ["--accelerometer"]):
+        files = {}
+        for who in ("py", "cli"):
+            files[who] = [tmp_path / f"{who}_{name}" for name in ("log.csv", "truth.json", "acc.csv")]
+        args = ["--instrument", "gyro", "--program", "dodecahedral-12", "--noise", "1e-3", "--dwell", "2"]
+        cli_args = args + method + ([str(files["cli"][2])] if method == ["--accelerometer"] else [])
+        want = cli_json("simulate", *cli_args, "--log", str(files["cli"][0]), "--truth", str(files["cli"][1]))
+        kw = {"turn_angle": 360} if method[0] == "--turn-angle" else {"accelerometer": str(files["py"][2])}
+        got = scalcal.simulate(instrument="gyro", program="dodecahedral-12", noise=1e-3, dwell=2,
+                               log=str(files["py"][0]), truth=str(files["py"][1]), **kw)
+        same(got, want)
+        assert json.loads(files["py"][1].read_text()) == json.loads(files["cli"][1].read_text())
+        for k in (0, 2) if method == ["--accelerometer"] else (0,):  # the logs, to the byte
+            assert files["py"][k].read_bytes() == files["cli"][k].read_bytes(), files["py"][k].name
+
+
 def test_calibrate_gyro(tmp_path):
     # calibrate --instrument gyro: a rate-table rehearsal and IMU-TK's Xsens pair (hand rotations), the
     # file's object as the CLI writes it.
