@@ -155,6 +155,9 @@ CalibrationInput calibration_input(RawLog log, const CalibrateRequest& request);
 // [--out FILE] [--json]
 const CommandTable& calibrate_table();
 CalibrateRequest calibrate_request(const Values& values);
+// The raw log's options (--format, --rate, --still, --window, --threshold-factor, --min-interval), read
+// alike for an accelerometer's log and a gyro's (calibrate_gyro_request).
+void read_log_options(const Values& values, std::string& format, double& rate, StaticIntervalOptions& intervals);
 
 // UsageError: an explicit model the layout cannot carry (naming the parameters and the model that
 // would work). InputError: data that cannot be calibrated, or a fit that is not finite.

@@ -61,10 +61,14 @@ const CommandTable& calibrate_table() {
       "time_s or timestamp) and ix,iy,iz, or text t ix iy iz",
       "file path", kRequired);
   measurements.takes_columns = true;
-  Option magnitude = text_option("--magnitude", "M|auto",
-                                 "modulus |I| of the measured vector, or auto for a field of unknown strength",
-                                 "physical units", kRequired);
-  magnitude.why_bad = magnitude_problem;
+  Option magnitude =
+      text_option("--magnitude", "M|auto",
+                  "modulus |I| of the measured vector, or auto for a field of unknown strength; for a "
+                  "gyro (--instrument gyro) the rate table's rate, auto, or column:NAME (the log's signed "
+                  "rate per row)",
+                  "physical units", "");
+  magnitude.fallback_text = "required, unless --instrument gyro with --turn-angle or --accelerometer";
+  magnitude.why_bad = [](const std::string& m) { return m.rfind("column:", 0) == 0 ? "" : magnitude_problem(m); };
   Option model = choice_option("--model", model_choices(),
                                "the calibration model: auto (the richest of paper9, axis6, bias3 that the positions "
                                "identify), or one of the registered models",
@@ -128,24 +132,50 @@ const CommandTable& calibrate_table() {
                    "calibration file and the exports (default: from --magnitude where the Earth fixes them: 9.81 is "
                    "m/s^2, 1 is g, 50 is uT)"),
        instrument_option(),
+       number_option("--turn-angle", 0, 36000,
+                     "known turns (--instrument gyro): each turn's angle (the largest motions between rests are the "
+                     "turns)",
+                     "degrees", ""),
+       text_option("--accelerometer", "ACC_LOG",
+                   "hand rotations (--instrument gyro): the log of an accelerometer moved with the gyro (the same "
+                   "rows); it is calibrated first and the gyro's matrix maps into its corrected frame",
+                   "file path"),
+       text_option("--accelerometer-magnitude", "G|auto", "hand rotations (--instrument gyro): the accelerometer's |g|",
+                   "the accelerometer's units"),
+       number_option("--latitude", -90, 90,
+                     "a rate table (--instrument gyro): add the Earth's rate to each segment's (the table's axis "
+                     "vertical; needs --magnitude column:NAME for each turn's sense)",
+                     "degrees", ""),
        out_option("also write the calibration (the JSON object, with \"converged\") to FILE, for `scalcal correct`",
                   "CAL.json"),
        json_option("print one JSON object")}};
   return table;
 }
 
+void read_log_options(const Values& v, std::string& format, double& rate, StaticIntervalOptions& intervals) {
+  format = v.text("--format");
+  if (v.given("--rate")) rate = v.number("--rate");
+  if (v.given("--still")) intervals.still_seconds = v.number("--still");
+  intervals.window_seconds = v.number("--window");
+  intervals.threshold_factor = v.number("--threshold-factor");
+  intervals.min_seconds = v.number("--min-interval");
+}
+
 CalibrateRequest calibrate_request(const Values& v) {
   CalibrateRequest q;
   q.file = v.text("--measurements");
   if (const auto it = v.tables.find("--measurements"); it != v.tables.end()) q.table = it->second;
+  if (!v.given("--magnitude"))
+    throw UsageError(
+        "--magnitude M|auto is required (a gyro's --instrument gyro takes --turn-angle or "
+        "--accelerometer instead)");
+  for (const char* o : {"--turn-angle", "--accelerometer", "--accelerometer-magnitude", "--latitude"})
+    if (v.given(o)) throw UsageError(std::string(o) + " belongs to --instrument gyro");
   q.magnitude = v.text("--magnitude");
+  if (q.magnitude.rfind("column:", 0) == 0)
+    throw UsageError("--magnitude column:NAME is a rate table's (--instrument gyro)");
   q.modulus = v.text("--modulus") == "projection" ? Modulus::projection : Modulus::norm;
-  q.format = v.text("--format");
-  if (v.given("--rate")) q.rate = v.number("--rate");
-  if (v.given("--still")) q.intervals.still_seconds = v.number("--still");
-  q.intervals.window_seconds = v.number("--window");
-  q.intervals.threshold_factor = v.number("--threshold-factor");
-  q.intervals.min_seconds = v.number("--min-interval");
+  read_log_options(v, q.format, q.rate, q.intervals);
   q.intervals_given =
       v.given("--window") || v.given("--threshold-factor") || v.given("--min-interval") || v.given("--still");
   q.weights = v.text("--weights");
@@ -162,8 +192,8 @@ CalibrateRequest calibrate_request(const Values& v) {
   if (v.given("--instrument")) q.instrument = parse_instrument(v.text("--instrument"));
   if (q.instrument == Instrument::gyro)
     throw UsageError(
-        "--instrument gyro: a gyroscope's calibration (rate tables, known turns, hand rotations) is not in "
-        "this build yet");
+        "--instrument gyro: a gyroscope's calibration is calibrate_gyro's (commands/calibrate_gyro.hpp), not this "
+        "request's");
   read_units(v, q);
   if (v.text("--model") != "auto") q.model = *parse_model(v.text("--model"));
   check_calibrate_request(q);

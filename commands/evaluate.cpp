@@ -5,6 +5,7 @@
 
 #include "commands/common_options.hpp"
 #include "commands/evaluation_json.hpp"
+#include "commands/gyro_regions.hpp"
 #include "commands/region_request.hpp"
 #include "commands/usage_error.hpp"
 #include "numeric/criteria/identifiability.hpp"
@@ -18,7 +19,7 @@ const CommandTable& evaluate_table() {
       "evaluate",
       "the criteria (" + criterion_names_text() + "), the RMS errors theta and K of a catalogue program or CSV file",
       10,
-      {program_argument(), model_option(), region_option(), tolerance_option(),
+      {program_argument(), model_option(), region_option(), design_instrument_option(), tolerance_option(),
        out_option("also write the program as CSV x,y,z,alpha1_deg,alpha2_deg (and its region line)"),
        json_option("print one JSON object (the criteria, the program and K)")}};
   return table;
@@ -29,7 +30,10 @@ EvaluateRequest evaluate_request(const Values& v) {
   q.name = v.text("PROGRAM");
   q.program = program_of(v);
   q.model = model_of(v);
+  // --instrument gyro reverses turns on the regions given here; a program file's own region line
+  // (optimize --instrument gyro writes it) holds both directions already.
   q.regions = v.program ? v.list("--region") : regions_for(v.list("--region"), q.name, q.warnings);
+  if (v.given("--region")) q.regions = instrument_regions(v, q.regions);
   q.tolerance_deg = v.number("--tolerance");
   return q;
 }

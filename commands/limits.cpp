@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "commands/gyro_regions.hpp"
 #include "commands/region_request.hpp"
 #include "commands/usage_error.hpp"
 #include "numeric/region/cap_limits.hpp"
@@ -60,13 +61,13 @@ const CommandTable& limits_table() {
       "N -> infinity limits of the normalised " + criterion_names_text() +
           " criteria: exact on the sphere, certified bounds on a region",
       61,
-      {model_option(), region_option(),
+      {model_option(), region_option(), design_instrument_option(),
        out_option("write the limits as CSV, one row per criterion: criterion,limit,exact,lower_bound"),
        json_option("print one JSON object keyed by criterion")}};
   return table;
 }
 
-LimitsRequest limits_request(const Values& v) { return {model_of(v), v.list("--region")}; }
+LimitsRequest limits_request(const Values& v) { return {model_of(v), instrument_regions(v, v.list("--region"))}; }
 
 LimitsResult limits(const LimitsRequest& q, const Progress& progress) {
   const bool sphere = is_sphere(q.regions);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "commands/gyro_regions.hpp"
 #include "commands/region_request.hpp"
 #include "commands/usage_error.hpp"
 #include "commands/work_bound.hpp"
@@ -68,7 +69,7 @@ const CommandTable& optimize_table() {
                                     "start 0 of the multistart is this program (a catalogue name, a family member "
                                     "such as jig:cuboctahedron, or a CSV file); N is its size",
                                     "catalogue name or file path")),
-       criterion_option(), model_option(), region_option(),
+       criterion_option(), model_option(), region_option(), design_instrument_option(),
        named(number_option("--margin", 0, 10,
                            "design every position this far inside the region's boundaries (the efficiency stays "
                            "judged against the region itself)",
@@ -93,7 +94,7 @@ OptimizeRequest optimize_request(const Values& v) {
   if (v.given("--from")) q.start = program_of(v, "--from");
   q.synthesis.criterion = criterion_of(v);
   q.synthesis.model = model_of(v);
-  q.regions = v.list("--region");
+  q.regions = instrument_regions(v, v.list("--region"));
   q.margin_deg = v.number("--margin");
   q.synthesis.starts = static_cast<int>(v.integer("--starts"));
   q.synthesis.seed = static_cast<std::uint64_t>(v.integer("--seed"));

@@ -117,11 +117,15 @@ double rehearsal_rows(const RehearsalRequest& q) {
   return c.rows;
 }
 
-void check_rehearsal_size(const RehearsalRequest& q) {
-  if (!(q.rate_hz >= kMinRateHz && q.rate_hz <= kMaxRateHz))
-    throw UsageError("--rate " + shortest_text(q.rate_hz) + ": the rehearsal takes " + shortest_text(kMinRateHz) +
+void check_rehearsal_rate(double rate_hz) {
+  if (!(rate_hz >= kMinRateHz && rate_hz <= kMaxRateHz))
+    throw UsageError("--rate " + shortest_text(rate_hz) + ": the rehearsal takes " + shortest_text(kMinRateHz) +
                      " to " + shortest_text(kMaxRateHz) +
                      " samples per second (time stamps are written in microseconds)");
+}
+
+void check_rehearsal_size(const RehearsalRequest& q) {
+  check_rehearsal_rate(q.rate_hz);
   if (q.tumble_s > 0) return;  // a tumbling log's rows are --rate x --tumble (simulate checks them)
   if (const double rows = rehearsal_rows(q); rows > kMaxRehearsalRows)
     throw UsageError("--rate " + shortest_text(q.rate_hz) + " with --dwell " + shortest_text(q.dwell_s) +

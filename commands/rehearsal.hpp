@@ -62,6 +62,9 @@ struct RehearsalResult {
 inline constexpr double kMaxRehearsalRows = 2e7;
 inline constexpr double kMinRateHz = 1e-3, kMaxRateHz = 1e6;
 double rehearsal_rows(const RehearsalRequest& request);
+// Throws UsageError for a rate outside [kMinRateHz, kMaxRateHz] (every rehearsal's, a gyro's too).
+void check_rehearsal_rate(double rate_hz);
+
 // Throws UsageError for a rate outside [kMinRateHz, kMaxRateHz] or (a program's rehearsal, not a
 // tumbling one) more than kMaxRehearsalRows rows.
 void check_rehearsal_size(const RehearsalRequest& request);

@@ -100,6 +100,11 @@ const CommandTable& simulate_table() {
       "--json's keys and units)");
   truth.name = "--truth";
   truth.cli_only = false;
+  Option accelerometer_log = out_option(  // an output: another output's file is refused (check_distinct_outputs)
+      "rehearsal with --instrument gyro: hand rotations; write the accelerometer's log (same rows as --log) here",
+      "FILE");
+  accelerometer_log.name = "--accelerometer";
+  accelerometer_log.cli_only = false;
   static const CommandTable table{
       "simulate",
       "Monte-Carlo calibration of simulated meters (empirical covariance against sigma^2 K, bias, bench errors), or "
@@ -142,28 +147,75 @@ const CommandTable& simulate_table() {
                                "rehearsal: a tumbling log of this many seconds, the meter turned continuously (through "
                                "the program's positions, or random directions without --program) and never still",
                                "seconds", "0")),
-       rehearsal(choice_option("--instrument", {"mag", "accel"},
-                               "rehearsal --tumble: a magnetometer (the field keeps its modulus) or an accelerometer "
-                               "(the motion adds 5 % of |I| of acceleration)",
-                               "mag")),
+       rehearsal(
+           choice_option("--instrument", {"mag", "accel", "gyro"},
+                         "rehearsal: the meter. With --tumble a magnetometer (the field keeps its modulus) or an "
+                         "accelerometer (the motion adds 5 % of |I| of acceleration); gyro (no --tumble): the "
+                         "program's positions are a rate table's axes (signed by the turn), known turns' axes "
+                         "(--turn-angle) or gravity's directions at the poses of hand rotations (--accelerometer)",
+                         "mag")),
        rehearsal(named(integer_option("--disturbances", 0, 100,
                                       "rehearsal --tumble: disturbed stretches of 2 s (a field of up to 0.3 |I| "
                                       "passing), at random times",
                                       "stretches", "0"),
                        "K")),
+       rehearsal(number_option("--turn-angle", -3600, 3600,
+                               "rehearsal with --instrument gyro: known turns of this angle about each position "
+                               "instead of a rate table",
+                               "degrees", "")),
+       rehearsal(accelerometer_log),
+       rehearsal(number_option("--latitude", -90, 90,
+                               "rehearsal with --instrument gyro on a rate table: add the Earth's rate (the table's "
+                               "axis vertical)",
+                               "degrees", "")),
        json_option("print one JSON object")}};
   return table;
 }
 
 namespace {
 
+// --instrument gyro: a gyro's rehearsal (a raw log only).
+void read_gyro_rehearsal(const Values& v, SimulateRequest& q) {
+  if (!v.given("--log")) throw UsageError("--instrument gyro writes a raw log: give --log FILE (not --bench-file)");
+  for (const char* o : {"--meter", "--still", "--format", "--tumble", "--disturbances"})
+    if (v.given(o))
+      throw UsageError(std::string(o) + " belongs to the accelerometer's rehearsal, not --instrument gyro");
+  if (v.given("--turn-angle") && v.given("--accelerometer"))
+    throw UsageError("give --turn-angle (known turns) or --accelerometer (hand rotations), not both");
+  if (v.given("--latitude") && (v.given("--turn-angle") || v.given("--accelerometer")))
+    throw UsageError("--latitude belongs to a rate table (no --turn-angle, no --accelerometer)");
+  GyroRehearsalRequest g;
+  g.name = q.name;
+  g.program = q.program;
+  g.method = v.given("--turn-angle") ? "known_turns" : v.given("--accelerometer") ? "hand_rotations" : "rate_table";
+  g.rate_hz = v.number("--rate");
+  g.dwell_s = v.number("--dwell");
+  g.noise = v.number("--noise");
+  g.magnitude = v.number("--magnitude");
+  if (v.given("--turn-angle")) g.turn_angle_deg = v.number("--turn-angle");
+  if (g.method == "known_turns" && g.turn_angle_deg == 0) throw UsageError("--turn-angle must not be 0");
+  if (v.given("--latitude")) g.latitude_deg = v.number("--latitude");
+  g.size = v.number("--size");
+  g.seed = static_cast<std::uint64_t>(v.integer("--seed"));
+  if (g.noise >= kNoiseRefuseAbove)
+    throw UsageError("option --noise: must be below 1 |I| (noise as large as the measured vector)");
+  check_rehearsal_rate(g.rate_hz);
+  // Seconds per position at most: a rest, the spin-up and stop (or a hand's move) and the segment, and a known
+  // turn's own duration (a quarter turn a second, gyro_rehearsal.cpp).
+  const double turn_s = g.method == "known_turns" ? std::abs(g.turn_angle_deg) / 90 : 0;
+  if (g.rate_hz * (2 * g.dwell_s + 4 + turn_s) * static_cast<double>(g.program.size()) > kMaxRehearsalRows)
+    throw UsageError("--rate x --dwell x positions asks for more than 2e7 rows");
+  q.gyro_rehearsal = std::move(g);
+}
+
 // --log or --bench-file: the rehearsal's request; the Monte-Carlo's options are refused there, and
 // the rehearsal's without it.
 void read_rehearsal(const Values& v, SimulateRequest& q) {
   const bool rehearsal = v.given("--log") || v.given("--bench-file");
   const char* monte_carlo[] = {"--trials", "--bench-error", "--modulus", "--samples", "--model", "--out"};
-  const char* own[] = {"--truth",     "--meter",  "--rate",   "--dwell",      "--still",
-                       "--magnitude", "--format", "--tumble", "--instrument", "--disturbances"};
+  const char* own[] = {"--truth",      "--meter",         "--rate",    "--dwell",      "--still",
+                       "--magnitude",  "--format",        "--tumble",  "--instrument", "--disturbances",
+                       "--turn-angle", "--accelerometer", "--latitude"};
   if (!rehearsal) {
     for (const char* o : own)
       if (v.given(o)) throw UsageError(std::string(o) + " belongs to a rehearsal (--log FILE or --bench-file FILE)");
@@ -174,6 +226,12 @@ void read_rehearsal(const Values& v, SimulateRequest& q) {
   for (const char* o : monte_carlo)
     if (v.given(o)) throw UsageError(std::string(o) + " belongs to the Monte-Carlo, not to a rehearsal");
   if (v.given("--format") && v.given("--bench-file")) throw UsageError("--format is the raw log's (--log)");
+  if (v.text("--instrument") == "gyro") {
+    read_gyro_rehearsal(v, q);
+    return;
+  }
+  for (const char* o : {"--turn-angle", "--accelerometer", "--latitude"})
+    if (v.given(o)) throw UsageError(std::string(o) + " belongs to --instrument gyro");
   RehearsalRequest r;
   r.name = q.name;
   r.program = q.program;
@@ -214,7 +272,7 @@ SimulateRequest simulate_request(const Values& v) {
   else
     q.name = "a random tumble";
   read_rehearsal(v, q);
-  if (q.rehearsal) return q;
+  if (q.rehearsal || q.gyro_rehearsal) return q;
   q.trials = static_cast<int>(v.integer("--trials"));
   q.noise = v.number("--noise");
   q.bench_error_deg = v.number("--bench-error");

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "commands/common_options.hpp"
+#include "commands/gyro_rehearsal.hpp"
 #include "commands/json.hpp"
 #include "commands/progress.hpp"
 #include "commands/rehearsal.hpp"
@@ -26,6 +27,8 @@ struct SimulateRequest {
   std::uint64_t seed = 1;
   // --log / --bench-file: a rehearsal (commands/rehearsal.hpp) instead of the Monte-Carlo.
   std::optional<RehearsalRequest> rehearsal;
+  // --instrument gyro --log: a gyro's rehearsal (commands/gyro_rehearsal.hpp).
+  std::optional<GyroRehearsalRequest> gyro_rehearsal;
 };
 
 struct SimulateResult {
@@ -37,7 +40,8 @@ struct SimulateResult {
 // --program P --trials T --noise SIGMA [--bench-error DEG] [--modulus norm|projection] [--model NAME]
 // [--seed S] [--samples K] [--size A] [--json], or for a rehearsal --program P --noise SIGMA
 // --log FILE|--bench-file FILE [--truth FILE] [--meter FILE] [--rate HZ] [--dwell S] [--still S]
-// [--magnitude M] [--format csv|text] [--seed S] [--size A]
+// [--magnitude M] [--format csv|text] [--seed S] [--size A]; --instrument gyro --log FILE [--turn-angle DEG |
+// --accelerometer FILE] [--latitude DEG] for a gyro's
 const CommandTable& simulate_table();
 SimulateRequest simulate_request(const Values& values);
 

@@ -8,6 +8,7 @@
 
 #include "commands/augment.hpp"
 #include "commands/calibrate.hpp"
+#include "commands/calibrate_gyro.hpp"
 #include "commands/calibrate_json.hpp"
 #include "commands/catalogue.hpp"
 #include "commands/certify.hpp"
@@ -76,6 +77,10 @@ Binding sweep_binding() {
 // file's object (the header, units and instrument included), which saves to and loads from cal.json.
 Binding calibrate_binding() {
   return {&commands::calibrate_table(), [](const Values& v, const Progress& p) {
+            if (v.text("--instrument") == "gyro") {
+              const auto g = commands::calibrate_gyro(commands::gyro_calibrate_request(v));
+              return Output{commands::gyro_calibration_file_json(g), g.warnings, g.status()};
+            }
             const auto r = commands::calibrate(commands::calibrate_request(v), p);
             return Output{commands::calibration_file_json(r), r.warnings, r.status()};
           }};
@@ -91,11 +96,25 @@ void write_file(const std::string& path, const std::string& option, const std::f
   if (!out) throw InputError(path, 0, "cannot be written (" + option + ")");
 }
 
+// simulate --instrument gyro --log: the gyro's log (and the accelerometer's), the truth, as the CLI writes them.
+Output gyro_rehearsal(const Values& v, const commands::GyroRehearsalRequest& q) {
+  const auto r = commands::rehearse_gyro(q);
+  write_file(v.text("--log"), "log", [&](std::ostream& out) { commands::write_gyro_log(out, r.log.log, r.log.rate); });
+  if (r.accelerometer_log)
+    write_file(v.text("--accelerometer"), "accelerometer",
+               [&](std::ostream& out) { commands::write_gyro_log(out, *r.accelerometer_log, {}); });
+  const commands::Json truth = commands::gyro_truth_json(r);
+  if (v.given("--truth"))
+    write_file(v.text("--truth"), "truth", [&](std::ostream& out) { out << commands::json_text(truth, 2) << "\n"; });
+  return Output{truth, r.warnings, 0};
+}
+
 // simulate: the Monte-Carlo's table, or a rehearsal's files (log or bench file, truth) with the
 // truth returned, as the CLI's --json prints it.
 Binding simulate_binding() {
   return {&commands::simulate_table(), [](const Values& v, const Progress& p) {
             const auto q = commands::simulate_request(v);
+            if (q.gyro_rehearsal) return gyro_rehearsal(v, *q.gyro_rehearsal);
             if (!q.rehearsal) {
               const auto r = commands::simulate(q, p);
               return Output{commands::to_json(r), r.warnings, 0};

@@ -81,9 +81,33 @@ int rehearse(const commands::Values& v, const commands::RehearsalRequest& q) {
   return 0;
 }
 
+// --instrument gyro --log: the gyro's log (and the accelerometer's), the truth, one line on stdout.
+int rehearse_gyro(const commands::Values& v, const commands::GyroRehearsalRequest& q) {
+  const commands::GyroRehearsalResult r = commands::rehearse_gyro(q);
+  print_warnings("simulate", r.warnings);
+  write_output_file(v.text("--log"), [&](std::ostream& out) { commands::write_gyro_log(out, r.log.log, r.log.rate); });
+  if (r.accelerometer_log)
+    write_output_file(v.text("--accelerometer"),
+                      [&](std::ostream& out) { commands::write_gyro_log(out, *r.accelerometer_log, {}); });
+  const commands::Json truth = commands::gyro_truth_json(r);
+  if (v.given("--truth")) write_output_file(v.text("--truth"), [&](std::ostream& out) { write_json(out, truth); });
+  if (v.flag("--json")) {
+    print_json(truth);
+    return 0;
+  }
+  const RawLog& log = r.log.log;
+  std::cout << "gyro rehearsal of " << q.name << " (" << q.method << "): " << q.program.size() << " positions, "
+            << log.size() << " rows (" << std::setprecision(4) << log.t.back() + 1 / q.rate_hz << " s at " << q.rate_hz
+            << " Hz), noise " << q.noise << " |I|, seed " << q.seed << " -> " << v.text("--log")
+            << (r.accelerometer_log ? ", accelerometer -> " + v.text("--accelerometer") : std::string())
+            << (v.given("--truth") ? ", true parameters -> " + v.text("--truth") : std::string()) << "\n";
+  return 0;
+}
+
 int run(const commands::Values& v) {
   const commands::SimulateRequest q = commands::simulate_request(v);
   if (q.rehearsal) return rehearse(v, *q.rehearsal);
+  if (q.gyro_rehearsal) return rehearse_gyro(v, *q.gyro_rehearsal);
   const bool json = v.flag("--json");
   const auto r = commands::simulate(q, terminal_progress("simulate"));
   print_warnings("simulate", r.warnings);

@@ -11,6 +11,7 @@
 #include "numeric/bench/faces.hpp"
 #include "numeric/bench/gimbal.hpp"
 #include "numeric/bench/jig.hpp"
+#include "numeric/bench/rate_table.hpp"
 #include "numeric/bench/tilt.hpp"
 #include "numeric/io/input_error.hpp"
 
@@ -21,7 +22,7 @@ struct BenchList {
   using Variant = std::variant<Bs...>;
 };
 
-using RegisteredBenches = BenchList<GimbalBench, TiltBench, FacesBench, JigBench>;
+using RegisteredBenches = BenchList<GimbalBench, TiltBench, FacesBench, JigBench, RateTableBench>;
 
 class Bench {
   template <class F>

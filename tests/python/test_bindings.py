@@ -176,6 +176,48 @@ def test_calibrate_raw_log(tmp_path):
     assert len(r["intervals"]) >= 9
 
 
+def test_simulate_gyro(tmp_path):
+    # simulate --instrument gyro: known turns, and hand rotations with the accelerometer's log; the same
+    # files as the CLI's and its --json (the truth).
+    for method in (["--turn-angle", "360"], ["--accelerometer"]):
+        files = {}
+        for who in ("py", "cli"):
+            files[who] = [tmp_path / f"{who}_{name}" for name in ("log.csv", "truth.json", "acc.csv")]
+        args = ["--instrument", "gyro", "--program", "dodecahedral-12", "--noise", "1e-3", "--dwell", "2"]
+        cli_args = args + method + ([str(files["cli"][2])] if method == ["--accelerometer"] else [])
+        want = cli_json("simulate", *cli_args, "--log", str(files["cli"][0]), "--truth", str(files["cli"][1]))
+        kw = {"turn_angle": 360} if method[0] == "--turn-angle" else {"accelerometer": str(files["py"][2])}
+        got = scalcal.simulate(instrument="gyro", program="dodecahedral-12", noise=1e-3, dwell=2,
+                               log=str(files["py"][0]), truth=str(files["py"][1]), **kw)
+        same(got, want)
+        assert json.loads(files["py"][1].read_text()) == json.loads(files["cli"][1].read_text())
+        for k in (0, 2) if method == ["--accelerometer"] else (0,):  # the logs, to the byte
+            assert files["py"][k].read_bytes() == files["cli"][k].read_bytes(), files["py"][k].name
+
+
+def test_calibrate_gyro(tmp_path):
+    # calibrate --instrument gyro: a rate-table rehearsal and IMU-TK's Xsens pair (hand rotations), the
+    # file's object as the CLI writes it.
+    log = tmp_path / "table.csv"
+    cli("simulate", "--instrument", "gyro", "--program", "dodecahedral-12", "--magnitude", "3.14159", "--noise",
+        "1e-3", "--dwell", "4", "--log", str(log))
+    skip = ("seconds", "created")
+    r = scalcal.calibrate(instrument="gyro", measurements=str(log), magnitude=3.14159)
+    same(r, cli_calibration(tmp_path, "--instrument", "gyro", "--measurements", str(log), "--magnitude", "3.14159"),
+         skip)
+    assert r["instrument"] == "gyro" and r["method"] == "rate_table" and len(r["segments"]) == 12
+    gyro, acc = os.path.join(DATA, "xsens_gyro.txt"), os.path.join(DATA, "xsens_acc.txt")
+    r = scalcal.calibrate(instrument="gyro", measurements=gyro, accelerometer=acc, accelerometer_magnitude=9.81744)
+    want = cli_calibration(tmp_path, "--instrument", "gyro", "--measurements", gyro, "--accelerometer", acc,
+                           "--accelerometer-magnitude", "9.81744")
+
+    def undated(c):  # the accelerometer's calibration beside the gyro's has its own run time
+        return dict(c, accelerometer={k: v for k, v in c["accelerometer"].items() if k != "created"})
+
+    same(undated(r), undated(want), skip)
+    assert r["method"] == "hand_rotations" and r["accelerometer"]["instrument"] == "accel"
+
+
 def test_errors_carry_the_cli_message(tmp_path):
     planar = random_program(12, seed=1)
     planar[:, 2] = 0

@@ -210,6 +210,24 @@ std::vector<Case> files_written() {
                  rehearsal("--magnitude 1.79e308 --size 0.1"),
                  E::error,
                  {"--magnitude 1.79e+308", "overflow double precision"}});
+  // A gyro's rehearsal (issue 52) takes the same bounds: rate, outputs, one file per output.
+  const auto gyro = [](const std::string& options) {
+    return [options] {
+      return "simulate --instrument gyro --program classic18 --noise 1e-3 --log " +
+             quote((scratch_dir() / "gyro.csv").string()) + " " + options;
+    };
+  };
+  out.push_back({"GyroRateTiny", gyro("--rate 1e-300"), E::error, {"--rate 1e-300", "0.001 to 1e+06"}});
+  out.push_back(
+      {"GyroTurnRows", gyro("--rate 1e5 --dwell 0.1 --turn-angle 3600"), E::error, {"asks for more than 2e7 rows"}});
+  out.push_back({"GyroMagnitudeOverflows",
+                 gyro("--magnitude 1.79e308 --size 0.1"),
+                 E::error,
+                 {"--magnitude 1.79e+308", "overflow double precision"}});
+  out.push_back({"GyroLogIsAccelerometer",
+                 gyro("--accelerometer " + quote((scratch_dir() / "gyro.csv").string())),
+                 E::error,
+                 {"--log and --accelerometer name the same file", "gyro.csv"}});
   // A matrix of 1e308 (condition 1) wrote inf and -nan rows with exit 0 (issue 49's correct refuses the
   // row that overflows).
   out.push_back({"CorrectOverflow",

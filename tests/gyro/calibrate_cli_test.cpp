@@ -1,0 +1,140 @@
+// calibrate --instrument gyro end to end through the CLI: each method's rehearsal (simulate
+// --instrument gyro, its truth file) calibrated back within 4 standard errors of its truth (the
+// coverage over many seeds is truth_test.cpp's), the per-segment rate column agreeing with one rate,
+// the file read by correct and export, and the options refused where they do not belong.
+#include <cmath>
+#include <sstream>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "tests/common/run_cli.hpp"
+
+namespace scalcal::testing {
+namespace {
+
+using Json = nlohmann::json;
+
+std::string path(const std::string& name) { return (scratch_dir() / name).string(); }
+
+Json run_json(const std::string& args) {
+  const CliResult r = run_cli(args);
+  EXPECT_EQ(r.status, 0) << args << "\n" << r.err;
+  return r.status == 0 ? Json::parse(r.out) : Json();
+}
+
+// The paper's nine against the truth file: bias (raw), scale as the gain (raw per physical), gamma.
+void expect_scalar_truth(const Json& c, const Json& truth) {
+  const char* axes = "xyz";
+  for (int k = 0; k < 3; ++k) {
+    const std::string b = std::string("bias_") + axes[k];
+    EXPECT_NEAR(c["parameters"][b].get<double>(), truth["bias"][k].get<double>(),
+                4 * c["standard_error"][b].get<double>())
+        << b;
+    EXPECT_NEAR(c["gain"][k].get<double>(), truth["scale"][k].get<double>(), 4 * c["gain_std"][k].get<double>()) << k;
+  }
+  const char* pairs[3] = {"nonorth_xy", "nonorth_yz", "nonorth_zx"};
+  for (int k = 0; k < 3; ++k)
+    EXPECT_NEAR(c["nonorthogonality"][k].get<double>(), truth["nonorthogonality"][k].get<double>(),
+                4 * c["standard_error"][pairs[k]].get<double>())
+        << pairs[k];
+}
+
+TEST(GyroCalibrateCli, RateTableBackToItsTruth) {
+  const std::string log = path("cal_rt.csv"), truth = path("cal_rt_truth.json"), cal = path("cal_rt.json");
+  ASSERT_EQ(run_cli("simulate --instrument gyro --program dodecahedral-12 --noise 1e-3 --dwell 6 --log " + log +
+                    " --truth " + truth)
+                .status,
+            0);
+  const Json c = run_json("calibrate --instrument gyro --measurements " + log + " --magnitude 1 --json --out " + cal);
+  EXPECT_EQ(c["instrument"], "gyro");
+  EXPECT_EQ(c["method"], "rate_table");
+  EXPECT_EQ(c["model"], "paper9");
+  EXPECT_EQ(c["segments"].size(), 12u);
+  expect_scalar_truth(c, Json::parse(slurp(truth)));
+  // The table's signed rate per row: each segment's median |rate| is 1, the same fit.
+  const Json col = run_json("calibrate --instrument gyro --measurements " + log + " --magnitude column:rate --json");
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(col["offset"][k].get<double>(), c["offset"][k].get<double>(), 1e-12);
+  // correct and export read the file; imu_tk's T K (X - B) is correct's vector.
+  const CliResult corrected = run_cli("correct --calibration " + cal + " --measurements " + log + " --out -");
+  ASSERT_EQ(corrected.status, 0) << corrected.err;
+  std::istringstream rows(corrected.out), raw(slurp(log));
+  std::string header, raw_header;
+  std::getline(rows, header);
+  std::getline(raw, raw_header);
+  EXPECT_EQ(header, "t,x,y,z,modulus");
+  const CliResult imu_tk = run_cli("export " + cal + " --format imu_tk");
+  ASSERT_EQ(imu_tk.status, 0) << imu_tk.err;
+  std::istringstream t(imu_tk.out);
+  double n[21];
+  for (double& x : n) t >> x;
+  ASSERT_TRUE(t);
+  const Eigen::Matrix<double, 3, 3, Eigen::RowMajor> T(n), K(n + 9);
+  const Eigen::Vector3d B(n[18], n[19], n[20]);
+  for (int i = 0; i < 200; ++i) {
+    std::string line, raw_line;
+    std::getline(rows, line);
+    std::getline(raw, raw_line);
+    double v[5], r[5];
+    char comma;
+    std::istringstream a(line), b(raw_line);
+    a >> v[0] >> comma >> v[1] >> comma >> v[2] >> comma >> v[3];
+    b >> r[0] >> comma >> r[1] >> comma >> r[2] >> comma >> r[3];
+    const Eigen::Vector3d theirs = T * K * (Eigen::Vector3d(r[1], r[2], r[3]) - B);
+    EXPECT_LT((theirs - Eigen::Vector3d(v[1], v[2], v[3])).norm(), 1e-12) << "row " << i;
+  }
+}
+
+TEST(GyroCalibrateCli, KnownTurnsBackToTheirTruth) {
+  const std::string log = path("cal_kt.csv"), truth = path("cal_kt_truth.json");
+  ASSERT_EQ(run_cli("simulate --instrument gyro --program dodecahedral-12 --noise 1e-3 --turn-angle 360 --log " + log +
+                    " --truth " + truth)
+                .status,
+            0);
+  const Json c = run_json("calibrate --instrument gyro --measurements " + log + " --turn-angle 360 --json");
+  EXPECT_EQ(c["method"], "known_turns");
+  EXPECT_EQ(c["turns"].size(), 12u);
+  EXPECT_EQ(c["units"]["physical"], "rad/s");
+  expect_scalar_truth(c, Json::parse(slurp(truth)));
+}
+
+TEST(GyroCalibrateCli, HandRotationsBackToTheirTruth) {
+  const std::string log = path("cal_hg.csv"), acc = path("cal_hacc.csv"), truth = path("cal_hg_truth.json");
+  ASSERT_EQ(run_cli("simulate --instrument gyro --program octahedral-1-1-1 --noise 1e-3 --dwell 3 --accelerometer " +
+                    acc + " --log " + log + " --truth " + truth)
+                .status,
+            0);
+  const Json c = run_json("calibrate --instrument gyro --measurements " + log + " --accelerometer " + acc +
+                          " --accelerometer-magnitude 9.80665 --json");
+  const Json t = Json::parse(slurp(truth));
+  EXPECT_EQ(c["method"], "hand_rotations");
+  EXPECT_EQ(c["poses"].size(), 26u);
+  EXPECT_TRUE(c["accelerometer"].is_object());
+  for (int a = 0; a < 3; ++a) {
+    for (int b = 0; b < 3; ++b)
+      EXPECT_NEAR(c["matrix"][a][b].get<double>(), t["matrix"][a][b].get<double>(),
+                  4 * c["matrix_std"][a][b].get<double>())
+          << a << b;
+    EXPECT_NEAR(c["offset"][a].get<double>(), t["offset"][a].get<double>(), 4 * c["offset_std"][a].get<double>());
+  }
+}
+
+TEST(GyroCalibrateCli, OptionsWhereTheyBelong) {
+  const std::string log = path("cal_rt.csv");
+  const CliResult none = run_cli("calibrate --instrument gyro --measurements data.csv");
+  EXPECT_EQ(none.status, 2);
+  EXPECT_NE(none.err.find("say how the gyro was turned"), std::string::npos) << none.err;
+  const CliResult accel = run_cli("calibrate --measurements x.csv --magnitude 1 --turn-angle 360");
+  EXPECT_EQ(accel.status, 2);
+  EXPECT_NE(accel.err.find("--turn-angle belongs to --instrument gyro"), std::string::npos) << accel.err;
+  EXPECT_EQ(run_cli("calibrate --measurements x.csv --magnitude column:rate").status, 2);
+  EXPECT_EQ(run_cli("calibrate --measurements x.csv").status, 2);
+  EXPECT_EQ(run_cli("calibrate --instrument gyro --measurements x.csv --magnitude 1 --turn-angle 360").status, 2);
+  EXPECT_EQ(run_cli("calibrate --instrument gyro --measurements x.csv --accelerometer a.csv").status, 2);
+  const CliResult region = run_cli("calibrate --instrument gyro --measurements x.csv --magnitude 1 --region cap:40");
+  EXPECT_EQ(region.status, 2);
+  EXPECT_NE(region.err.find("--region is an accelerometer's option"), std::string::npos) << region.err;
+}
+
+}  // namespace
+}  // namespace scalcal::testing

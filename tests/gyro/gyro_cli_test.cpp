@@ -1,0 +1,68 @@
+// --instrument gyro on the design commands and simulate: the rate table's reach is the union the
+// user could write by hand (cap:DEG and cap:DEG:0,0,-1), and a gyro's rehearsal is a log calibrate
+// reads, with its truth.
+#include <fstream>
+#include <sstream>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "commands/gyro_regions.hpp"
+#include "commands/usage_error.hpp"
+#include "tests/common/run_cli.hpp"
+
+namespace scalcal::testing {
+namespace {
+
+using Json = nlohmann::json;
+
+TEST(GyroCli, DesignOnARateTableIsOnTheRegionAndItsAntipode) {
+  // optimize judges its program against the region's D limit: the same with --instrument gyro as
+  // with the union written by hand.
+  const CliResult gyro =
+      run_cli("optimize --positions 12 --criterion D --starts 1 --region cap:40 --instrument gyro --json");
+  const CliResult by_hand =
+      run_cli("optimize --positions 12 --criterion D --starts 1 --region cap:40 --region cap:40:0,0,-1 --json");
+  ASSERT_EQ(gyro.status, 0) << gyro.err;
+  ASSERT_EQ(by_hand.status, 0) << by_hand.err;
+  const Json a = Json::parse(gyro.out), b = Json::parse(by_hand.out);
+  EXPECT_EQ(a["region"], "cap:40 + cap:40:0,0,-1");
+  EXPECT_EQ(a["region"], b["region"]);
+  EXPECT_EQ(a["limit"], b["limit"]);
+  const CliResult refused = run_cli("limits --instrument gyro --region candidates:none.csv");
+  EXPECT_EQ(refused.status, 2);
+  EXPECT_NE(refused.err.find("list both directions"), std::string::npos) << refused.err;
+}
+
+TEST(GyroCli, ReversedSpecs) {
+  using commands::with_reversed_turns;
+  EXPECT_EQ(with_reversed_turns({"cap:30"}), (std::vector<std::string>{"cap:30", "cap:30:0,0,-1"}));
+  EXPECT_EQ(with_reversed_turns({"band:10:20:1,0,0"}),
+            (std::vector<std::string>{"band:10:20:1,0,0", "band:10:20:-1,0,0"}));
+  EXPECT_EQ(with_reversed_turns({"faces:10", "sphere"}), (std::vector<std::string>{"faces:10", "sphere"}));
+  EXPECT_THROW(with_reversed_turns({"candidates:x.csv"}), UsageError);
+}
+
+TEST(GyroCli, RehearsalsWriteLogsAndTruth) {
+  const std::string log = (scratch_dir() / "gyro_rt.csv").string(), truth = (scratch_dir() / "gyro_rt.json").string();
+  const CliResult r = run_cli("simulate --instrument gyro --program dodecahedral-12 --noise 1e-3 --dwell 4 --log " +
+                              log + " --truth " + truth);
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::istringstream text(slurp(log));
+  std::string header;
+  std::getline(text, header);
+  EXPECT_EQ(header, "t,ix,iy,iz,rate");
+  const Json t = Json::parse(slurp(truth));
+  EXPECT_EQ(t["instrument"], "gyro");
+  EXPECT_EQ(t["method"], "rate_table");
+  const std::string acc = (scratch_dir() / "gyro_acc.csv").string();
+  const CliResult h = run_cli("simulate --instrument gyro --program octahedral-1-1-1 --noise 1e-3 --dwell 2 --log " +
+                              log + " --accelerometer " + acc + " --json");
+  ASSERT_EQ(h.status, 0) << h.err;
+  EXPECT_EQ(Json::parse(h.out)["method"], "hand_rotations");
+  EXPECT_EQ(run_cli("simulate --instrument gyro --program dodecahedral-12 --noise 1e-3 --bench-file " + log).status, 2);
+  EXPECT_EQ(run_cli("simulate --program dodecahedral-12 --noise 1e-3 --log " + log + " --turn-angle 360").status, 2);
+}
+
+}  // namespace
+}  // namespace scalcal::testing
