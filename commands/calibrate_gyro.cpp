@@ -134,7 +134,11 @@ void rate_table(const GyroCalibrateRequest& q, const RawLog& log, GyroCalibrateR
       throw UsageError(
           "calibrate: --latitude needs each segment's sense: give the table's signed rate as a column "
           "(--magnitude column:NAME, positive counterclockwise seen from above)");
-    const double axial = gyro::kEarthRate * std::sin(*q.latitude_deg * M_PI / 180) * per_rad_per_s(q.physical_units);
+    // The Earth's rate in east, north, up is Omega (0, cos phi, sin phi); along the table's axis it adds to
+    // every turn's rate, across it it turns with the table and averages out over a segment's whole turns.
+    const double phi = *q.latitude_deg * M_PI / 180;
+    const double axial =
+        gyro::kEarthRate * q.table_axis.dot(Vec3(0, std::cos(phi), std::sin(phi))) * per_rad_per_s(q.physical_units);
     for (std::size_t i = 0; i < rates.size(); ++i) rates[i] = std::abs(rates[i] + senses[i] * axial);
   }
   r.items = gyro::segment_items(s.segments, rates);

@@ -32,7 +32,8 @@ struct GyroCalibrateRequest {
   std::optional<double> turn_angle_deg;           // known turns: each turn's angle
   std::string accelerometer;                      // hand rotations: the accelerometer's log, same rows as the gyro's
   std::string accelerometer_magnitude;            // its |g| (a number, or auto)
-  std::optional<double> latitude_deg;             // rate table: add the Earth's rate, the table's axis vertical
+  std::optional<double> latitude_deg;             // rate table: add the Earth's rate along the table's axis
+  Vec3 table_axis = Vec3::UnitZ();                // that axis in east, north, up (--table-axis), unit length
   std::optional<ModelKind> model;                 // rate table and turns: empty = auto
   std::string sensor, raw_units, physical_units;  // physical: the --magnitude's unit, else rad/s
   Warnings warnings;

@@ -1,10 +1,36 @@
 // calibrate --instrument gyro's options as a GyroCalibrateRequest (calibrate_gyro.hpp): the log's
 // options are the accelerometer's; --magnitude, --turn-angle or --accelerometer name the method.
+#include <cmath>
+#include <cstdlib>
+#include <string>
+
 #include "commands/calibrate.hpp"
 #include "commands/calibrate_gyro.hpp"
 #include "commands/usage_error.hpp"
 
 namespace scalcal::commands {
+
+namespace {
+
+// "E,N,U": three finite numbers, not all zero, normalised.
+Vec3 table_axis(const std::string& text) {
+  Vec3 a;
+  std::size_t at = 0;
+  for (int k = 0; k < 3; ++k) {
+    const std::size_t end = k < 2 ? text.find(',', at) : text.size();
+    const std::string part = end == std::string::npos ? "" : text.substr(at, end - at);
+    char* stop = nullptr;
+    a(k) = part.empty() ? NAN : std::strtod(part.c_str(), &stop);
+    if (part.empty() || *stop != '\0' || !std::isfinite(a(k)))
+      throw UsageError("--table-axis: expected E,N,U (three numbers, east, north, up), got '" + text + "'");
+    at = end + 1;
+  }
+  if (!(a.norm() > 0) || !std::isfinite(a.norm()))
+    throw UsageError("--table-axis: the axis " + text + " has no direction (all zero)");
+  return a.normalized();
+}
+
+}  // namespace
 
 GyroCalibrateRequest gyro_calibrate_request(const Values& v) {
   GyroCalibrateRequest q;
@@ -15,6 +41,10 @@ GyroCalibrateRequest gyro_calibrate_request(const Values& v) {
   q.accelerometer = v.text("--accelerometer");
   if (v.given("--accelerometer-magnitude")) q.accelerometer_magnitude = v.text("--accelerometer-magnitude");
   if (v.given("--latitude")) q.latitude_deg = v.number("--latitude");
+  if (v.given("--table-axis")) {
+    if (!q.latitude_deg) throw UsageError("calibrate: --table-axis places the Earth's rate: it needs --latitude");
+    q.table_axis = table_axis(v.text("--table-axis"));
+  }
   // Options of an accelerometer's calibration that a gyro's does not take.
   for (const char* o :
        {"--modulus", "--weights", "--keep-outliers", "--suggest", "--criterion", "--region", "--program"})

@@ -143,9 +143,12 @@ const CommandTable& calibrate_table() {
        text_option("--accelerometer-magnitude", "G|auto", "hand rotations (--instrument gyro): the accelerometer's |g|",
                    "the accelerometer's units"),
        number_option("--latitude", -90, 90,
-                     "a rate table (--instrument gyro): add the Earth's rate to each segment's (the table's axis "
-                     "vertical; needs --magnitude column:NAME for each turn's sense)",
+                     "a rate table (--instrument gyro): add the Earth's rate to each segment's (its part along the "
+                     "table's axis, --table-axis; needs --magnitude column:NAME for each turn's sense)",
                      "degrees", ""),
+       text_option("--table-axis", "E,N,U",
+                   "a rate table with --latitude: the table's axis in east, north, up, positive turns "
+                   "counterclockwise seen from its tip (normalised; default 0,0,1: vertical)"),
        out_option("also write the calibration (the JSON object, with \"converged\") to FILE, for `scalcal correct`",
                   "CAL.json"),
        json_option("print one JSON object")}};
@@ -169,7 +172,7 @@ CalibrateRequest calibrate_request(const Values& v) {
     throw UsageError(
         "--magnitude M|auto is required (a gyro's --instrument gyro takes --turn-angle or "
         "--accelerometer instead)");
-  for (const char* o : {"--turn-angle", "--accelerometer", "--accelerometer-magnitude", "--latitude"})
+  for (const char* o : {"--turn-angle", "--accelerometer", "--accelerometer-magnitude", "--latitude", "--table-axis"})
     if (v.given(o)) throw UsageError(std::string(o) + " belongs to --instrument gyro");
   q.magnitude = v.text("--magnitude");
   if (q.magnitude.rfind("column:", 0) == 0)
