@@ -2,8 +2,12 @@
 // --instrument gyro, its truth file) calibrated back within 4 standard errors of its truth (the
 // coverage over many seeds is truth_test.cpp's), the per-segment rate column agreeing with one rate,
 // the file read by correct and export, and the options refused where they do not belong.
+#include <cctype>
 #include <cmath>
 #include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -116,6 +120,95 @@ TEST(GyroCalibrateCli, HandRotationsBackToTheirTruth) {
                   4 * c["matrix_std"][a][b].get<double>())
           << a << b;
     EXPECT_NEAR(c["offset"][a].get<double>(), t["offset"][a].get<double>(), 4 * c["offset_std"][a].get<double>());
+  }
+}
+
+// The first n rows of a raw log and of correct's output for it: (raw, corrected) vectors.
+std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> raw_and_corrected(const std::string& log,
+                                                                           const std::string& corrected, int n) {
+  std::istringstream rows(corrected), raw(slurp(log));
+  std::string line, raw_line;
+  std::getline(rows, line);
+  std::getline(raw, raw_line);
+  std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> out;
+  for (int i = 0; i < n && std::getline(rows, line) && std::getline(raw, raw_line); ++i) {
+    double v[4], r[4];
+    char comma;
+    std::istringstream a(line), b(raw_line);
+    a >> v[0] >> comma >> v[1] >> comma >> v[2] >> comma >> v[3];
+    b >> r[0] >> comma >> r[1] >> comma >> r[2] >> comma >> r[3];
+    out.push_back({Eigen::Vector3d(r[1], r[2], r[3]), Eigen::Vector3d(v[1], v[2], v[3])});
+  }
+  return out;
+}
+
+// The numbers after a key in an export's text: count of them, brackets and commas skipped.
+std::vector<double> numbers_after(const std::string& text, const std::string& key, int count) {
+  std::vector<double> out;
+  std::size_t at = text.find(key);
+  if (at == std::string::npos) return out;
+  at += key.size();
+  while (static_cast<int>(out.size()) < count && at < text.size()) {
+    const char c = text[at];
+    const bool sign = (c == '-' || c == '.') && at + 1 < text.size() &&
+                      std::isdigit(static_cast<unsigned char>(text[at + 1]));  // not YAML's list dash
+    if (std::isdigit(static_cast<unsigned char>(c)) || sign) {
+      std::size_t used = 0;
+      out.push_back(std::stod(text.substr(at), &used));
+      at += used;
+    } else {
+      ++at;
+    }
+  }
+  return out;
+}
+
+// A gyro's exports applied as their targets apply them give correct's vectors: OpenVINS's kalibr model
+// w = R_IMUtoGYRO^T Tw^-1 (w_m - b_g) with the offset as its initial bias; PX4's and ArduPilot's offsets
+// (w_m - offset) on an offsets-only calibration (bias3, whose common gain they drop and say so).
+TEST(GyroCalibrateCli, ExportsAppliedTheirTargetsWay) {
+  const std::string log = path("cal_export.csv"), cal = path("cal_export.json"), cal3 = path("cal_export3.json");
+  ASSERT_EQ(run_cli("simulate --instrument gyro --program dodecahedral-12 --noise 1e-3 --dwell 6 --log " + log).status,
+            0);
+  const std::string base = "calibrate --instrument gyro --measurements " + log + " --magnitude 1 --units rad/s,rad/s";
+  ASSERT_EQ(run_cli(base + " --out " + cal).status, 0);
+  ASSERT_EQ(run_cli(base + " --model bias3 --out " + cal3).status, 0);
+  const CliResult corrected = run_cli("correct --calibration " + cal + " --measurements " + log + " --out -");
+  const CliResult corrected3 = run_cli("correct --calibration " + cal3 + " --measurements " + log + " --out -");
+  ASSERT_EQ(corrected.status, 0) << corrected.err;
+  ASSERT_EQ(corrected3.status, 0) << corrected3.err;
+
+  const CliResult k = run_cli("export " + cal + " --format kalibr");
+  ASSERT_EQ(k.status, 0) << k.err;
+  const auto tw = numbers_after(k.out, "  Tw:", 9), rg = numbers_after(k.out, "R_IMUtoGYRO:", 9),
+             bg = numbers_after(k.out, "initial bias:", 3);
+  ASSERT_EQ(tw.size() + rg.size() + bg.size(), 21u) << k.out;
+  const Eigen::Matrix<double, 3, 3, Eigen::RowMajor> Tw(tw.data()), R(rg.data());
+  const Eigen::Vector3d b(bg[0], bg[1], bg[2]);
+  EXPECT_EQ(Tw(0, 1), 0);
+  EXPECT_LT((R * R.transpose() - Eigen::Matrix3d::Identity()).norm(), 1e-12);
+  for (const auto& [raw, c] : raw_and_corrected(log, corrected.out, 300)) {
+    const Eigen::Vector3d w = R.transpose() * Eigen::Matrix3d(Tw).triangularView<Eigen::Lower>().solve(raw - b);
+    ASSERT_LT((w - c).norm(), 1e-12 * c.norm()) << raw.transpose();
+  }
+
+  const CliResult px4 = run_cli("export " + cal3 + " --format px4");
+  const CliResult ap = run_cli("export " + cal3 + " --format ardupilot");
+  ASSERT_EQ(px4.status, 0) << px4.err;
+  ASSERT_EQ(ap.status, 0) << ap.err;
+  // bias3 on a rate table keeps one common gain g (the known rate fixes the scale): the targets drop it
+  // and say so; raw minus their offsets (9 digits printed), times g, is correct's vector to 1e-9 rad/s.
+  EXPECT_NE(px4.err.find("cannot carry a gyroscope's scale factors"), std::string::npos) << px4.err;
+  const double g = Json::parse(slurp(cal3))["matrix"][0][0].get<double>();
+  const Eigen::Vector3d o_px4(numbers_after(px4.out, "CAL_GYRO0_XOFF", 1)[0],
+                              numbers_after(px4.out, "CAL_GYRO0_YOFF", 1)[0],
+                              numbers_after(px4.out, "CAL_GYRO0_ZOFF", 1)[0]);
+  const Eigen::Vector3d o_ap(numbers_after(ap.out, "INS_GYROFFS_X,", 1)[0],
+                             numbers_after(ap.out, "INS_GYROFFS_Y,", 1)[0],
+                             numbers_after(ap.out, "INS_GYROFFS_Z,", 1)[0]);
+  for (const auto& [raw, c] : raw_and_corrected(log, corrected3.out, 300)) {
+    ASSERT_LT((g * (raw - o_px4) - c).norm(), 1e-9) << raw.transpose();
+    ASSERT_LT((g * (raw - o_ap) - c).norm(), 1e-9) << raw.transpose();
   }
 }
 
