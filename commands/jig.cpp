@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "commands/evaluation_json.hpp"
+#include "commands/gyro_regions.hpp"
 #include "numeric/criteria/identifiability.hpp"
 #include "numeric/io/input_error.hpp"
 #include "numeric/synthesis/mounting.hpp"
@@ -60,6 +61,24 @@ std::optional<GiNaC::matrix> exact_rotation(const Eigen::Matrix3d& O) {
       if (!symbolic::is_zero_exact(XXt(r, c) - (r == c ? 1 : 0))) return std::nullopt;
   if (!symbolic::is_zero_exact(X.determinant() - 1)) return std::nullopt;
   return X;
+}
+
+// A gyro on a rate table measures each face's normal and, the turn reversed, its antipode (Theorem 24).
+// A jig whose faces come in opposite pairs (every printable jig of full rank) gains no direction, and
+// every criterion, normalised by N, is the same for the doubled program: the accelerometer's answer.
+void gyro_reading(const std::string& jig, const Program& normals, JigResult& r) {
+  for (const Vec3& n : normals.positions) {
+    bool opposite = false;
+    for (const Vec3& m : normals.positions) opposite = opposite || (n + m).norm() < 1e-9;
+    if (!opposite)
+      throw InputError(jig, 0,
+                       "--instrument gyro: its faces are not in opposite pairs, so reversed turns would add "
+                       "directions; evaluate the program with its antipodes instead");
+  }
+  r.instrument = "gyro";
+  r.instrument_note =
+      "a gyro on a rate table: the faces come in opposite pairs, so a reversed turn measures a direction the jig "
+      "already has; every criterion (normalised by N) is the accelerometer's (Theorem 24)";
 }
 
 // The numerical search over rotations (the default mounting kept when nothing beats it).
@@ -123,7 +142,7 @@ const CommandTable& jig_table() {
        named(integer_option("--starts", 1, 100000,
                             "starts of the search over rotations (the first is the default mounting)", "starts", "64"),
              "K"),
-       seed_option(),
+       seed_option(), design_instrument_option(),
        out_option("write the face normals at the best mounting, in the meter's coordinates, as a program CSV"),
        json_option("print one JSON object")}};
   return table;
@@ -131,7 +150,7 @@ const CommandTable& jig_table() {
 
 JigRequest jig_request(const Values& v) {
   return {v.text("NAME"), criterion_of(v), static_cast<int>(v.integer("--starts")),
-          static_cast<std::uint64_t>(v.integer("--seed"))};
+          static_cast<std::uint64_t>(v.integer("--seed")), v.text("--instrument") == "gyro"};
 }
 
 JigResult jig(const JigRequest& q, const Progress& progress) {
@@ -140,6 +159,7 @@ JigResult jig(const JigRequest& q, const Progress& progress) {
   const Program normals = *family.numeric(params);
   JigResult r;
   r.jig = family.name;
+  if (q.gyro) gyro_reading(family.name, normals, r);
   r.criterion = q.criterion;
   r.faces = normals.size();
   r.before = evaluate(normals);
@@ -192,6 +212,8 @@ Json to_json(const JigResult& r) {
            {"value_default_orientation", r.value_default},
            {"program", program_json(r.program)}};
   out["positions"] = r.faces;
+  out["instrument"] = r.instrument;
+  if (!r.instrument_note.empty()) out["instrument_note"] = r.instrument_note;
   out["value_status"] = r.status;
   out["method"] = r.method;
   if (!r.exact.empty()) out["exact"] = r.exact;

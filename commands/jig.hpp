@@ -22,6 +22,7 @@ struct JigRequest {
   CriterionKind criterion = CriterionKind::D;
   int starts = 64;
   std::uint64_t seed = 1;
+  bool gyro = false;  // --instrument gyro: on a rate table, each face also turned the other way
 };
 
 struct JigResult {
@@ -41,6 +42,7 @@ struct JigResult {
   std::string limit_exact;
   std::string claim_status, claim_reason;  // what the closed forms decide about reaching the limit
   bool claim_proven = false;
+  std::string instrument = "accel", instrument_note;  // the gyro's reading of the answer
   Evaluation before, after;
   Warnings warnings;
 };

@@ -1,6 +1,6 @@
-// `scalcal jig NAME [--criterion C] [--starts K] [--seed S] [--out FILE] [--json]`: the best way to mount the meter
-// in a printable jig (commands/jig.hpp), as a sheet: the value, what is proven, the meter's axes in
-// jig coordinates, the criteria before and after.
+// `scalcal jig NAME [--criterion C] [--starts K] [--seed S] [--instrument accel|gyro] [--out FILE] [--json]`: the best
+// way to mount the meter in a printable jig (commands/jig.hpp), as a sheet: the value, what is proven, the meter's axes
+// in jig coordinates, the criteria before and after.
 #include <cstdio>
 #include <iostream>
 
@@ -29,6 +29,7 @@ void print_limit(const commands::JigResult& r) {
 void print_text(const commands::JigResult& r) {
   const std::string c(criterion_name(r.criterion));
   std::printf("%s (%d faces), criterion %s\n", r.jig.c_str(), r.faces, c.c_str());
+  if (!r.instrument_note.empty()) std::printf("%s\n", r.instrument_note.c_str());
   const bool exact_here = !r.exact.empty() && r.orientation_exact.empty();
   std::printf("best mounting: %s = %.10g (default mounting %.10g)%s%s\n", c.c_str(), r.value, r.value_default,
               exact_here ? ", exactly " : "", exact_here ? r.exact.c_str() : "");

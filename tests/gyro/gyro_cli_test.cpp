@@ -3,6 +3,8 @@
 // reads, with its truth.
 #include <fstream>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -32,6 +34,39 @@ TEST(GyroCli, DesignOnARateTableIsOnTheRegionAndItsAntipode) {
   const CliResult refused = run_cli("limits --instrument gyro --region candidates:none.csv");
   EXPECT_EQ(refused.status, 2);
   EXPECT_NE(refused.err.find("list both directions"), std::string::npos) << refused.err;
+}
+
+// jig --instrument gyro: the program the table measures is the faces' normals and their antipodes; evaluate
+// of that doubled program, written by hand from the jig's own, gives the value jig reports.
+TEST(GyroCli, AJigOnARateTableMeasuresItsFacesBothWays) {
+  const std::string faces = (scratch_dir() / "jig_faces.csv").string(),
+                    both = (scratch_dir() / "jig_both.csv").string();
+  const CliResult j = run_cli("jig rhombic-dodecahedron --criterion A --instrument gyro --json --out " + faces);
+  ASSERT_EQ(j.status, 0) << j.err;
+  const Json r = Json::parse(j.out);
+  EXPECT_EQ(r["instrument"], "gyro");
+  EXPECT_NE(r["instrument_note"].get<std::string>().find("opposite pairs"), std::string::npos);
+  std::istringstream in(slurp(faces));
+  std::ofstream out(both);
+  std::string line;
+  std::getline(in, line);
+  out << "x,y,z\n";
+  while (std::getline(in, line)) {
+    double x, y, z;
+    char c;
+    std::istringstream f(line);
+    f >> x >> c >> y >> c >> z;
+    out.precision(17);
+    out << x << ',' << y << ',' << z << '\n' << -x << ',' << -y << ',' << -z << '\n';
+  }
+  out.close();
+  const CliResult e = run_cli("evaluate " + both + " --json");
+  ASSERT_EQ(e.status, 0) << e.err;
+  const Json ev = Json::parse(e.out);
+  EXPECT_NEAR(ev["A"].get<double>(), r["value"].get<double>(), 1e-9 * r["value"].get<double>()) << e.out;
+  // The accelerometer's answer, the same.
+  const Json accel = Json::parse(run_cli("jig rhombic-dodecahedron --criterion A --json").out);
+  EXPECT_EQ(accel["value"], r["value"]);
 }
 
 TEST(GyroCli, ReversedSpecs) {
