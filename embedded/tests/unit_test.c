@@ -60,18 +60,19 @@ static void random_direction(double d[3]) {
   d[0] /= n, d[1] /= n, d[2] /= n;
 }
 
-/* A hand-held session at 100 Hz: `poses` still poses of 3 s with 1.5 s of turning between. */
-static void session(const meter* m, int poses, scalcal_detector* det, scalcal_pose_set* set) {
+/* A session at 100 Hz: `poses` still poses of `still` samples, each followed by `turn` samples of
+ * turning to the next. The hand-held session: 3 s still, 1.5 s turning (session()). */
+static void session_of(const meter* m, int poses, int still, int turn, scalcal_detector* det, scalcal_pose_set* set) {
   double from[3], to[3];
   int p, s, k;
   random_direction(from);
   for (p = 0; p < poses; ++p) {
     scalcal_real x[3];
-    for (s = 0; s < 300; ++s) measure(m, from, x), scalcal_detector_push(det, set, x);
+    for (s = 0; s < still; ++s) measure(m, from, x), scalcal_detector_push(det, set, x);
     random_direction(to);
-    for (s = 1; s <= 150; ++s) { /* a straight path, renormalised: smooth motion */
+    for (s = 1; s <= turn; ++s) { /* a straight path, renormalised: smooth motion */
       double d[3], n;
-      for (k = 0; k < 3; ++k) d[k] = from[k] + (to[k] - from[k]) * s / 150.0;
+      for (k = 0; k < 3; ++k) d[k] = from[k] + (to[k] - from[k]) * s / (double)turn;
       n = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
       if (n < 1e-3) continue;
       for (k = 0; k < 3; ++k) d[k] /= n;
@@ -82,28 +83,15 @@ static void session(const meter* m, int poses, scalcal_detector* det, scalcal_po
   scalcal_detector_finish(det, set);
 }
 
+static void session(const meter* m, int poses, scalcal_detector* det, scalcal_pose_set* set) {
+  session_of(m, poses, 300, 150, det, set);
+}
+
 /* A meter turned most of the time (a magnetometer waved by hand): `poses` pauses of 2.5 s, each
  * followed by 8 s of turning. A window of 1 s is still only when it lies wholly in a pause, so about
  * (10.5 - 1.5) / 10.5 = 86 % of the windows move, and each pause still gives a pose of 1.5 s. */
 static void turning_session(const meter* m, int poses, scalcal_detector* det, scalcal_pose_set* set) {
-  double from[3], to[3];
-  int p, s, k;
-  random_direction(from);
-  for (p = 0; p < poses; ++p) {
-    scalcal_real x[3];
-    for (s = 0; s < 250; ++s) measure(m, from, x), scalcal_detector_push(det, set, x);
-    random_direction(to);
-    for (s = 1; s <= 800; ++s) {
-      double d[3], n;
-      for (k = 0; k < 3; ++k) d[k] = from[k] + (to[k] - from[k]) * s / 800.0;
-      n = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-      if (n < 1e-3) continue;
-      for (k = 0; k < 3; ++k) d[k] /= n;
-      measure(m, d, x), scalcal_detector_push(det, set, x);
-    }
-    memcpy(from, to, sizeof from);
-  }
-  scalcal_detector_finish(det, set);
+  session_of(m, poses, 250, 800, det, set);
 }
 
 static int all_finite(const scalcal_calibration* c) {
