@@ -8,6 +8,7 @@
 #define QUIET_BINS 12                             /* 3 x the 5 % quantile: 8 log2(3) = 12.7 bins */
 #define MIN_WINDOWS (2 * SCALCAL_DETECTOR_BLOCKS) /* white windows before the floor is trusted */
 #define MAX_POSE_SAMPLES 16777216u                /* 2^24: beyond, a float count is no longer exact */
+#define MOVING_FACTOR 3 /* a window moves above 3 x the floor (the host's kMovingWindow, against its white noise) */
 
 /* 2^(j/8), j = 1..7 (bin edges within an octave) and 2^((s + 0.5)/8), s = 0..7 (bin centres). */
 static const scalcal_real kEdge[7] = {(scalcal_real)1.0905077326652577, (scalcal_real)1.1892071150027210,
@@ -177,6 +178,10 @@ static scalcal_event window_done(scalcal_detector* det, scalcal_pose_set* set) {
     /* white noise: E |x_k - x_(k-1)|^2 = 2 variance; smooth motion: far less */
     if (v > 0 && diffs > 0 && sc_finite(v) && diff2 / (scalcal_real)diffs >= 2 * det->options.whiteness_min * variance)
       histogram_add(det, v);
+  }
+  if (valid && det->floor > 0) { /* the stream's moving share (the host's `motion`, README.md) */
+    set->windows_judged += 1;
+    if (!(v <= MOVING_FACTOR * det->floor)) set->windows_moving += 1;
   }
   still = valid && det->floor > 0 && v < det->threshold && sc_finite(v);
   return judge_block(det, set, centre, still, v);

@@ -144,6 +144,8 @@ scalcal_status scalcal_fit(const scalcal_pose_set* set, const scalcal_fit_option
   if (options->max_iterations < 1) return SCALCAL_E_ARGUMENT;
   if (!(options->noise >= 0 && sc_finite(options->noise))) return SCALCAL_E_ARGUMENT;
   if (!poses_finite(set)) return SCALCAL_E_NOT_FINITE;
+  /* The host's rule for a log mostly in motion (README.md, "A stream that never stops"). */
+  if ((uint64_t)set->windows_moving * 4 > (uint64_t)set->windows_judged * 3) return SCALCAL_E_MOVING;
   memset(&q, 0, sizeof q);
   q.set = set;
   q.magnitude = magnitude_auto ? 1 : options->magnitude;

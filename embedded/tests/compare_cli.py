@@ -19,8 +19,10 @@ candidates) are checked with `scalcal evaluate` at the library's directions; the
 efficiencies are reported beside. The library's own detector is then run on the same log and
 compared, as a looser check, with the CLI run on the detector's parameters (--window 1
 --threshold-factor 6 --min-interval 1): poses within one, calibration within half a standard error.
-The CLI calibrates the real magnetometer log (QMC5883L) tumbling, every sample a position, which the
-library does not do: it is reported, and a still-pose magnetometer log simulated by `scalcal
+The detector's moving share (its windows above 3 times its floor) is compared with the CLI's `motion`
+(within 0.05). The CLI calibrates the real magnetometer log (QMC5883L) tumbling, every sample a
+position, which the library does not do: the library must refuse it (SCALCAL_E_MOVING, the stream
+moves in more than 3/4 of its windows), and a still-pose magnetometer log simulated by `scalcal
 simulate` (seeded) takes its place in the comparison, calibrated by the CLI's still-pose path.
 Usage: compare_cli.py SCALCAL HOST_RUN_DOUBLE HOST_RUN_FLOAT HOST_RUN_LONG DATA_DIR... ; prints a
 table and exits 1 when a check fails."""
@@ -273,6 +275,7 @@ def check_detector(scalcal, host_double, path, name, cli_args, host_args, notes)
     poses = int(det["poses"][0])
     notes.append(f"{name}: detector {poses} poses (CLI on the same parameters {cli['positions']}), floor "
                  f"{det['detector_floor'][0]:.4g} (CLI {cli['noise_floor']:.4g}), status {' '.join(det['status'][0][1:])}")
+    check_moving_share(name, det, cli, notes)
     if abs(poses - cli["positions"]) > 1:
         failures.append(f"{name}: the detector finds {poses} poses, the CLI on its parameters {cli['positions']}")
     if det["status"][0][0] != "0" or int(det["model"][0]) != MODELS[cli["model"]]:
@@ -283,6 +286,17 @@ def check_detector(scalcal, host_double, path, name, cli_args, host_args, notes)
     notes.append(f"{name}: detector's calibration within {worst:.3g} standard errors of the CLI's on its parameters")
     if not worst <= 0.5:
         failures.append(f"{name}: the detector's calibration is {worst:.3g} standard errors from the CLI's (> 0.5)")
+
+
+def check_moving_share(name, det, cli, notes):
+    """The detector's share of moving windows against the CLI's moving share (its `motion`)."""
+    judged, moving = (int(v) for v in det["detector_windows"])
+    share = moving / judged if judged else float("nan")
+    notes.append(f"{name}: the detector's windows move {100 * share:.1f} % of the time (the CLI: "
+                 f"{100 * cli['motion']['moving_share']:.1f} %)")
+    if not abs(share - cli["motion"]["moving_share"]) <= 0.05:
+        failures.append(f"{name}: the detector's moving share {share:.3f}, the CLI's {cli['motion']['moving_share']:.3f}")
+    return share
 
 
 def check_log(hosts, path, name, cli_args, magnitude, table, notes):
@@ -328,24 +342,27 @@ def check_log(hosts, path, name, cli_args, magnitude, table, notes):
     check_detector(scalcal, host_double, path, name, cli_args, host_args, notes)
 
 
-def report_tumbling(hosts, path, notes):
-    """The real magnetometer log: the CLI's tumbling calibration against the library's detector (report)."""
+def check_tumbling(hosts, path, notes):
+    """The real magnetometer log: the CLI calibrates it tumbling; the library's detector must refuse it
+    as moving (SCALCAL_E_MOVING), with the CLI's moving share."""
     scalcal, host_double = hosts[0], hosts[1]
     name, _, args, magnitude = TUMBLING
     cli, err = calibrate(scalcal, path, ["--magnitude", magnitude] + args)
     if cli is None:
-        notes.append(f"{name}: scalcal calibrate {err}")
+        failures.append(f"{name}: scalcal calibrate {err}")
         return
     if not cli["tumbling"]:
         failures.append(f"{name}: the CLI no longer calibrates it tumbling: compare it as a still-pose log")
         return
-    det = host_result(host_double, [path, "--detect", "--magnitude", magnitude] + args)
-    line = (f"{name}: the CLI calibrates it tumbling ({cli['samples']} samples as positions); the library has no "
-            f"tumbling mode: not compared; its detector finds {int(det['poses'][0])} poses, "
-            f"{' '.join(det['status'][0][1:])}")
-    if det["status"][0][0] == "0" and int(det["model"][0]) == MODELS[cli["model"]]:
-        line += f", {standard_errors_apart(det, cli, MODELS[cli['model']]):.3g} of the CLI's standard errors away"
-    notes.append(line)
+    for binary in hosts[1:3]:
+        det = host_result(binary, [path, "--detect", "--magnitude", magnitude] + args)
+        share = check_moving_share(f"{name} ({det['precision'][0]})", det, cli, notes)
+        notes.append(f"{name} ({det['precision'][0]}): the CLI calibrates it tumbling ({cli['samples']} samples as "
+                     f"positions); the library's detector closes {int(det['poses'][0])} poses and the fit says: "
+                     f"{' '.join(det['status'][0][1:])}")
+        if det["status"][0][0] != "11" or not share > 0.75:
+            failures.append(f"{name}: the library does not refuse the tumbling log as moving: "
+                            f"{' '.join(det['status'][0][1:])}, moving share {share:.3f}")
 
 
 def main():
@@ -371,7 +388,7 @@ def main():
             check_log(hosts, path, name, args, magnitude, table, notes)
     path = find(TUMBLING[1])
     if path:
-        report_tumbling(hosts, path, notes)
+        check_tumbling(hosts, path, notes)
     print("%-16s %-50s %12s %14s %14s" % ("log", "quantity", "lib - CLI", "CLI - ref.", "lib - ref."))
     for log, what, worst, cli_off, ours_off in table:
         print("%-16s %-50s %12.3g %14s %14s" % (log, what, worst, "" if cli_off is None else "%.3g" % cli_off,

@@ -108,6 +108,7 @@ static int feed_detector(const test_log* log, double rate, scalcal_pose_set* set
   printf("detector_window %u\n", (unsigned)(det.block_samples * SCALCAL_DETECTOR_BLOCKS));
   printf("detector_short_runs %u\n", (unsigned)det.short_runs);
   printf("detector_state %s\n", scalcal_detector_state_text(&det));
+  printf("detector_windows %u %u\n", (unsigned)set->windows_judged, (unsigned)set->windows_moving);
   return 0;
 }
 

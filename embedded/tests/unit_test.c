@@ -60,18 +60,19 @@ static void random_direction(double d[3]) {
   d[0] /= n, d[1] /= n, d[2] /= n;
 }
 
-/* A hand-held session at 100 Hz: `poses` still poses of 3 s with 1.5 s of turning between. */
-static void session(const meter* m, int poses, scalcal_detector* det, scalcal_pose_set* set) {
+/* A session at 100 Hz: `poses` still poses of `still` samples, each followed by `turn` samples of
+ * turning to the next. The hand-held session: 3 s still, 1.5 s turning (session()). */
+static void session_of(const meter* m, int poses, int still, int turn, scalcal_detector* det, scalcal_pose_set* set) {
   double from[3], to[3];
   int p, s, k;
   random_direction(from);
   for (p = 0; p < poses; ++p) {
     scalcal_real x[3];
-    for (s = 0; s < 300; ++s) measure(m, from, x), scalcal_detector_push(det, set, x);
+    for (s = 0; s < still; ++s) measure(m, from, x), scalcal_detector_push(det, set, x);
     random_direction(to);
-    for (s = 1; s <= 150; ++s) { /* a straight path, renormalised: smooth motion */
+    for (s = 1; s <= turn; ++s) { /* a straight path, renormalised: smooth motion */
       double d[3], n;
-      for (k = 0; k < 3; ++k) d[k] = from[k] + (to[k] - from[k]) * s / 150.0;
+      for (k = 0; k < 3; ++k) d[k] = from[k] + (to[k] - from[k]) * s / (double)turn;
       n = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
       if (n < 1e-3) continue;
       for (k = 0; k < 3; ++k) d[k] /= n;
@@ -80,6 +81,17 @@ static void session(const meter* m, int poses, scalcal_detector* det, scalcal_po
     memcpy(from, to, sizeof from);
   }
   scalcal_detector_finish(det, set);
+}
+
+static void session(const meter* m, int poses, scalcal_detector* det, scalcal_pose_set* set) {
+  session_of(m, poses, 300, 150, det, set);
+}
+
+/* A meter turned most of the time (a magnetometer waved by hand): `poses` pauses of 2.5 s, each
+ * followed by 8 s of turning. A window of 1 s is still only when it lies wholly in a pause, so about
+ * (10.5 - 1.5) / 10.5 = 86 % of the windows move, and each pause still gives a pose of 1.5 s. */
+static void turning_session(const meter* m, int poses, scalcal_detector* det, scalcal_pose_set* set) {
+  session_of(m, poses, 250, 800, det, set);
 }
 
 static int all_finite(const scalcal_calibration* c) {
@@ -435,6 +447,34 @@ static void test_guidance(void) {
         "rank-deficient next pose %u", (unsigned)best);
 }
 
+/* A stream that moves most of the time is refused (SCALCAL_E_MOVING) although its pauses make poses
+ * enough; the hand-held session (3 s still, 1.5 s turning: (4.5 - 2) / 4.5 = 56 % of its 1 s windows
+ * touch motion) is not. */
+static void test_moving(void) {
+  meter m;
+  scalcal_pose_set set;
+  scalcal_fit_options o;
+  scalcal_calibration c;
+  scalcal_status s;
+  double share;
+  make_meter(&m, 48.0, 1638.4, 2.0);
+  scalcal_fit_options_default(&o);
+  o.magnitude_auto = 1;
+  init_stream(&set, SCALCAL_MAX_POSES);
+  turning_session(&m, 24, &det, &set);
+  share = (double)set.windows_moving / set.windows_judged;
+  CHECK(set.count >= 9, "turning: %u poses (pauses of 2.5 s)", (unsigned)set.count);
+  CHECK(share > 0.8 && share < 0.92, "turning: moving share %g (expected 0.86)", share);
+  s = scalcal_fit(&set, &o, &c, 0);
+  CHECK(s == SCALCAL_E_MOVING, "turning: %s", scalcal_status_text(s));
+  init_stream(&set, SCALCAL_MAX_POSES);
+  session(&m, 24, &det, &set);
+  share = (double)set.windows_moving / set.windows_judged;
+  CHECK(share > 0.5 && share < 0.61, "hand-held: moving share %g (expected 0.56)", share);
+  s = scalcal_fit(&set, &o, &c, 0);
+  CHECK(s == SCALCAL_OK, "hand-held: %s", scalcal_status_text(s));
+}
+
 int main(void) {
   test_truth(9.80665, 0, "accelerometer in counts");
   test_truth(48.0, 1, "magnetometer, field unknown");
@@ -444,6 +484,7 @@ int main(void) {
   test_degenerate();
   test_record();
   test_guidance();
+  test_moving(); /* last: the random stream of the tests above stays as it was */
   printf("%s unit tests (%s): %d failures\n", failures ? "FAILED" : "passed",
          sizeof(scalcal_real) == 8 ? "double" : "float", failures);
   return failures ? 1 : 0;

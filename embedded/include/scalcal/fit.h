@@ -68,7 +68,9 @@ void scalcal_fit_options_default(scalcal_fit_options* options);
 /* Fits `set` (at least as many poses as the model has parameters). SCALCAL_OK fills *cal; any other
  * status leaves *cal untouched and says why: SCALCAL_E_TOO_FEW_POSES, SCALCAL_E_NOT_IDENTIFIABLE,
  * SCALCAL_E_NO_START, SCALCAL_E_MAGNITUDE, SCALCAL_E_NOT_CONVERGED, SCALCAL_E_NOT_FINITE,
- * SCALCAL_E_DEGENERATE, SCALCAL_E_ARGUMENT. report may be null. Stack: about 3 KB in float. */
+ * SCALCAL_E_DEGENERATE, SCALCAL_E_ARGUMENT, and SCALCAL_E_MOVING for a set filled by the detector
+ * from a stream that moved in more than 3/4 of its windows (README.md, detector rule 8). report may
+ * be null. Stack: about 3 KB in float. */
 scalcal_status scalcal_fit(const scalcal_pose_set* set, const scalcal_fit_options* options, scalcal_calibration* cal,
                            scalcal_fit_report* report);
 

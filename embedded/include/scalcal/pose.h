@@ -38,6 +38,10 @@ typedef struct {
   uint32_t capacity, count;
   scalcal_real origin[3]; /* the first sample the set saw; every pose is stored relative to it */
   int has_origin;
+  /* Set by the still-pose detector (0 for poses summed otherwise): the windows it judged once it had
+   * a noise floor, and those of them that moved (variance norm above 3 times the floor). The fit
+   * refuses a set whose stream moved in more than 3/4 of its windows (SCALCAL_E_MOVING). */
+  uint32_t windows_judged, windows_moving;
 } scalcal_pose_set;
 
 /* Empties `set` over `storage` (capacity poses). SCALCAL_E_ARGUMENT for a null pointer or capacity 0. */

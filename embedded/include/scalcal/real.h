@@ -45,7 +45,8 @@ typedef enum {
   SCALCAL_E_NOT_FINITE,       /* an input or a result that is NaN or infinite */
   SCALCAL_E_DEGENERATE,       /* the correction is singular, two axes nearly parallel, or its condition > 100 */
   SCALCAL_E_FULL,             /* the pose set is full: a still pose was not stored */
-  SCALCAL_E_RECORD            /* a flash record with a wrong magic, version, size or checksum */
+  SCALCAL_E_RECORD,           /* a flash record with a wrong magic, version, size or checksum */
+  SCALCAL_E_MOVING            /* the detector's stream moved most of the time: its "poses" are slow motion */
 } scalcal_status;
 
 /* One line describing a status (a string literal). */
