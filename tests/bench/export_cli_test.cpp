@@ -25,6 +25,7 @@
 #include <Eigen/Dense>
 #include <nlohmann/json.hpp>
 
+#include "tests/common/export_text.hpp"
 #include "tests/common/run_cli.hpp"
 
 namespace scalcal::testing {
@@ -86,37 +87,6 @@ std::string exported(const std::string& args, const std::string& calibration = "
   const CliResult r = run_cli("export " + (calibration.empty() ? data().calibration : calibration) + " " + args);
   EXPECT_EQ(r.status, 0) << args << ": " << r.err;
   return r.out;
-}
-
-// Every number in the text after `key` up to the end of its statement, in order.
-std::vector<double> numbers_after(const std::string& text, const std::string& key, int count) {
-  const std::regex number(R"([-+]?[0-9]*\.?[0-9]+(?:[eE][-+]?[0-9]+)?)");
-  std::vector<double> out;
-  std::string rest = text.substr(text.find(key) + key.size());
-  for (std::sregex_iterator it(rest.begin(), rest.end(), number);
-       it != std::sregex_iterator() && static_cast<int>(out.size()) < count; ++it)
-    out.push_back(std::stod(it->str()));
-  return out;
-}
-
-// NAME VALUE parameters: QGroundControl's tab-separated rows or ArduPilot's NAME,VALUE.
-std::map<std::string, double> parameters(const std::string& text) {
-  std::map<std::string, double> p;
-  std::istringstream in(text);
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    std::vector<std::string> f;
-    std::string field;
-    std::istringstream fields(line);
-    const char sep = line.find('\t') != std::string::npos ? '\t' : ',';
-    while (std::getline(fields, field, sep)) f.push_back(field);
-    if (sep == '\t')
-      p[f[2]] = std::stod(f[3]);
-    else
-      p[f[0]] = std::stod(f[1]);
-  }
-  return p;
 }
 
 template <class Apply>

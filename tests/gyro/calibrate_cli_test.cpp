@@ -2,7 +2,6 @@
 // --instrument gyro, its truth file) calibrated back within 4 standard errors of its truth (the
 // coverage over many seeds is truth_test.cpp's), the per-segment rate column agreeing with one rate,
 // the file read by correct and export, and the options refused where they do not belong.
-#include <cctype>
 #include <cmath>
 #include <sstream>
 #include <string>
@@ -12,6 +11,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "tests/common/export_text.hpp"
 #include "tests/common/run_cli.hpp"
 
 namespace scalcal::testing {
@@ -142,27 +142,6 @@ std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> raw_and_corrected(const
   return out;
 }
 
-// The numbers after a key in an export's text: count of them, brackets and commas skipped.
-std::vector<double> numbers_after(const std::string& text, const std::string& key, int count) {
-  std::vector<double> out;
-  std::size_t at = text.find(key);
-  if (at == std::string::npos) return out;
-  at += key.size();
-  while (static_cast<int>(out.size()) < count && at < text.size()) {
-    const char c = text[at];
-    const bool sign = (c == '-' || c == '.') && at + 1 < text.size() &&
-                      std::isdigit(static_cast<unsigned char>(text[at + 1]));  // not YAML's list dash
-    if (std::isdigit(static_cast<unsigned char>(c)) || sign) {
-      std::size_t used = 0;
-      out.push_back(std::stod(text.substr(at), &used));
-      at += used;
-    } else {
-      ++at;
-    }
-  }
-  return out;
-}
-
 // A gyro's exports applied as their targets apply them give correct's vectors: OpenVINS's kalibr model
 // w = R_IMUtoGYRO^T Tw^-1 (w_m - b_g) with the offset as its initial bias; PX4's and ArduPilot's offsets
 // (w_m - offset) on an offsets-only calibration (bias3, whose common gain they drop and say so).
@@ -200,12 +179,9 @@ TEST(GyroCalibrateCli, ExportsAppliedTheirTargetsWay) {
   // and say so; raw minus their offsets (9 digits printed), times g, is correct's vector to 1e-9 rad/s.
   EXPECT_NE(px4.err.find("cannot carry a gyroscope's scale factors"), std::string::npos) << px4.err;
   const double g = Json::parse(slurp(cal3))["matrix"][0][0].get<double>();
-  const Eigen::Vector3d o_px4(numbers_after(px4.out, "CAL_GYRO0_XOFF", 1)[0],
-                              numbers_after(px4.out, "CAL_GYRO0_YOFF", 1)[0],
-                              numbers_after(px4.out, "CAL_GYRO0_ZOFF", 1)[0]);
-  const Eigen::Vector3d o_ap(numbers_after(ap.out, "INS_GYROFFS_X,", 1)[0],
-                             numbers_after(ap.out, "INS_GYROFFS_Y,", 1)[0],
-                             numbers_after(ap.out, "INS_GYROFFS_Z,", 1)[0]);
+  const auto p = parameters(px4.out), a = parameters(ap.out);
+  const Eigen::Vector3d o_px4(p.at("CAL_GYRO0_XOFF"), p.at("CAL_GYRO0_YOFF"), p.at("CAL_GYRO0_ZOFF"));
+  const Eigen::Vector3d o_ap(a.at("INS_GYROFFS_X"), a.at("INS_GYROFFS_Y"), a.at("INS_GYROFFS_Z"));
   for (const auto& [raw, c] : raw_and_corrected(log, corrected3.out, 300)) {
     ASSERT_LT((g * (raw - o_px4) - c).norm(), 1e-9) << raw.transpose();
     ASSERT_LT((g * (raw - o_ap) - c).norm(), 1e-9) << raw.transpose();
