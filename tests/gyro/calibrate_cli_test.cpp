@@ -44,6 +44,25 @@ void expect_scalar_truth(const Json& c, const Json& truth) {
         << pairs[k];
 }
 
+// The first n rows of a raw log and of correct's output for it: (raw, corrected) vectors.
+std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> raw_and_corrected(const std::string& log,
+                                                                           const std::string& corrected, int n) {
+  std::istringstream rows(corrected), raw(slurp(log));
+  std::string line, raw_line;
+  std::getline(rows, line);
+  std::getline(raw, raw_line);
+  std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> out;
+  for (int i = 0; i < n && std::getline(rows, line) && std::getline(raw, raw_line); ++i) {
+    double v[4], r[4];
+    char comma;
+    std::istringstream a(line), b(raw_line);
+    a >> v[0] >> comma >> v[1] >> comma >> v[2] >> comma >> v[3];
+    b >> r[0] >> comma >> r[1] >> comma >> r[2] >> comma >> r[3];
+    out.push_back({Eigen::Vector3d(r[1], r[2], r[3]), Eigen::Vector3d(v[1], v[2], v[3])});
+  }
+  return out;
+}
+
 TEST(GyroCalibrateCli, RateTableBackToItsTruth) {
   const std::string log = path("cal_rt.csv"), truth = path("cal_rt_truth.json"), cal = path("cal_rt.json");
   ASSERT_EQ(run_cli("simulate --instrument gyro --program dodecahedral-12 --noise 1e-3 --dwell 6 --log " + log +
@@ -62,11 +81,7 @@ TEST(GyroCalibrateCli, RateTableBackToItsTruth) {
   // correct and export read the file; imu_tk's T K (X - B) is correct's vector.
   const CliResult corrected = run_cli("correct --calibration " + cal + " --measurements " + log + " --out -");
   ASSERT_EQ(corrected.status, 0) << corrected.err;
-  std::istringstream rows(corrected.out), raw(slurp(log));
-  std::string header, raw_header;
-  std::getline(rows, header);
-  std::getline(raw, raw_header);
-  EXPECT_EQ(header, "t,x,y,z,modulus");
+  EXPECT_EQ(corrected.out.substr(0, corrected.out.find('\n')), "t,x,y,z,modulus");
   const CliResult imu_tk = run_cli("export " + cal + " --format imu_tk");
   ASSERT_EQ(imu_tk.status, 0) << imu_tk.err;
   std::istringstream t(imu_tk.out);
@@ -75,18 +90,10 @@ TEST(GyroCalibrateCli, RateTableBackToItsTruth) {
   ASSERT_TRUE(t);
   const Eigen::Matrix<double, 3, 3, Eigen::RowMajor> T(n), K(n + 9);
   const Eigen::Vector3d B(n[18], n[19], n[20]);
-  for (int i = 0; i < 200; ++i) {
-    std::string line, raw_line;
-    std::getline(rows, line);
-    std::getline(raw, raw_line);
-    double v[5], r[5];
-    char comma;
-    std::istringstream a(line), b(raw_line);
-    a >> v[0] >> comma >> v[1] >> comma >> v[2] >> comma >> v[3];
-    b >> r[0] >> comma >> r[1] >> comma >> r[2] >> comma >> r[3];
-    const Eigen::Vector3d theirs = T * K * (Eigen::Vector3d(r[1], r[2], r[3]) - B);
-    EXPECT_LT((theirs - Eigen::Vector3d(v[1], v[2], v[3])).norm(), 1e-12) << "row " << i;
-  }
+  const auto rows = raw_and_corrected(log, corrected.out, 200);
+  ASSERT_EQ(rows.size(), 200u);
+  for (std::size_t i = 0; i < rows.size(); ++i)
+    EXPECT_LT((T * K * (rows[i].first - B) - rows[i].second).norm(), 1e-12) << "row " << i;
 }
 
 TEST(GyroCalibrateCli, KnownTurnsBackToTheirTruth) {
@@ -121,25 +128,6 @@ TEST(GyroCalibrateCli, HandRotationsBackToTheirTruth) {
           << a << b;
     EXPECT_NEAR(c["offset"][a].get<double>(), t["offset"][a].get<double>(), 4 * c["offset_std"][a].get<double>());
   }
-}
-
-// The first n rows of a raw log and of correct's output for it: (raw, corrected) vectors.
-std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> raw_and_corrected(const std::string& log,
-                                                                           const std::string& corrected, int n) {
-  std::istringstream rows(corrected), raw(slurp(log));
-  std::string line, raw_line;
-  std::getline(rows, line);
-  std::getline(raw, raw_line);
-  std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> out;
-  for (int i = 0; i < n && std::getline(rows, line) && std::getline(raw, raw_line); ++i) {
-    double v[4], r[4];
-    char comma;
-    std::istringstream a(line), b(raw_line);
-    a >> v[0] >> comma >> v[1] >> comma >> v[2] >> comma >> v[3];
-    b >> r[0] >> comma >> r[1] >> comma >> r[2] >> comma >> r[3];
-    out.push_back({Eigen::Vector3d(r[1], r[2], r[3]), Eigen::Vector3d(v[1], v[2], v[3])});
-  }
-  return out;
 }
 
 // A gyro's exports applied as their targets apply them give correct's vectors: OpenVINS's kalibr model
