@@ -20,6 +20,7 @@
 
 #include "commands/usage_error.hpp"
 #include "numeric/calibration/measurements_csv.hpp"
+#include "numeric/io/blas_kernel.hpp"
 #include "numeric/io/input_error.hpp"
 #include "numeric/io/interrupt.hpp"
 #include "numeric/io/resource_error.hpp"
@@ -188,6 +189,7 @@ PYBIND11_MODULE(_scalcal, m) {
   namespace sp = scalcal::python;
   m.doc() = "scalcal's compiled core: option tables and one runner (use the package `scalcal`)";
   m.attr("__version__") = SCALCAL_VERSION;
+  m.def("blas_kernel", &scalcal::blas_kernel, "the OpenBLAS kernel in use (\"\" for another BLAS)");
   scalcal::symbolic::register_family_programs();  // the families' program names, as the CLI has them
   static py::exception<scalcal::InputError> input_error(m, "InputError", PyExc_ValueError);
   static py::exception<scalcal::UsageError> usage_error(m, "UsageError", PyExc_ValueError);

@@ -18,6 +18,7 @@
 #include "experiments/cli/command.hpp"
 #include "experiments/cli/man_page.hpp"
 #include "experiments/cli/output_file.hpp"
+#include "numeric/io/blas_kernel.hpp"
 #include "numeric/io/input_error.hpp"
 #include "numeric/io/resource_error.hpp"
 #include "symbolic/family.hpp"
@@ -115,6 +116,7 @@ int checked(int status) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  scalcal::pin_blas_kernel();  // the same numbers on every CPU (numeric/io/blas_kernel.hpp)
 #if defined(__GLIBC__)
   // Ipopt and MUMPS allocate and free their workspace at every iteration; glibc's default returned the
   // heap's top to the system each time and took fresh zeroed pages back (1.4 million page faults and

@@ -14,6 +14,11 @@ import json as _json
 import os as _os
 import warnings as _warnings
 
+# The same numbers as the CLI on every CPU: OpenBLAS's generic kernel, which it reads when it loads
+# (numeric/io/blas_kernel.hpp); checked below, since numpy imported first has loaded it already.
+_KERNEL_CHOSEN = "OPENBLAS_CORETYPE" in _os.environ
+_os.environ.setdefault("OPENBLAS_CORETYPE", "Prescott")
+
 from . import _scalcal
 
 # A package installed by pip carries the paper's tables beside it (setup.py); the C++ reads SCALCAL_DATA.
@@ -22,6 +27,10 @@ if _os.path.isfile(_os.path.join(_DATA, "table1_A.csv")):
     _os.environ.setdefault("SCALCAL_DATA", _DATA)
 
 __version__ = _scalcal.__version__
+if not _KERNEL_CHOSEN and _scalcal.blas_kernel() not in ("", "Prescott"):
+    _warnings.warn("OpenBLAS was loaded before scalcal (numpy imported first?) with its " + _scalcal.blas_kernel() +
+                   " kernel: the last digits may differ from the CLI's; import scalcal first or set "
+                   "OPENBLAS_CORETYPE=Prescott")
 __all__ = ["Error", "InputError", "UsageError", "ConvergenceError", "ScalcalWarning", "Calibration", "program"]
 
 
