@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <iomanip>
 #include <sstream>
 
@@ -393,6 +394,21 @@ CalibrateResult calibrate(const CalibrateRequest& q, CalibrationInput in, const 
 }
 
 CalibrateResult calibrate(const CalibrateRequest& q, const Progress& progress) {
+  if (q.thermal) {
+    char* end = nullptr;
+    const double magnitude = std::strtod(q.magnitude.c_str(), &end);
+    if (q.magnitude == "auto" || *end != '\0')
+      throw UsageError(
+          "calibrate: a thermal model needs --magnitude M, the field's modulus in the log's units (not auto)");
+    CalibrateResult r;
+    r.file = q.file;
+    r.request = q;
+    const CsvTable table = q.table ? *q.table : read_csv(q.file);
+    r.thermal = std::make_shared<ThermalCalibration>(
+        calibrate_thermal(q.file, table, *q.thermal, q.temperature, magnitude, q.intervals));
+    r.warnings = r.thermal->warnings;
+    return r;
+  }
   check_calibrate_request(q);
   return calibrate(q, read_calibration_input(q), progress);
 }

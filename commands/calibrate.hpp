@@ -4,12 +4,14 @@
 // residuals between them), each position's residual, the measured program's quality and the
 // positions worth adding. Nothing here prints or writes: warnings are returned as data.
 #pragma once
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "commands/option_table.hpp"
 #include "commands/progress.hpp"
+#include "commands/thermal_calibrate.hpp"
 #include "commands/values.hpp"
 #include "commands/warning.hpp"
 #include "numeric/calibration/adaptive_detection.hpp"
@@ -53,6 +55,8 @@ struct CalibrateRequest {
   Warnings warnings;                      // found while reading the request
   std::optional<ModelKind> model;         // empty: auto, the richest linear model the layout carries
   std::optional<CsvTable> table;          // the data given as columns (Python), instead of reading `file`
+  std::optional<ThermalModel> thermal;    // --model BASE+Tk: a thermal log's fit (commands/thermal_calibrate.hpp)
+  std::optional<TemperatureRange> temperature;  // --temperature: tau's interval (default: the poses' span)
 };
 
 // What the data held: positions, and for a raw log how they were found.
@@ -131,10 +135,13 @@ struct CalibrateResult {
   int rows = 0;                                // a raw log's rows
   double sample_rate = NAN;                    // a raw log's, Hz
   ProgramQuality program;
-  double t95 = NAN;  // Student's t at 97.5 % for dof (95 % two-sided), NaN for dof < 1
+  double t95 = NAN;                                   // Student's t at 97.5 % for dof (95 % two-sided), NaN for dof < 1
+  std::shared_ptr<const ThermalCalibration> thermal;  // a thermal model's calibration (then the rest is empty)
   Warnings warnings;
 
-  bool converged() const { return fit.estimate.summary.converged(); }
+  bool converged() const {
+    return thermal ? thermal->fit.converged && thermal->fit.problem.empty() : fit.estimate.summary.converged();
+  }
   int status() const { return converged() ? 0 : 1; }  // the CLI's exit status
 };
 

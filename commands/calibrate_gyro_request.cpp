@@ -59,7 +59,14 @@ GyroCalibrateRequest gyro_calibrate_request(const Values& v) {
     q.raw_units = units.substr(0, comma);
     q.physical_units = units.substr(comma + 1);
   }
-  if (v.text("--model") != "auto") q.model = *parse_model(v.text("--model"));
+  if (v.given("--temperature")) throw UsageError("--temperature belongs to a thermal model, not to --instrument gyro");
+  if (v.text("--model") != "auto") {
+    const auto model = parse_model(v.text("--model"));
+    if (!model)
+      throw UsageError("--instrument gyro: --model " + v.text("--model") +
+                       " is no gyro model (thermal models are the accelerometer's and magnetometer's)");
+    q.model = *model;
+  }
   gyro_method(q);  // refuses a contradictory set of options before any file is read
   return q;
 }

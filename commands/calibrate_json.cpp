@@ -175,6 +175,7 @@ void add_log(const CalibrateResult& r, Json& j) {
 }  // namespace
 
 Json to_json(const CalibrateResult& r) {
+  if (r.thermal) return to_json(*r.thermal);
   const AnyUnitsCalibration& a = r.fit;
   const auto& e = a.estimate;
   Json j{{"instrument", r.instrument ? Json(std::string(instrument_name(*r.instrument))) : Json()},

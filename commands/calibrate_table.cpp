@@ -54,6 +54,33 @@ void read_units(const Values& v, CalibrateRequest& q) {
 
 }  // namespace
 
+namespace {
+
+// --model: auto, a registered model, or a thermal model BASE+Tk (numeric/thermal/thermal_model.hpp).
+Option calibrate_model_option() {
+  Option model = choice_option("--model", model_choices(),
+                               "the calibration model: auto (the richest of paper9, axis6, bias3 that the positions "
+                               "identify), or one of the registered models, or a thermal model paper9+Tk / "
+                               "paper9+bias:Tk (a log with a temperature column: temp, temperature or t_c)",
+                               "auto");
+  model.value_name = "auto|NAME";
+  model.kind = OptionKind::text;
+  model.why_bad = [choices = model.choices](const std::string& text) -> std::string {
+    for (const auto& c : choices)
+      if (text == c) return "";
+    try {
+      if (parse_thermal_model(text)) return "";
+    } catch (const std::invalid_argument& e) {
+      return e.what();
+    }
+    return "must be auto, one of the registered models or BASE+Tk (got '" + text + "')";
+  };
+  model.choices.clear();
+  return model;
+}
+
+}  // namespace
+
 const CommandTable& calibrate_table() {
   Option measurements = text_option(
       "--measurements", "FILE",
@@ -69,11 +96,7 @@ const CommandTable& calibrate_table() {
                   "physical units", "");
   magnitude.fallback_text = "required, unless --instrument gyro with --turn-angle or --accelerometer";
   magnitude.why_bad = [](const std::string& m) { return m.rfind("column:", 0) == 0 ? "" : magnitude_problem(m); };
-  Option model = choice_option("--model", model_choices(),
-                               "the calibration model: auto (the richest of paper9, axis6, bias3 that the positions "
-                               "identify), or one of the registered models",
-                               "auto");
-  model.value_name = "auto|NAME";
+  const Option model = calibrate_model_option();
   Option still = positive_option("--still",
                                  "take the noise floor from the log's initial still period of this length (default: "
                                  "from the log's quietest windows, no still start needed)",
@@ -95,6 +118,7 @@ const CommandTable& calibrate_table() {
       {measurements,
        magnitude,
        model,
+       temperature_option(),
        choice_option("--modulus", {"norm", "projection"},
                      "the modulus: norm (m_I, |measured|) or projection (m_II, onto the nominal direction)", "norm"),
        choice_option("--format", {"auto", "csv", "text"},
@@ -198,6 +222,16 @@ CalibrateRequest calibrate_request(const Values& v) {
         "--instrument gyro: a gyroscope's calibration is calibrate_gyro's (commands/calibrate_gyro.hpp), not this "
         "request's");
   read_units(v, q);
+  q.thermal = parse_thermal_model(v.text("--model"));
+  if (v.given("--temperature")) {
+    if (!q.thermal) throw UsageError("--temperature needs a thermal model, --model BASE+Tk (e.g. paper9+T2)");
+    q.temperature = parse_temperature_range(v.text("--temperature"));
+  }
+  if (q.thermal) {
+    if (q.thermal->base != ModelKind::paper9)
+      throw UsageError("--model " + q.thermal->name() + ": a thermal log is fitted under paper9+Tk or paper9+bias:Tk");
+    return q;
+  }
   if (v.text("--model") != "auto") q.model = *parse_model(v.text("--model"));
   check_calibrate_request(q);
   return q;

@@ -6,6 +6,8 @@
 
 #include "numeric/io/input_error.hpp"
 #include "numeric/program/catalogue.hpp"
+#include "numeric/thermal/temperature_range.hpp"
+#include "numeric/thermal/thermal_model.hpp"
 
 namespace scalcal::commands {
 
@@ -112,6 +114,41 @@ Option model_option() {
             std::string(visit_model(ModelKind(i), [](auto M) { return decltype(M)::summary; })) + ")";
   Option o = choice_option("--model", model_names(), what, "paper9");
   o.value_name = "NAME";
+  return o;
+}
+
+Option model_or_thermal_option() {
+  Option o = model_option();
+  o.what +=
+      "; or a thermal model BASE+Tk (every parameter a polynomial of degree k in temperature) or "
+      "BASE+bias:Tk (the biases only), k = 1.." +
+      std::to_string(kMaxThermalDegree);
+  o.kind = OptionKind::text;
+  o.choices.clear();
+  o.why_bad = [](const std::string& text) -> std::string {
+    if (parse_model(text)) return "";
+    try {
+      if (parse_thermal_model(text)) return "";
+    } catch (const std::invalid_argument& e) {
+      return e.what();
+    }
+    return "must be one of " + scalcal::model_names(", ") + ", or BASE+Tk / BASE+bias:Tk (got '" + text + "')";
+  };
+  return o;
+}
+
+Option temperature_option() {
+  Option o = text_option(
+      "--temperature", "T1..T2",
+      "the temperatures a thermal model spans (its polynomials are in tau = (T - middle) / half-range)", "degC");
+  o.why_bad = [](const std::string& text) -> std::string {
+    try {
+      parse_temperature_range(text);
+      return "";
+    } catch (const std::invalid_argument& e) {
+      return e.what();
+    }
+  };
   return o;
 }
 

@@ -25,13 +25,16 @@ std::string shortest_text(double x);            // the shortest text that reads 
 
 // --criterion: every registered criterion, with its normalised form in the help ("D = N^9 det K").
 Option criterion_option(const std::string& fallback = "D");
-Option model_option();      // --model, default paper9
-Option region_option();     // --region SPEC, repeatable (their union)
-Option tolerance_option();  // --tolerance DEG: how far outside the region a position still counts as inside
-Option seed_option();       // --seed, default 1
-Option starts_option();     // --starts, default adaptive
-Option threads_option();    // --threads, default 0 = all cores
-Option local_option();      // --local auto|newton|lbfgs|ipopt
+Option model_option();  // --model, default paper9
+// --model that also takes a thermal model, BASE+Tk or BASE+bias:Tk (numeric/thermal/thermal_model.hpp)
+Option model_or_thermal_option();
+Option temperature_option();  // --temperature T1..T2 (degrees Celsius), the range a thermal model spans
+Option region_option();       // --region SPEC, repeatable (their union)
+Option tolerance_option();    // --tolerance DEG: how far outside the region a position still counts as inside
+Option seed_option();         // --seed, default 1
+Option starts_option();       // --starts, default adaptive
+Option threads_option();      // --threads, default 0 = all cores
+Option local_option();        // --local auto|newton|lbfgs|ipopt
 Option program_argument(const std::string& what = "");  // PROGRAM: a catalogue name or a CSV file
 Option json_option(const std::string& what);            // --json (the CLI's output form)
 Option out_option(const std::string& what, const std::string& value_name = "FILE");  // --out (the CLI writes it)

@@ -19,7 +19,8 @@ const CommandTable& evaluate_table() {
       "evaluate",
       "the criteria (" + criterion_names_text() + "), the RMS errors theta and K of a catalogue program or CSV file",
       10,
-      {program_argument(), model_option(), region_option(), design_instrument_option(), tolerance_option(),
+      {program_argument(), model_or_thermal_option(), temperature_option(), region_option(), design_instrument_option(),
+       tolerance_option(),
        out_option("also write the program as CSV x,y,z,alpha1_deg,alpha2_deg (and its region line)"),
        json_option("print one JSON object (the criteria, the program and K)")}};
   return table;
@@ -28,6 +29,19 @@ const CommandTable& evaluate_table() {
 EvaluateRequest evaluate_request(const Values& v) {
   EvaluateRequest q;
   q.name = v.text("PROGRAM");
+  q.thermal = parse_thermal_model(v.text("--model"));
+  if (v.given("--temperature")) q.temperature = parse_temperature_range(v.text("--temperature"));
+  if (q.thermal) {
+    if (v.program) throw UsageError("evaluate: a thermal program is a CSV file with columns x,y,z,t_c, not an array");
+    if (!q.temperature)
+      throw UsageError("evaluate: --model " + q.thermal->name() + " needs --temperature T1..T2 (degrees Celsius)");
+    q.model = q.thermal->base;
+    q.regions = v.list("--region");
+    q.thermal_program = read_thermal_program_csv(q.name);
+    return q;
+  }
+  if (q.temperature)
+    throw UsageError("evaluate: --temperature needs a thermal model, --model BASE+Tk (e.g. paper9+T3)");
   q.program = program_of(v);
   q.model = model_of(v);
   // --instrument gyro reverses turns on the regions given here; a program file's own region line
@@ -39,6 +53,14 @@ EvaluateRequest evaluate_request(const Values& v) {
 }
 
 EvaluateResult evaluate(const EvaluateRequest& q, const Progress& progress) {
+  if (q.thermal) {
+    if (!q.regions.empty()) throw UsageError("evaluate: a thermal model is judged on the sphere only (got --region)");
+    EvaluateResult r;
+    r.name = q.name;
+    r.thermal = evaluate_thermal(q.name, q.thermal_program, *q.thermal, *q.temperature);
+    r.warnings = r.thermal->warnings;
+    return r;
+  }
   if (q.model != ModelKind::paper9 && !q.regions.empty())
     throw UsageError("evaluate: --region has limits for the paper9 model only (got --model " +
                      std::string(model_name(q.model)) + ")");
@@ -65,6 +87,7 @@ EvaluateResult evaluate(const EvaluateRequest& q, const Progress& progress) {
 }
 
 Json to_json(const EvaluateResult& r) {
+  if (r.thermal) return to_json(*r.thermal);
   Json j = evaluation_json(r.evaluation, r.program);
   if (r.region) {
     j["region"] = r.region->text();

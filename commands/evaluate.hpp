@@ -10,6 +10,7 @@
 #include "commands/limits_statement.hpp"
 #include "commands/option_table.hpp"
 #include "commands/progress.hpp"
+#include "commands/thermal_evaluate.hpp"
 #include "commands/values.hpp"
 #include "commands/warning.hpp"
 #include "numeric/criteria/model_evaluation.hpp"
@@ -22,9 +23,12 @@ struct EvaluateRequest {
   std::string name;  // the program's name in messages (a file, a catalogue name, "positions")
   Program program;
   ModelKind model = ModelKind::paper9;
-  std::vector<std::string> regions;  // --region specs, else the program file's; none: the sphere (no efficiencies)
-  double tolerance_deg = 0.05;       // positions this far outside the region count as inside
-  Warnings warnings;                 // found while reading the request (a region line replaced)
+  std::vector<std::string> regions;     // --region specs, else the program file's; none: the sphere (no efficiencies)
+  double tolerance_deg = 0.05;          // positions this far outside the region count as inside
+  Warnings warnings;                    // found while reading the request (a region line replaced)
+  std::optional<ThermalModel> thermal;  // --model BASE+Tk: then the program is thermal_program
+  std::optional<TemperatureRange> temperature;  // --temperature, which a thermal model needs
+  ThermalProgram thermal_program;
 };
 
 struct EvaluateResult {
@@ -35,11 +39,12 @@ struct EvaluateResult {
   // limit / value per criterion on the region (D as its P-th root); nullopt: no known limit there.
   std::array<std::optional<double>, kCriterionCount> efficiency{};
   std::array<std::optional<ReportedLimit>, kCriterionCount> limits{};  // what each efficiency is against
-  std::vector<ExtraColumn> columns;  // tilt and azimuth for a program file, on a one-zone region
+  std::vector<ExtraColumn> columns;          // tilt and azimuth for a program file, on a one-zone region
+  std::optional<ThermalEvaluation> thermal;  // a thermal model's evaluation (then the rest is empty)
   Warnings warnings;
 };
 
-// PROGRAM [--model NAME] [--region SPEC]... [--tolerance DEG] [--out FILE] [--json]
+// PROGRAM [--model NAME] [--temperature T1..T2] [--region SPEC]... [--tolerance DEG] [--out FILE] [--json]
 const CommandTable& evaluate_table();
 EvaluateRequest evaluate_request(const Values& values);
 

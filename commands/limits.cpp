@@ -61,16 +61,33 @@ const CommandTable& limits_table() {
       "N -> infinity limits of the normalised " + criterion_names_text() +
           " criteria: exact on the sphere, certified bounds on a region",
       61,
-      {model_option(), region_option(), design_instrument_option(),
+      {model_or_thermal_option(), temperature_option(), region_option(), design_instrument_option(),
        out_option("write the limits as CSV, one row per criterion: criterion,limit,exact,lower_bound"),
        json_option("print one JSON object keyed by criterion")}};
   return table;
 }
 
-LimitsRequest limits_request(const Values& v) { return {model_of(v), instrument_regions(v, v.list("--region"))}; }
+LimitsRequest limits_request(const Values& v) {
+  LimitsRequest q;
+  q.regions = instrument_regions(v, v.list("--region"));
+  q.thermal = parse_thermal_model(v.text("--model"));
+  q.model = q.thermal ? q.thermal->base : model_of(v);
+  if (v.given("--temperature")) q.temperature = parse_temperature_range(v.text("--temperature"));
+  return q;
+}
 
 LimitsResult limits(const LimitsRequest& q, const Progress& progress) {
   const bool sphere = is_sphere(q.regions);
+  if (q.thermal || q.temperature) {
+    if (!q.thermal) throw UsageError("limits: --temperature needs a thermal model, --model BASE+Tk (e.g. paper9+T3)");
+    if (!q.temperature)
+      throw UsageError("limits: --model " + q.thermal->name() + " needs --temperature T1..T2 (degrees Celsius)");
+    if (!sphere) throw UsageError("limits: a thermal model's limits are on the sphere only (got --region)");
+    LimitsResult r;
+    r.model = q.model;
+    r.thermal = thermal_limits(*q.thermal, *q.temperature);
+    return r;
+  }
   if (q.model != ModelKind::paper9 && !sphere)
     throw UsageError("limits: --region has limits for the paper9 model only (got --model " +
                      std::string(model_name(q.model)) + ")");

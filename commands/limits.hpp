@@ -9,6 +9,7 @@
 #include "commands/common_options.hpp"
 #include "commands/json.hpp"
 #include "commands/progress.hpp"
+#include "commands/thermal_limits.hpp"
 #include "commands/warning.hpp"
 #include "numeric/model/registry.hpp"
 #include "numeric/region/region_limit.hpp"
@@ -17,7 +18,9 @@ namespace scalcal::commands {
 
 struct LimitsRequest {
   ModelKind model = ModelKind::paper9;
-  std::vector<std::string> regions;  // none, or only "sphere": the sphere
+  std::vector<std::string> regions;             // none, or only "sphere": the sphere
+  std::optional<ThermalModel> thermal;          // --model BASE+Tk: a thermal model (then `model` is its base)
+  std::optional<TemperatureRange> temperature;  // --temperature, which a thermal model needs
 };
 
 // One criterion's limit on the sphere: its exact form and the moments of an optimal measure.
@@ -40,12 +43,13 @@ struct CriterionLimits {
 
 struct LimitsResult {
   ModelKind model = ModelKind::paper9;
-  std::optional<Region> region;           // when the request names one other than the sphere
-  std::vector<CriterionLimits> criteria;  // every registered criterion, in the registry's order
+  std::optional<Region> region;                // when the request names one other than the sphere
+  std::vector<CriterionLimits> criteria;       // every registered criterion, in the registry's order
+  std::optional<ThermalLimitsResult> thermal;  // a thermal model's limits (then `criteria` is empty)
   Warnings warnings;
 };
 
-// [--model NAME] [--region SPEC]... [--json]
+// [--model NAME] [--temperature T1..T2] [--region SPEC]... [--json]
 const CommandTable& limits_table();
 LimitsRequest limits_request(const Values& values);
 

@@ -55,6 +55,7 @@ Json region_json(const RegionLimit& l, const std::string& exact, double sphere) 
 }  // namespace
 
 Json to_json(const LimitsResult& r) {
+  if (r.thermal) return to_json(*r.thermal);
   Json j = Json::object();
   if (r.model != ModelKind::paper9) j["model"] = std::string(model_name(r.model));
   if (r.region) j["region"] = r.region->text();

@@ -6,6 +6,7 @@
 
 #include "commands/gyro_regions.hpp"
 #include "commands/region_request.hpp"
+#include "commands/thermal_optimize.hpp"
 #include "commands/usage_error.hpp"
 #include "commands/work_bound.hpp"
 #include "numeric/criteria/identifiability.hpp"
@@ -69,7 +70,7 @@ const CommandTable& optimize_table() {
                                     "start 0 of the multistart is this program (a catalogue name, a family member "
                                     "such as jig:cuboctahedron, or a CSV file); N is its size",
                                     "catalogue name or file path")),
-       criterion_option(), model_option(), region_option(), design_instrument_option(),
+       criterion_option(), model_or_thermal_option(), temperature_option(), region_option(), design_instrument_option(),
        named(number_option("--margin", 0, 10,
                            "design every position this far inside the region's boundaries (the efficiency stays "
                            "judged against the region itself)",
@@ -93,7 +94,9 @@ OptimizeRequest optimize_request(const Values& v) {
   q.from = v.text("--from");
   if (v.given("--from")) q.start = program_of(v, "--from");
   q.synthesis.criterion = criterion_of(v);
-  q.synthesis.model = model_of(v);
+  q.thermal = parse_thermal_model(v.text("--model"));
+  q.synthesis.model = q.thermal ? q.thermal->base : model_of(v);
+  if (v.given("--temperature")) q.temperature = parse_temperature_range(v.text("--temperature"));
   q.regions = instrument_regions(v, v.list("--region"));
   q.margin_deg = v.number("--margin");
   q.synthesis.starts = static_cast<int>(v.integer("--starts"));
@@ -105,6 +108,19 @@ OptimizeRequest optimize_request(const Values& v) {
 }
 
 OptimizeResult optimize(const OptimizeRequest& q, const Progress& progress) {
+  if (q.thermal || q.temperature) {
+    if (!q.thermal) throw UsageError("optimize: --temperature needs a thermal model, --model BASE+Tk (e.g. paper9+T3)");
+    if (!q.temperature)
+      throw UsageError("optimize: --model " + q.thermal->name() + " needs --temperature T1..T2 (degrees Celsius)");
+    OptimizeRequest sphere = q;
+    sphere.thermal.reset();
+    sphere.temperature.reset();
+    auto t = std::make_shared<ThermalOptimizeResult>(thermal_optimize(sphere, *q.thermal, *q.temperature, progress));
+    OptimizeResult r = t->sphere;
+    r.warnings = t->warnings;
+    r.thermal = t;
+    return r;
+  }
   OptimizeResult r;
   SynthesisOptions opt = q.synthesis;
   start_from(q, opt);
@@ -166,6 +182,7 @@ OptimizeResult optimize(const OptimizeRequest& q, const Progress& progress) {
 }
 
 Json to_json(const OptimizeResult& r) {
+  if (r.thermal) return to_json(*r.thermal);
   const SynthesisResult& s = r.synthesis;
   Json j{{"criterion", std::string(criterion_name(r.criterion))},
          {"positions", r.positions},

@@ -119,7 +119,8 @@ const CommandTable& simulate_table() {
        number_option("--bench-error", 0, 30, "every true position is the nominal one tipped by this angle", "degrees",
                      "0"),
        modulus,
-       model_option(),
+       model_or_thermal_option(),
+       temperature_option(),
        seed_option(),
        named(integer_option("--samples", 1, 100000, "samples per position", "samples", "1"), "K"),
        number_option("--size", 0, 0.2, "scale of the simulated meter's errors",
@@ -265,6 +266,8 @@ void read_rehearsal(const Values& v, SimulateRequest& q) {
 SimulateRequest simulate_request(const Values& v) {
   SimulateRequest q;
   q.name = v.text("--program");
+  q.thermal_rehearsal = thermal_rehearsal_request(v);
+  if (q.thermal_rehearsal) return q;
   if (v.given("--program") || v.program)
     q.program = program_of(v, "--program");
   else if (!(v.given("--tumble") && v.number("--tumble") > 0))

@@ -11,6 +11,7 @@
 #include "commands/json.hpp"
 #include "commands/progress.hpp"
 #include "commands/rehearsal.hpp"
+#include "commands/thermal_rehearsal.hpp"
 #include "commands/values.hpp"
 #include "commands/warning.hpp"
 #include "numeric/calibration/monte_carlo.hpp"
@@ -29,6 +30,8 @@ struct SimulateRequest {
   std::optional<RehearsalRequest> rehearsal;
   // --instrument gyro --log: a gyro's rehearsal (commands/gyro_rehearsal.hpp).
   std::optional<GyroRehearsalRequest> gyro_rehearsal;
+  // --model BASE+Tk --temperature T1..T2 --log: a thermal rehearsal (commands/thermal_rehearsal.hpp).
+  std::optional<ThermalRehearsalRequest> thermal_rehearsal;
 };
 
 struct SimulateResult {

@@ -109,12 +109,23 @@ Output gyro_rehearsal(const Values& v, const commands::GyroRehearsalRequest& q) 
   return Output{truth, r.warnings, 0};
 }
 
+// simulate --model BASE+Tk --log: the thermal log and its truth, as the CLI writes them.
+Output thermal_rehearsal(const Values& v, const ThermalRehearsalRequest& q) {
+  const ThermalRehearsal r = rehearse_thermal(q);
+  write_file(v.text("--log"), "log", [&](std::ostream& out) { commands::write_thermal_log(out, q, r); });
+  const commands::Json truth = commands::thermal_truth_json(q, r);
+  if (v.given("--truth"))
+    write_file(v.text("--truth"), "truth", [&](std::ostream& out) { out << commands::json_text(truth, 2) << "\n"; });
+  return Output{truth, {}, 0};
+}
+
 // simulate: the Monte-Carlo's table, or a rehearsal's files (log or bench file, truth) with the
 // truth returned, as the CLI's --json prints it.
 Binding simulate_binding() {
   return {&commands::simulate_table(), [](const Values& v, const Progress& p) {
             const auto q = commands::simulate_request(v);
             if (q.gyro_rehearsal) return gyro_rehearsal(v, *q.gyro_rehearsal);
+            if (q.thermal_rehearsal) return thermal_rehearsal(v, *q.thermal_rehearsal);
             if (!q.rehearsal) {
               const auto r = commands::simulate(q, p);
               return Output{commands::to_json(r), r.warnings, 0};

@@ -17,7 +17,7 @@ MAX_LINES = 100
 # Inside numeric/, the role folders from the ground up; a role folder not listed is a breach until it is
 # given its place here and in docs/layout.md.
 NUMERIC_ORDER = ["io", "model", "program", "criteria", "polish", "synthesis", "certify", "region", "calibration",
-                 "gyro", "bench", "export"]
+                 "gyro", "thermal", "bench", "export"]
 # The top-level libraries, then the front ends; consumers may include any library, never each other.
 LIBRARY_ORDER = ["numeric", "symbolic", "plots", "commands", "experiments"]
 CONSUMERS = {"tests", "python", "bench", "proofs"}

@@ -5,6 +5,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "commands/common_options.hpp"
 #include "commands/evaluate.hpp"
 #include "experiments/cli/command.hpp"
 #include "experiments/cli/evaluation_report.hpp"
@@ -14,7 +15,32 @@
 namespace scalcal::cli {
 namespace {
 
+// A thermal program: its rows and set-points, each criterion's value, efficiency and limit's label.
+void print_thermal(const commands::ThermalEvaluation& e) {
+  std::cout << e.name << ": " << e.program.size() << " rows at " << e.setpoints.size() << " set-points (";
+  for (std::size_t i = 0; i < e.setpoints.size(); ++i)
+    std::cout << (i ? ", " : "") << commands::shortest_text(e.setpoints[i]);
+  std::cout << " degC) under " << e.model.name() << " over " << e.range.text() << " degC\n";
+  for (const auto& row : e.limits.rows) {
+    const auto i = static_cast<std::size_t>(row.criterion.index());
+    char buffer[200];
+    std::snprintf(buffer, sizeof buffer, "%s = %.6g", std::string(criterion_name(row.criterion)).c_str(),
+                  e.values[i] ? *e.values[i] : 0.0);
+    std::cout << buffer;
+    if (e.efficiency[i]) {
+      std::snprintf(buffer, sizeof buffer, "   efficiency %.4f against the %s limit %.6g", *e.efficiency[i],
+                    row.status.c_str(), row.limit->value);
+      std::cout << buffer;
+    } else {
+      std::cout << "   (no limit: " << row.note << ")";
+    }
+    std::cout << "\n";
+  }
+  std::cout << "(D's efficiency is the " << e.model.parameters() << "th root of limit / value)\n";
+}
+
 void print_text(const commands::EvaluateResult& r) {
+  if (r.thermal) return print_thermal(*r.thermal);
   std::ostringstream text;
   print_evaluation(text, r.name, r.evaluation);
   if (r.region) {
@@ -48,7 +74,9 @@ void print_text(const commands::EvaluateResult& r) {
 int run(const commands::Values& v) {
   const auto r = commands::evaluate(commands::evaluate_request(v), terminal_progress("evaluate"));
   print_warnings("evaluate", r.warnings);
-  if (v.given("--out"))
+  if (v.given("--out") && r.thermal)
+    write_output_file(v.text("--out"), [&](std::ostream& out) { write_thermal_program_csv(out, r.thermal->program); });
+  else if (v.given("--out"))
     write_program_file(v.text("--out"), r.program, r.columns,
                        {r.region ? r.region->specs : std::vector<std::string>{}, {}});
   if (v.flag("--json"))

@@ -100,11 +100,49 @@ void print_sphere(const commands::LimitsResult& r) {
               << " parameters; proofs: " << visit_model(r.model, [](auto M) { return decltype(M)::proof; }) << ")\n";
 }
 
+// A thermal model: one line per criterion with its label, then the optimal set-points.
+void print_thermal(const commands::ThermalLimitsResult& t) {
+  std::cout << "model " << t.model.name() << " (" << t.model.parameters() << " parameters, polynomials in tau = (T - "
+            << shortest_text(t.range.middle()) << ") / " << shortest_text(t.range.half_range()) << " over "
+            << t.range.text() << " degC)\n";
+  for (const auto& row : t.rows) {
+    std::cout << criterion_name(row.criterion);
+    if (!row.limit) {
+      std::cout << ": no limit (" << row.note << ")\n";
+      continue;
+    }
+    const ThermalLimit& l = *row.limit;
+    if (row.status == "proven")
+      std::cout << " >= " << row.exact << " = " << decimal("%.10g", l.value) << " (proven: proofs/thermal_product.md)";
+    else
+      std::cout << " >= " << decimal("%.8g", l.lower_bound) << ", attained within "
+                << decimal("%.1e", (l.value - l.lower_bound) / l.value) << " by " << decimal("%.10g", l.value)
+                << " (numerically: " << l.form << ", the temperature factor "
+                << "found numerically)";
+    std::cout << "\n   set-points:";
+    for (std::size_t i = 0; i < l.temperature.points.size(); ++i)
+      std::cout << (i ? ", " : " ")
+                << decimal("%.2f", std::round(100 * t.range.celsius(l.temperature.points[i])) / 100 + 0.0) << " degC x "
+                << decimal("%.4f", l.temperature.weights[i]);
+    std::cout << "\n";
+  }
+}
+
 // --out: one row per criterion; a cell is empty where the limit, its exact form or a proven lower
 // bound is not known (the exact form is the sphere's or a theorem's on the region; the lower bound a
 // region's).
 void write_table(std::ostream& out, const commands::LimitsResult& r) {
   out << "criterion,limit,exact,lower_bound\n";
+  if (r.thermal)
+    for (const auto& row : r.thermal->rows) {
+      out << criterion_name(row.criterion) << ',';
+      if (row.limit)
+        out << shortest_text(row.limit->value) << ',' << (row.exact.empty() ? "" : "\"" + row.exact + "\"") << ','
+            << (row.status == "proven" ? "" : shortest_text(row.limit->lower_bound));
+      else
+        out << ",,";
+      out << '\n';
+    }
   for (const auto& l : r.criteria) {
     out << criterion_name(l.criterion) << ',';
     if (r.region && l.region)
@@ -124,6 +162,8 @@ int run(const commands::Values& v) {
   if (v.given("--out")) write_output_file(v.text("--out"), [&](std::ostream& out) { write_table(out, r); });
   if (v.flag("--json"))
     print_json(commands::to_json(r));
+  else if (r.thermal)
+    print_thermal(*r.thermal);
   else if (r.region)
     print_region(r);
   else

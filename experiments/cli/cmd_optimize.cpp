@@ -7,6 +7,7 @@
 #include <string>
 
 #include "commands/optimize.hpp"
+#include "commands/thermal_optimize.hpp"
 #include "experiments/cli/command.hpp"
 #include "experiments/cli/json_output.hpp"
 #include "experiments/cli/output_file.hpp"
@@ -21,7 +22,39 @@ std::string limit_status(const commands::ReportedLimit& l) {
   return s;
 }
 
+// A thermal program: the product's split, its value against the thermal limit, the oven's plan.
+void print_thermal(const commands::ThermalOptimizeResult& t) {
+  const auto& e = t.evaluation;
+  const auto i = static_cast<std::size_t>(t.criterion.index());
+  std::cout << criterion_name(t.criterion) << " = " << std::setprecision(10) << e.values[i].value_or(0)
+            << "  (N = " << t.positions << " = " << t.sphere_positions << " positions x "
+            << t.positions / t.sphere_positions << " at " << t.design.points.size() << " set-points, model "
+            << e.model.name() << ")\n";
+  for (const auto& row : e.limits.rows)
+    if (row.criterion == t.criterion) {
+      if (row.limit)
+        std::cout << "limit " << std::setprecision(10) << row.limit->value << " (" << row.status
+                  << ": proofs/thermal_product.md), efficiency " << std::setprecision(9) << e.efficiency[i].value_or(0)
+                  << " (D as its " << e.model.parameters() << "th root)\n";
+      else
+        std::cout << "no limit (" << row.note << ")\n";
+    }
+  std::cout << "sphere program: " << criterion_name(t.criterion) << " = " << std::setprecision(10)
+            << t.sphere.synthesis.value << " at N = " << t.sphere_positions << "\n";
+  std::cout << "oven plan (set-points in increasing order):\n";
+  int row = 1;
+  for (std::size_t k = 0; k < t.design.points.size(); ++k) {
+    const int rows = t.counts[k] * t.sphere_positions;
+    std::cout << "  " << std::fixed << std::setprecision(2) << e.range.celsius(t.design.points[k]) << " degC: rows "
+              << row << "-" << row + rows - 1 << " (" << t.counts[k] << " x the " << t.sphere_positions
+              << " positions; weight " << std::setprecision(4) << t.design.weights[k] << ")\n"
+              << std::defaultfloat;
+    row += rows;
+  }
+}
+
 void print_text(const commands::OptimizeResult& r) {
+  if (r.thermal) return print_thermal(*r.thermal);
   const SynthesisResult& s = r.synthesis;
   std::cout << criterion_name(r.criterion) << " = " << std::setprecision(15) << s.value << "  (N = " << r.positions
             << ", " << s.hits << " of " << s.starts << " starts reached it (stopped: " << s.stopping << "), "
@@ -45,7 +78,10 @@ void print_text(const commands::OptimizeResult& r) {
 int run(const commands::Values& v) {
   const auto r = commands::optimize(commands::optimize_request(v), terminal_progress("optimize"));
   print_warnings("optimize", r.warnings);
-  if (v.given("--out"))
+  if (v.given("--out") && r.thermal)
+    write_output_file(v.text("--out"),
+                      [&](std::ostream& out) { write_thermal_program_csv(out, r.thermal->evaluation.program); });
+  else if (v.given("--out"))
     write_program_file(v.text("--out"), r.program, r.columns,
                        {r.region && !r.region->is_sphere() ? r.region->specs : std::vector<std::string>{}, {}});
   if (v.flag("--json"))

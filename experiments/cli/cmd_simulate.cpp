@@ -104,8 +104,27 @@ int rehearse_gyro(const commands::Values& v, const commands::GyroRehearsalReques
   return 0;
 }
 
+// --model BASE+Tk --log: the thermal log and its truth, one line on stdout.
+int rehearse_thermal(const commands::Values& v, const ThermalRehearsalRequest& q) {
+  const ThermalRehearsal r = scalcal::rehearse_thermal(q);
+  write_output_file(v.text("--log"), [&](std::ostream& out) { commands::write_thermal_log(out, q, r); });
+  const commands::Json truth = commands::thermal_truth_json(q, r);
+  if (v.given("--truth")) write_output_file(v.text("--truth"), [&](std::ostream& out) { write_json(out, truth); });
+  if (v.flag("--json")) {
+    print_json(truth);
+    return 0;
+  }
+  std::cout << "thermal rehearsal of " << v.text("--program") << " under " << q.model.name() << ": " << q.program.size()
+            << " rows of the program, " << r.t.size() << " samples (" << std::setprecision(4)
+            << r.t.back() + 1 / q.rate_hz << " s at " << q.rate_hz << " Hz), noise " << q.noise << " |I|, seed "
+            << q.seed << " -> " << v.text("--log")
+            << (v.given("--truth") ? ", true parameters -> " + v.text("--truth") : std::string()) << "\n";
+  return 0;
+}
+
 int run(const commands::Values& v) {
   const commands::SimulateRequest q = commands::simulate_request(v);
+  if (q.thermal_rehearsal) return rehearse_thermal(v, *q.thermal_rehearsal);
   if (q.rehearsal) return rehearse(v, *q.rehearsal);
   if (q.gyro_rehearsal) return rehearse_gyro(v, *q.gyro_rehearsal);
   const bool json = v.flag("--json");

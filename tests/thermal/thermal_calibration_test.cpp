@@ -1,0 +1,109 @@
+// Thermal logs (issue 53): a rehearsal of a known meter whose parameters drift with temperature,
+// calibrated by `scalcal calibrate --model paper9+T2`, against its truth over 20 seeds (the standardised
+// errors must look like N(0, 1): RMS within 0.7..1.3, at most 1 % beyond 3), and the refusals.
+#include <cmath>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "numeric/program/catalogue.hpp"
+#include "tests/common/run_cli.hpp"
+
+namespace scalcal {
+namespace {
+using testing::CliResult;
+
+// The CLI with these arguments, each quoted for the shell.
+CliResult cli(const std::vector<std::string>& args) {
+  std::string line;
+  for (const auto& a : args) line += " '" + a + "'";
+  return testing::run_cli(line);
+}
+
+std::string scratch(const std::string& name) { return ::testing::TempDir() + "thermal_" + name; }
+
+// The dodecahedron's 12 face normals at each of the given set-points, in the oven's order.
+std::string write_program(const std::vector<double>& setpoints, const std::string& name) {
+  const std::string path = scratch(name);
+  std::ofstream out(path);
+  out << "x,y,z,t_c\n";
+  const Program p = *named_program("dodecahedral-12");
+  for (double t : setpoints)
+    for (const auto& e : p.positions) out << e(0) << "," << e(1) << "," << e(2) << "," << t << "\n";
+  return path;
+}
+
+TEST(ThermalCalibration, RehearsalsCalibrateToTheirTruth) {
+  const std::string program = write_program({-10, 20, 50}, "program.csv");
+  std::vector<double> z;
+  for (int seed = 1; seed <= 20; ++seed) {
+    const std::string log = scratch("log.csv"), truth = scratch("truth.json");
+    const CliResult s = cli({"simulate",
+                             "--program",
+                             program,
+                             "--model",
+                             "paper9+T2",
+                             "--temperature",
+                             "-10..50",
+                             "--log",
+                             log,
+                             "--truth",
+                             truth,
+                             "--noise",
+                             "1e-3",
+                             "--size",
+                             "3e-3",
+                             "--seed",
+                             std::to_string(seed),
+                             "--rate",
+                             "50",
+                             "--dwell",
+                             "4"});
+    ASSERT_EQ(s.status, 0) << s.err;
+    const CliResult c = cli({"calibrate", "--measurements", log, "--model", "paper9+T2", "--magnitude", "1",
+                             "--temperature", "-10..50", "--json"});
+    ASSERT_EQ(c.status, 0) << c.err;
+    const auto fit = nlohmann::json::parse(c.out);
+    std::ifstream in(truth);
+    const auto t = nlohmann::json::parse(in);
+    ASSERT_EQ(fit["poses"].size(), 36u) << "seed " << seed;
+    for (const auto& [name, p] : fit["parameters"].items()) {
+      const double est = p["value"].get<double>(), se = p["standard_error"].get<double>();
+      z.push_back((est - t["parameters"][name].get<double>()) / se);
+    }
+  }
+  double sum = 0;
+  int beyond = 0;
+  for (double v : z) {
+    sum += v * v;
+    beyond += std::abs(v) > 3;
+  }
+  const double rms = std::sqrt(sum / static_cast<double>(z.size()));
+  EXPECT_GT(rms, 0.7);
+  EXPECT_LT(rms, 1.3);
+  EXPECT_LE(beyond, static_cast<int>(0.01 * static_cast<double>(z.size())) + 1) << z.size() << " errors";
+}
+
+TEST(ThermalCalibration, TooFewSetPointsAreRefusedWithWhatWouldWork) {
+  const std::string program = write_program({0, 40}, "two.csv"), log = scratch("two_log.csv");
+  ASSERT_EQ(cli({"simulate", "--program", program, "--model", "paper9+T2", "--temperature", "0..40", "--log", log,
+                 "--noise", "1e-3", "--seed", "3", "--rate", "50"})
+                .status,
+            0);
+  const CliResult c = cli({"calibrate", "--measurements", log, "--model", "paper9+T2", "--magnitude", "1"});
+  EXPECT_EQ(c.status, 2);
+  EXPECT_NE(c.err.find("needs 3 set-points at least"), std::string::npos) << c.err;
+  // The same log identifies degree 1.
+  EXPECT_EQ(cli({"calibrate", "--measurements", log, "--model", "paper9+T1", "--magnitude", "1"}).status, 0);
+  // No temperature column: the plain log of a rehearsal.
+  const CliResult plain = cli({"calibrate", "--measurements", SCALCAL_SOURCE_DIR "/data/table1_A.csv", "--model",
+                               "paper9+T1", "--magnitude", "1"});
+  EXPECT_EQ(plain.status, 2) << plain.err;
+  EXPECT_EQ(cli({"calibrate", "--measurements", log, "--model", "paper9+T1", "--magnitude", "auto"}).status, 2);
+}
+
+}  // namespace
+}  // namespace scalcal
