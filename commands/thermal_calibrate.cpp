@@ -94,20 +94,25 @@ Json to_json(const ThermalCalibration& c) {
                          {"start_s", c.poses[i].start},
                          {"samples", c.poses[i].samples},
                          {"residual", i < f.residuals.size() ? Json(f.residuals[i]) : Json(nullptr)}});
-  return Json{{"file", c.file},
-              {"model", f.model.name()},
-              {"temperature_column", c.temperature_column},
-              {"temperature_c", f.range.text()},
-              {"reference_c", f.range.middle()},
-              {"half_range_c", f.range.half_range()},
-              {"magnitude", f.magnitude},
-              {"converged", f.converged},
-              {"iterations", f.iterations},
-              {"rms", f.rms},
-              {"condition", f.condition},
-              {"problem", f.problem.empty() ? Json(nullptr) : Json(f.problem)},
-              {"parameters", parameters},
-              {"poses", poses}};
+  Json j = thermal_model_json(f.model, f.range);
+  j.update(Json{{"file", c.file},
+                {"temperature_column", c.temperature_column},
+                {"magnitude", f.magnitude},
+                {"converged", f.converged},
+                {"iterations", f.iterations},
+                {"rms", f.rms},
+                {"condition", f.condition},
+                {"problem", f.problem.empty() ? Json(nullptr) : Json(f.problem)},
+                {"parameters", parameters},
+                {"poses", poses}});
+  return j;
+}
+
+Json thermal_model_json(const ThermalModel& model, const TemperatureRange& range) {
+  return Json{{"model", model.name()},
+              {"temperature_c", range.text()},
+              {"reference_c", range.middle()},
+              {"half_range_c", range.half_range()}};
 }
 
 }  // namespace scalcal::commands

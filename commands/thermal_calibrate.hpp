@@ -35,4 +35,7 @@ ThermalCalibration calibrate_thermal(const std::string& file, const CsvTable& ta
 
 Json to_json(const ThermalCalibration& c);
 
+// The keys a thermal fit and a thermal rehearsal's truth share: model, temperature_c, reference_c, half_range_c.
+Json thermal_model_json(const ThermalModel& model, const TemperatureRange& range);
+
 }  // namespace scalcal::commands

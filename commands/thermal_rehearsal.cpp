@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "commands/common_options.hpp"
+#include "commands/thermal_calibrate.hpp"
 #include "commands/usage_error.hpp"
 
 namespace scalcal::commands {
@@ -57,15 +58,13 @@ Json thermal_truth_json(const ThermalRehearsalRequest& q, const ThermalRehearsal
   const auto names = q.model.parameter_names();
   Json parameters = Json::object();
   for (std::size_t i = 0; i < names.size(); ++i) parameters[names[i]] = r.truth(static_cast<Eigen::Index>(i));
-  return Json{{"model", q.model.name()},
-              {"temperature_c", q.range.text()},
-              {"reference_c", q.range.middle()},
-              {"half_range_c", q.range.half_range()},
-              {"magnitude", q.magnitude},
-              {"noise", q.noise},
-              {"seed", q.seed},
-              {"rows", r.t.size()},
-              {"parameters", parameters}};
+  Json j = thermal_model_json(q.model, q.range);
+  j.update(Json{{"magnitude", q.magnitude},
+                {"noise", q.noise},
+                {"seed", q.seed},
+                {"rows", r.t.size()},
+                {"parameters", parameters}});
+  return j;
 }
 
 }  // namespace scalcal::commands

@@ -13,25 +13,11 @@
 namespace scalcal {
 namespace {
 
-using Vec9d = Eigen::Matrix<double, 9, 1>;
-
-Vec9d parameters_at(const ThermalModel& m, const Eigen::VectorXd& theta, double tau) {
-  Vec9d X = theta.head<9>();
-  const std::vector<int> d = m.drifting();
-  Eigen::Index at = 9;
-  double power = 1;
-  for (int j = 1; j <= m.degree; ++j) {
-    power *= tau;
-    for (int r : d) X(r) += theta(at++) * power;
-  }
-  return X;
-}
-
 Eigen::VectorXd residuals(const std::vector<ThermalPose>& poses, const ThermalFit& f, const Eigen::VectorXd& theta) {
   Eigen::VectorXd r(static_cast<Eigen::Index>(poses.size()));
   for (std::size_t i = 0; i < poses.size(); ++i) {
     const Meter meter =
-        Meter::from_parameters(parameters_at(f.model, theta, f.range.tau(poses[i].celsius)), f.magnitude);
+        Meter::from_parameters(f.model.base_parameters_at(theta, f.range.tau(poses[i].celsius)), f.magnitude);
     r(static_cast<Eigen::Index>(i)) = meter.compensate(poses[i].mean).norm() / f.magnitude - 1;
   }
   return r;
@@ -124,10 +110,6 @@ ThermalFit fit_thermal(const std::vector<ThermalPose>& poses, const ThermalModel
       eig.eigenvectors() * (sigma2 * l.cwiseInverse()).asDiagonal() * eig.eigenvectors().transpose();
   f.standard_errors = cov.diagonal().cwiseSqrt();
   return f;
-}
-
-Eigen::Matrix<double, 9, 1> thermal_parameters_at(const ThermalFit& f, double celsius) {
-  return parameters_at(f.model, f.coefficients, f.range.tau(celsius));
 }
 
 }  // namespace scalcal

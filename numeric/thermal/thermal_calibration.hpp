@@ -39,7 +39,4 @@ struct ThermalFit {
 ThermalFit fit_thermal(const std::vector<ThermalPose>& poses, const ThermalModel& model, const TemperatureRange& range,
                        double magnitude);
 
-// The nine parameters X(tau) of a fit at a temperature (degrees Celsius).
-Eigen::Matrix<double, 9, 1> thermal_parameters_at(const ThermalFit& fit, double celsius);
-
 }  // namespace scalcal

@@ -49,6 +49,18 @@ Eigen::VectorXd ThermalModel::row(const Eigen::Vector3d& eta, double tau) const 
   return out;
 }
 
+Eigen::VectorXd ThermalModel::base_parameters_at(const Eigen::VectorXd& theta, double tau) const {
+  Eigen::VectorXd X = theta.head(base_parameters());
+  const std::vector<int> d = drifting();
+  Eigen::Index at = X.size();
+  double power = 1;
+  for (int j = 1; j <= degree; ++j) {
+    power *= tau;
+    for (int r : d) X(r) += theta(at++) * power;
+  }
+  return X;
+}
+
 std::optional<ThermalModel> parse_thermal_model(const std::string& text) {
   const auto plus = text.find('+');
   if (plus == std::string::npos) return std::nullopt;

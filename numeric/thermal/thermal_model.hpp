@@ -29,6 +29,9 @@ struct ThermalModel {
   std::vector<std::string> parameter_names() const;
   // The linearised row at a position and a normalised temperature, in parameter_names() order.
   Eigen::VectorXd row(const Eigen::Vector3d& eta, double tau) const;
+  // The base model's parameters at a normalised temperature from coefficients theta (parameter_names()
+  // order): X(tau) = X_0 + sum_j X_j tau^j for the drifting ones.
+  Eigen::VectorXd base_parameters_at(const Eigen::VectorXd& theta, double tau) const;
 };
 
 // A thermal name when `text` is one ("BASE+Tk" or "BASE+bias:Tk" with a registered base); nullopt when

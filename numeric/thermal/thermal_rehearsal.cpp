@@ -42,14 +42,7 @@ ThermalRehearsal rehearse_thermal(const ThermalRehearsalRequest& q) {
   r.truth.resize(q.model.parameters());
   for (Eigen::Index i = 0; i < r.truth.size(); ++i) r.truth(i) = (i < 9 ? q.size : q.drift) * gauss();
   auto emit = [&](const Eigen::Vector3d& eta, double celsius, int row) {
-    Eigen::Matrix<double, 9, 1> X = r.truth.head<9>();
-    const double tau = q.range.tau(celsius);
-    double power = 1;
-    Eigen::Index k = 9;
-    for (int j = 1; j <= q.model.degree; ++j) {
-      power *= tau;
-      for (int p : q.model.drifting()) X(p) += r.truth(k++) * power;
-    }
+    const Eigen::Matrix<double, 9, 1> X = q.model.base_parameters_at(r.truth, q.range.tau(celsius));
     const Meter meter = Meter::from_parameters(X, q.magnitude);
     Eigen::Vector3d w = meter.measure(q.magnitude * eta);
     for (int c = 0; c < 3; ++c) w(c) += q.noise * q.magnitude * gauss();

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace scalcal::testing {
 
@@ -55,6 +56,13 @@ inline CliResult run_cli(const std::string& args, const CliOptions& options = {}
   if (options.stdout_path.empty()) r.out = slurp(out);
   r.err = slurp(base.string() + ".err");
   return r;
+}
+
+// The same with the arguments as a list, each quoted for the shell (file names with spaces stay one argument).
+inline CliResult run_cli(const std::vector<std::string>& args, const CliOptions& options = {}) {
+  std::string line;
+  for (const auto& a : args) line += " '" + a + "'";
+  return run_cli(line, options);
 }
 
 }  // namespace scalcal::testing

@@ -15,13 +15,7 @@
 namespace scalcal {
 namespace {
 using testing::CliResult;
-
-// The CLI with these arguments, each quoted for the shell.
-CliResult cli(const std::vector<std::string>& args) {
-  std::string line;
-  for (const auto& a : args) line += " '" + a + "'";
-  return testing::run_cli(line);
-}
+using testing::run_cli;
 
 std::string scratch(const std::string& name) { return ::testing::TempDir() + "thermal_" + name; }
 
@@ -41,30 +35,30 @@ TEST(ThermalCalibration, RehearsalsCalibrateToTheirTruth) {
   std::vector<double> z;
   for (int seed = 1; seed <= 20; ++seed) {
     const std::string log = scratch("log.csv"), truth = scratch("truth.json");
-    const CliResult s = cli({"simulate",
-                             "--program",
-                             program,
-                             "--model",
-                             "paper9+T2",
-                             "--temperature",
-                             "-10..50",
-                             "--log",
-                             log,
-                             "--truth",
-                             truth,
-                             "--noise",
-                             "1e-3",
-                             "--size",
-                             "3e-3",
-                             "--seed",
-                             std::to_string(seed),
-                             "--rate",
-                             "50",
-                             "--dwell",
-                             "4"});
+    const CliResult s = run_cli({"simulate",
+                                 "--program",
+                                 program,
+                                 "--model",
+                                 "paper9+T2",
+                                 "--temperature",
+                                 "-10..50",
+                                 "--log",
+                                 log,
+                                 "--truth",
+                                 truth,
+                                 "--noise",
+                                 "1e-3",
+                                 "--size",
+                                 "3e-3",
+                                 "--seed",
+                                 std::to_string(seed),
+                                 "--rate",
+                                 "50",
+                                 "--dwell",
+                                 "4"});
     ASSERT_EQ(s.status, 0) << s.err;
-    const CliResult c = cli({"calibrate", "--measurements", log, "--model", "paper9+T2", "--magnitude", "1",
-                             "--temperature", "-10..50", "--json"});
+    const CliResult c = run_cli({"calibrate", "--measurements", log, "--model", "paper9+T2", "--magnitude", "1",
+                                 "--temperature", "-10..50", "--json"});
     ASSERT_EQ(c.status, 0) << c.err;
     const auto fit = nlohmann::json::parse(c.out);
     std::ifstream in(truth);
@@ -89,20 +83,20 @@ TEST(ThermalCalibration, RehearsalsCalibrateToTheirTruth) {
 
 TEST(ThermalCalibration, TooFewSetPointsAreRefusedWithWhatWouldWork) {
   const std::string program = write_program({0, 40}, "two.csv"), log = scratch("two_log.csv");
-  ASSERT_EQ(cli({"simulate", "--program", program, "--model", "paper9+T2", "--temperature", "0..40", "--log", log,
-                 "--noise", "1e-3", "--seed", "3", "--rate", "50"})
+  ASSERT_EQ(run_cli({"simulate", "--program", program, "--model", "paper9+T2", "--temperature", "0..40", "--log", log,
+                     "--noise", "1e-3", "--seed", "3", "--rate", "50"})
                 .status,
             0);
-  const CliResult c = cli({"calibrate", "--measurements", log, "--model", "paper9+T2", "--magnitude", "1"});
+  const CliResult c = run_cli({"calibrate", "--measurements", log, "--model", "paper9+T2", "--magnitude", "1"});
   EXPECT_EQ(c.status, 2);
   EXPECT_NE(c.err.find("needs 3 set-points at least"), std::string::npos) << c.err;
   // The same log identifies degree 1.
-  EXPECT_EQ(cli({"calibrate", "--measurements", log, "--model", "paper9+T1", "--magnitude", "1"}).status, 0);
+  EXPECT_EQ(run_cli({"calibrate", "--measurements", log, "--model", "paper9+T1", "--magnitude", "1"}).status, 0);
   // No temperature column: the plain log of a rehearsal.
-  const CliResult plain = cli({"calibrate", "--measurements", SCALCAL_SOURCE_DIR "/data/table1_A.csv", "--model",
-                               "paper9+T1", "--magnitude", "1"});
+  const CliResult plain = run_cli({"calibrate", "--measurements", SCALCAL_SOURCE_DIR "/data/table1_A.csv", "--model",
+                                   "paper9+T1", "--magnitude", "1"});
   EXPECT_EQ(plain.status, 2) << plain.err;
-  EXPECT_EQ(cli({"calibrate", "--measurements", log, "--model", "paper9+T1", "--magnitude", "auto"}).status, 2);
+  EXPECT_EQ(run_cli({"calibrate", "--measurements", log, "--model", "paper9+T1", "--magnitude", "auto"}).status, 2);
 }
 
 }  // namespace

@@ -21,13 +21,7 @@
 namespace scalcal {
 namespace {
 using testing::CliResult;
-
-// The CLI with these arguments, each quoted for the shell.
-CliResult cli(const std::vector<std::string>& args) {
-  std::string line;
-  for (const auto& a : args) line += " '" + a + "'";
-  return testing::run_cli(line);
-}
+using testing::run_cli;
 
 const double kDs = 61509375.0 / 4;  // paper9's D limit on the sphere (Theorem 2)
 
@@ -140,7 +134,7 @@ TEST(ThermalLimits, EfficientRoundingSumsAndFollowsTheWeights) {
 }
 
 TEST(ThermalCli, LimitsPrintsTheProvenProductAndTheSetPoints) {
-  const CliResult r = cli({"limits", "--model", "paper9+T3", "--temperature", "-20..60", "--json"});
+  const CliResult r = run_cli({"limits", "--model", "paper9+T3", "--temperature", "-20..60", "--json"});
   ASSERT_EQ(r.status, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["model"], "paper9+T3");
@@ -152,7 +146,7 @@ TEST(ThermalCli, LimitsPrintsTheProvenProductAndTheSetPoints) {
   // A for k = 3: numerically, the sphere's 45 + 18 sqrt2 times SciPy's 37.5202591774521.
   EXPECT_EQ(j["A"]["status"], "numerical");
   EXPECT_NEAR(j["A"]["value"].get<double>() / ((45 + 18 * std::sqrt(2.0)) * 37.5202591774521), 1, 1e-8);
-  const CliResult k2 = cli({"limits", "--model", "paper9+T2", "--temperature", "0..50", "--json"});
+  const CliResult k2 = run_cli({"limits", "--model", "paper9+T2", "--temperature", "0..50", "--json"});
   ASSERT_EQ(k2.status, 0) << k2.err;
   const auto j2 = nlohmann::json::parse(k2.out);
   EXPECT_EQ(j2["E"]["status"], "proven");
@@ -167,7 +161,7 @@ TEST(ThermalCli, BadInputIsOneLineAndExitTwo) {
         {"limits", "--model", "paper9+T9", "--temperature", "0..1"},
         {"limits", "--temperature", "0..40"},
         {"limits", "--model", "paper9+T1", "--temperature", "0..40", "--region", "cap:60"}}) {
-    const CliResult r = cli(args);
+    const CliResult r = run_cli(args);
     EXPECT_EQ(r.status, 2) << args[2];
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
   }
