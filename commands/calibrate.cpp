@@ -338,6 +338,29 @@ void resolve_units(const CalibrateRequest& q, CalibrateResult& out) {
                        "corrected to unit modulus (--magnitude auto)";
 }
 
+// A thermal fit corrects in the log's own units (|I| = --magnitude in them): raw and physical units are one,
+// as --units U,U says or as the Earth's magnitude in a unit and --instrument fix it.
+void thermal_units(const CalibrateRequest& q, double magnitude, CalibrateResult& r) {
+  r.instrument = q.instrument;
+  if (q.instrument == Instrument::gyro)
+    throw UsageError("calibrate: a thermal model is an accelerometer's or a magnetometer's (--instrument accel|mag)");
+  if (!q.raw_units.empty()) {
+    if (q.raw_units != q.physical_units || is_count_unit(q.raw_units))
+      throw UsageError(
+          "calibrate: --units: a thermal fit corrects in the log's own units (|I| = --magnitude in them): "
+          "give one unit twice, such as m/s^2,m/s^2, not " +
+          q.raw_units + "," + q.physical_units);
+    r.units.raw = r.units.physical = parse_unit(q.raw_units);
+    r.units_reason = "given (--units)";
+  } else if (q.instrument) {
+    r.units.raw = r.units.physical = unit_of_earth_magnitude(*q.instrument, magnitude);
+    if (r.units.raw)
+      r.units_reason = "raw and physical units " + std::string(r.units.raw->name) + " from --magnitude " + q.magnitude +
+                       " (the Earth's " + (*q.instrument == Instrument::accel ? "gravity" : "field") +
+                       " in those units)";
+  }
+}
+
 }  // namespace
 
 CalibrateResult calibrate(const CalibrateRequest& q, CalibrationInput in, const Progress& progress) {
@@ -407,6 +430,7 @@ CalibrateResult calibrate(const CalibrateRequest& q, const Progress& progress) {
     r.thermal = std::make_shared<ThermalCalibration>(
         calibrate_thermal(q.file, table, *q.thermal, q.temperature, magnitude, q.intervals));
     r.warnings = r.thermal->warnings;
+    thermal_units(q, magnitude, r);
     return r;
   }
   check_calibrate_request(q);

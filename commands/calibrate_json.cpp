@@ -254,7 +254,7 @@ Json calibration_file_json(const CalibrateResult& r) {
          {"instrument", r.instrument ? Json(std::string(instrument_name(*r.instrument))) : Json()},
          {"units", units_json(r.units, r.raw_counts)},
          {"units_reason", r.units_reason},
-         {"region", r.program.region}};
+         {"region", r.thermal ? Json() : Json(r.program.region)}};
   const Json result = to_json(r);
   for (const auto& [key, value] : result.items())
     if (!j.contains(key)) j[key] = value;

@@ -1,6 +1,7 @@
 // The one reader of calibration files (calibration_file.hpp).
 #include "commands/calibration_file.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
@@ -49,11 +50,49 @@ int format_version_of(const Json& d, const std::string& file) {
   return static_cast<int>(n);
 }
 
+// A thermal calibration (calibrate --model paper9+Tk --out): its range, |I| and every coefficient's value.
+void read_thermal(const Json& d, const std::string& file, const ThermalModel& model, CalibrationFile& c) {
+  ThermalCorrection t;
+  t.model = model;
+  if (!d.contains("temperature_c") || !d["temperature_c"].is_string())
+    throw InputError(file, 0, "a thermal calibration needs 'temperature_c', the range it was fitted over (\"T1..T2\")");
+  try {
+    t.range = parse_temperature_range(d["temperature_c"].get<std::string>());
+  } catch (const std::invalid_argument& e) {
+    throw InputError(file, 0, std::string("'temperature_c': ") + e.what());
+  }
+  if (!d.contains("magnitude")) throw InputError(file, 0, "a thermal calibration needs 'magnitude', |I| in its units");
+  t.magnitude = number_at(d["magnitude"], file, "magnitude");
+  if (!(t.magnitude > 0)) throw InputError(file, 0, "'magnitude' must be positive");
+  if (!d.contains("parameters") || !d["parameters"].is_object())
+    throw InputError(file, 0, "a thermal calibration needs 'parameters', each coefficient as {\"value\": ...}");
+  const Json& p = d["parameters"];
+  const std::vector<std::string> names = model.parameter_names();
+  for (const auto& [key, value] : p.items())
+    if (std::find(names.begin(), names.end(), key) == names.end())
+      throw InputError(file, 0, "parameter '" + key + "' is not one of model " + c.model + "'s");
+  t.coefficients.resize(static_cast<Eigen::Index>(names.size()));
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    if (!p.contains(names[i]) || !p[names[i]].is_object() || !p[names[i]].contains("value"))
+      throw InputError(file, 0, "model " + c.model + "'s parameter '" + names[i] + "' is missing (or has no value)");
+    t.coefficients(static_cast<Eigen::Index>(i)) =
+        number_at(p[names[i]]["value"], file, "parameters." + names[i] + ".value");
+  }
+  c.thermal = t;
+}
+
 // The model's name and whether its correction is nonlinear; its parameters checked against it.
 void check_model(const Json& d, const std::string& file, CalibrationFile& c) {
   if (!d.contains("model")) return;
   if (!d["model"].is_string()) throw InputError(file, 0, "'model' must be a model's name");
   c.model = d["model"].get<std::string>();
+  std::optional<ThermalModel> thermal;
+  try {
+    thermal = parse_thermal_model(c.model);
+  } catch (const std::invalid_argument& e) {
+    throw InputError(file, 0, "model '" + c.model + "': " + e.what());
+  }
+  if (thermal) return read_thermal(d, file, *thermal, c);
   const auto kind = parse_model(c.model);
   if (!kind)
     throw InputError(file, 0, "model '" + c.model + "' is not a registered model (" + scalcal::model_names(", ") + ")");
@@ -127,8 +166,27 @@ void read_instrument(const Json& d, const std::string& file, CalibrationFile& c)
     throw InputError(file, 0, "'instrument' = " + json_text(d["instrument"]) + " is not accel, mag or gyro");
 }
 
+// The worst condition of a thermal correction's matrix over its range (the ends and 99 points between), and
+// its correction at the middle.
+double thermal_condition(CalibrationFile& c) {
+  const ThermalCorrection& t = *c.thermal;
+  double worst = 0;
+  for (int i = 0; i <= 100; ++i) {
+    const Eigen::JacobiSVD<Mat3> svd(t.at(t.range.low + (t.range.high - t.range.low) * i / 100).matrix);
+    const double condition = svd.singularValues()(0) / svd.singularValues()(2);
+    worst = std::isnan(condition) || std::isnan(worst) ? NAN : std::max(worst, condition);
+  }
+  c.correction = t.at(t.range.middle());
+  if (!(worst <= kSingularCondition))
+    throw InputError(
+        c.name, 0,
+        "its matrix is singular somewhere in " + t.range.text() + " degC (condition " + short_number(worst) + ")");
+  return worst;
+}
+
 // The offset and matrix, and the matrix's condition.
 double read_correction(const Json& d, const std::string& file, CalibrationFile& c) {
+  if (c.thermal) return thermal_condition(c);
   if (!d.contains("offset") || (!d.contains("matrix") && !c.nonlinear))
     throw InputError(file, 0,
                      "needs the keys 'offset' and 'matrix' (write it with `scalcal calibrate ... --out FILE`)");
@@ -160,6 +218,7 @@ std::string distrust(const Json& d, double condition) {
       return "its fit did not converge" +
              (d.contains("message") && d["message"].is_string() ? " (" + d["message"].get<std::string>() + ")" : "");
   }
+  if (d.contains("problem") && d["problem"].is_string()) return d["problem"].get<std::string>();
   if (condition > kCorrectionCondition)
     return "its matrix is ill-conditioned (condition " + short_number(condition) + " > " +
            short_number(kCorrectionCondition) + ": the axes' gains differ that much, or two axes are nearly parallel)";

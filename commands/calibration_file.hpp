@@ -16,6 +16,7 @@
 #include "commands/json.hpp"
 #include "commands/warning.hpp"
 #include "numeric/export/export_format.hpp"
+#include "numeric/thermal/thermal_correction.hpp"
 
 namespace scalcal::commands {
 
@@ -40,6 +41,9 @@ struct CalibrationFile {
   CalibrationUnits units;
   double sample_rate = NAN;  // Hz, of a raw log
   double noise = NAN;        // one sample's noise in physical units
+  // A thermal model's calibration (calibrate --model paper9+Tk --out): the correction at each
+  // temperature; `correction` then holds the one at the range's middle (for messages and checks only).
+  std::optional<ThermalCorrection> thermal;
 };
 
 // Reads and checks; `force` accepts a fit that did not converge or an ill-conditioned matrix.

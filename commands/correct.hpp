@@ -1,5 +1,7 @@
 // `scalcal correct` as a library function: a calibration file written by `calibrate --out` applied
-// to raw data, physical = matrix (raw - offset), row by row. A calibration that cannot be trusted is
+// to raw data, physical = matrix (raw - offset), row by row; a thermal one (paper9+Tk) at each row's
+// temperature (a column temp, temperature or t_c), held at its range's ends outside it as PX4 and
+// ArduPilot hold theirs (a warning counts those rows). A calibration that cannot be trusted is
 // refused (InputError naming the reason): a fit that did not converge, a matrix that is singular or
 // ill-conditioned; `force` applies it all the same, with a warning as data.
 #pragma once
@@ -29,6 +31,7 @@ struct CorrectRequest {
 
 struct CorrectedRow {
   double t = NAN, position = NAN;  // the kept columns (NaN when the file has none)
+  double celsius = NAN;            // a thermal calibration's: the row's temperature as the data gave it
   std::string position_label;      // the position's text label (P1), when it has one
   Vec3 corrected = Vec3::Zero();
   double modulus = 0;
@@ -37,6 +40,7 @@ struct CorrectedRow {
 struct CorrectResult {
   FullCorrection correction;
   bool has_t = false, has_position = false;
+  bool has_temperature = false;  // a thermal calibration was applied at each row's temperature
   std::vector<CorrectedRow> rows;
   Warnings warnings;
 };

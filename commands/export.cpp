@@ -81,6 +81,7 @@ ExportInput input_of(const ExportRequest& q, const ExportResult& r) {
   ExportInput in;
   in.file = c.name;
   in.correction = c.correction;
+  in.thermal = c.thermal;
   in.instrument = r.instrument;
   in.units = c.units;
   in.instance = q.instance;

@@ -76,7 +76,7 @@ int run(const commands::Values& v) {
     if (!r.thermal->fit.problem.empty())
       std::cerr << "scalcal calibrate: " << r.file << ": " << r.thermal->fit.problem << "\n";
     if (v.given("--out") && r.converged())
-      write_output_file(v.text("--out"), [&](std::ostream& f) { write_json(f, commands::to_json(*r.thermal)); });
+      write_output_file(v.text("--out"), [&](std::ostream& f) { write_json(f, commands::calibration_file_json(r)); });
     if (v.flag("--json"))
       print_json(commands::to_json(r));
     else

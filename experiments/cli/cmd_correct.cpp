@@ -26,11 +26,13 @@ int run(const commands::Values& v) {
   const commands::CorrectResult r = commands::correct(commands::correct_request(v));
   print_warnings("correct", r.warnings);
   const auto write = [&](std::ostream& f) {
-    f << (r.has_t ? "t," : "") << (r.has_position ? "position," : "") << "x,y,z,modulus\n";
+    f << (r.has_t ? "t," : "") << (r.has_position ? "position," : "") << (r.has_temperature ? "t_c," : "")
+      << "x,y,z,modulus\n";
     for (const auto& row : r.rows) {
       if (r.has_t) f << shortest_text(row.t) << ',';
       if (r.has_position)  // a label as the file had it, quoted (RFC 4180) when it holds a comma or quote
         f << (row.position_label.empty() ? shortest_text(row.position) : csv_field(row.position_label)) << ',';
+      if (r.has_temperature) f << shortest_text(row.celsius) << ',';
       f << shortest_text(row.corrected(0)) << ',' << shortest_text(row.corrected(1)) << ','
         << shortest_text(row.corrected(2)) << ',' << shortest_text(row.modulus) << '\n';
     }

@@ -119,7 +119,8 @@ ExportFormat c_format() {
   return {"c",
           "a C header for firmware: the correction as macros and scalcal_cal_apply() (embedded/)",
           {Instrument::accel, Instrument::mag, Instrument::gyro},
-          write};
+          write,
+          false};
 }
 
 }  // namespace scalcal

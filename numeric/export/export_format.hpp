@@ -17,6 +17,7 @@
 #include "numeric/calibration/full_correction.hpp"
 #include "numeric/calibration/instrument.hpp"
 #include "numeric/calibration/units.hpp"
+#include "numeric/thermal/thermal_correction.hpp"
 
 namespace scalcal {
 
@@ -60,6 +61,9 @@ struct ExportInput {
   std::vector<std::pair<std::string, std::string>> kept;
   CalibrationFacts facts;  // for the c format
   std::string name;        // the c format's prefix (an identifier; "" : CAL)
+  // A thermal fit (paper9+Tk): correction is then the one at the range's middle; only formats that carry
+  // temperature drift (ExportFormat::thermal) take it.
+  std::optional<ThermalCorrection> thermal;
 };
 
 // One parameter as the target stores it, for tests and the JSON of the result.
@@ -88,6 +92,7 @@ struct ExportFormat {
   std::string_view what;  // one line for --help and docs
   std::vector<Instrument> instruments;
   void (*write)(const ExportInput&, ExportOutput&);
+  bool thermal;  // writes a thermal fit's offset polynomials (the firmware's thermal parameters)
 };
 
 // Every registered format, in registration order (registry.cpp).

@@ -37,7 +37,8 @@ ExportFormat imu_tk_format() {
   return {"imu_tk",
           "IMU-TK's CalibratedTriad text: X' = T K (X - B)",
           {Instrument::accel, Instrument::mag, Instrument::gyro},
-          write};
+          write,
+          false};
 }
 
 }  // namespace scalcal

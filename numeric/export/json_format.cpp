@@ -26,7 +26,8 @@ ExportFormat json_format() {
   return {"json",
           "scalcal's own convention with the file's metadata and units",
           {Instrument::accel, Instrument::mag, Instrument::gyro},
-          write};
+          write,
+          false};
 }
 
 }  // namespace scalcal

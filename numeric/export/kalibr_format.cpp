@@ -83,7 +83,8 @@ ExportFormat kalibr_format() {
   return {"kalibr",
           "the imu0 block Kalibr's and OpenVINS's IMU readers load (SI units)",
           {Instrument::accel, Instrument::gyro},
-          write};
+          write,
+          false};
 }
 
 }  // namespace scalcal

@@ -26,7 +26,8 @@ ExportFormat magcal_format() {
   return {"magcal",
           "MATLAB magcal's A and b: corrected = (d - b) * A for rows d of raw data",
           {Instrument::accel, Instrument::mag, Instrument::gyro},
-          write};
+          write,
+          false};
 }
 
 }  // namespace scalcal

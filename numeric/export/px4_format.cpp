@@ -3,10 +3,13 @@
 // dropped. Magnetometer (gauss): corrected = S (v - OFF) with S symmetric (Magnetometer::Correct):
 // S = the symmetric factor of C = Q S, diagonal SCALE, ODIAG (S01, S02, S12); Q is dropped.
 // Gyroscope (rad/s): OFF only. Four instances of each (CAL_ACC0 .. CAL_ACC3). Ranges from PX4's
-// parameter metadata: SCALE 0.1 .. 3.0.
+// parameter metadata: SCALE 0.1 .. 3.0. A thermal fit (paper9+Tk, k <= 3) adds the accelerometer's
+// TC_A{n} offset polynomial about TREF (TemperatureCompensation::calc_thermal_offsets_3D, subtracted before
+// CAL_ACC{n}_?OFF by Accelerometer::Correct; docs/thermal_export_sources.md).
 #include "numeric/export/formats.hpp"
 #include "numeric/export/matrix_forms.hpp"
 #include "numeric/export/target_units.hpp"
+#include "numeric/export/thermal_offsets.hpp"
 
 namespace scalcal {
 namespace {
@@ -22,9 +25,45 @@ struct Writer {
     text += "1\t1\t" + name + "\t" + float_text(v) + "\t9\n";
     out.parameters.push_back({name, v});
   }
+  void integer(const std::string& name, int v) {  // MAV_PARAM_TYPE_INT32
+    text += "1\t1\t" + name + "\t" + std::to_string(v) + "\t6\n";
+    out.parameters.push_back({name, static_cast<double>(v)});
+  }
 };
 
+// TREF the fitted range's middle, TMIN..TMAX the range; X0 = 0 and the constant in CAL_ACC{n}_?OFF, as
+// PX4's own accelerometer thermal calibration leaves them (temperature_calibration/accel.cpp).
+void write_thermal(const ExportInput& in, ExportOutput& out) {
+  check_instance(in, "px4", 4);
+  const std::string n = std::to_string(in.instance), tc = "TC_A" + n + "_";
+  const double reference = in.thermal->range.middle();
+  const ThermalTarget t = thermal_in_target_units(in, out, *parse_unit("m/s^2"), "px4", reference, reference, 3);
+  Writer w{in, out,
+           "# scalcal export --format px4 --instrument accel (QGroundControl parameter file; thermal calibration " +
+               in.thermal->model.name() + " over " + in.thermal->range.text() + " degC, offsets in m/s^2)\n"};
+  w.text += "# corrected = (v - P(clamp(T, " + tc + "TMIN, " + tc + "TMAX) - " + tc + "TREF) - CAL_ACC" + n +
+            "_?OFF) .* CAL_ACC" + n + "_?SCALE, P = " + tc + "X0_? + " + tc + "X1_? dT + " + tc + "X2_? dT^2 + " + tc +
+            "X3_? dT^3\n# set " + tc + "ID and CAL_ACC" + n +
+            "_ID to the sensor's device id on the vehicle; TC_A_ENABLE takes effect after a reboot\n"
+            "# Vehicle-Id\tComponent-Id\tName\tValue\tType\n";
+  w.integer("TC_A_ENABLE", 1);
+  w.param(tc + "TREF", reference);
+  w.param(tc + "TMIN", t.low);
+  w.param(tc + "TMAX", t.high);
+  for (int j = 0; j <= 3; ++j)
+    for (int k = 0; k < 3; ++k)
+      w.param(tc + "X" + std::to_string(j) + "_" + std::to_string(k), j == 0 ? 0.0 : t.polynomial(k, j));
+  for (int k = 0; k < 3; ++k) w.param("CAL_ACC" + n + "_" + kAxes[k] + "OFF", t.at_reference.offset(k));
+  for (int k = 0; k < 3; ++k) {
+    const std::string name = "CAL_ACC" + n + "_" + kAxes[k] + "SCALE";
+    check_range(in, out, name, t.at_reference.matrix(k, k), 0.1, 3.0, "PX4 parameter metadata");
+    w.param(name, t.at_reference.matrix(k, k));
+  }
+  out.text = w.text;
+}
+
 void write(const ExportInput& in, ExportOutput& out) {
+  if (in.thermal) return write_thermal(in, out);
   check_instance(in, "px4", 4);
   const std::string n = std::to_string(in.instance);
   const char* unit = in.instrument == Instrument::accel ? "m/s^2"
@@ -75,7 +114,8 @@ ExportFormat px4_format() {
   return {"px4",
           "PX4's CAL_ACCn / CAL_MAGn / CAL_GYROn parameters (QGroundControl file; m/s^2, gauss, rad/s)",
           {Instrument::accel, Instrument::mag, Instrument::gyro},
-          write};
+          write,
+          true};
 }
 
 }  // namespace scalcal

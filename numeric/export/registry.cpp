@@ -48,6 +48,15 @@ ExportOutput export_with(const ExportFormat& format, const ExportInput& in) {
   if (std::find(format.instruments.begin(), format.instruments.end(), in.instrument) == format.instruments.end())
     throw RequestError("instrument", "the " + std::string(format.name) + " export has no " +
                                          std::string(instrument_noun(in.instrument)) + " form");
+  if (in.thermal && !format.thermal) {
+    std::string carriers;
+    for (const auto& f : export_formats())
+      if (f.thermal) carriers += (carriers.empty() ? "" : " and ") + std::string(f.name);
+    throw InputError(in.file, 0,
+                     "it is a thermal calibration (" + in.thermal->model.name() + "), and the " +
+                         std::string(format.name) + " format carries no temperature drift: " + carriers +
+                         " carry its offsets' (export --format px4 or ardupilot)");
+  }
   if (!in.correction.matrix.allFinite() || !in.correction.offset.allFinite())
     throw InputError(in.file, 0, "its offset or matrix holds a value that is not finite");
   ExportOutput out;
