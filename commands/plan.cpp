@@ -6,6 +6,7 @@
 
 #include "commands/common_options.hpp"
 #include "commands/region_request.hpp"
+#include "commands/thermal_plan.hpp"
 #include "commands/usage_error.hpp"
 #include "commands/work_bound.hpp"
 #include "numeric/bench/rounding.hpp"
@@ -144,7 +145,16 @@ const CommandTable& plan_table() {
                      "order within each mounting; given: the program's order",
                      "travel"),
        region_option(), model_option(),
-       out_option("write the plan as a program file in run order (step, position, mounting, angles; region line)"),
+       named(number_option("--soak", 0, 10080,
+                           "a thermal program (a temperature column): minutes the meter soaks at each set-point "
+                           "before its positions are measured",
+                           "minutes", "30"),
+             "MIN"),
+       named(number_option("--dwell", 0, 86400,
+                           "a thermal program: seconds at rest on each position (simulate's --dwell)", "seconds", "5"),
+             "S"),
+       out_option("write the plan as a program file in run order (step, position, mounting, angles, a thermal "
+                  "program's t_c; region line)"),
        json_option("print one JSON object")}};
   return table;
 }
@@ -160,10 +170,21 @@ PlanRequest plan_request(const Values& v) {
   q.order = order == "given" ? RunOrder::given : order == "remounts" ? RunOrder::remounts : RunOrder::travel;
   q.regions = v.program ? v.list("--region") : regions_for(v.list("--region"), q.name, q.warnings);
   q.model = model_of(v);
+  if (!v.program) q.celsius = program_temperatures(q.name);
+  if (q.celsius.empty())
+    for (const char* option : {"--soak", "--dwell"})
+      if (v.given(option))
+        throw UsageError(std::string(option) + " belongs to a thermal program (a temperature column t_c, " +
+                         "temperature, temp or t), and " + q.name + " has none");
+  if (!q.celsius.empty() && q.celsius.size() != static_cast<std::size_t>(q.program.size()))
+    throw InputError(q.name, 0, "its temperatures and positions are not one per row");
+  q.soak_s = 60 * v.number("--soak");
+  q.dwell_s = v.number("--dwell");
   return q;
 }
 
 PlanResult plan(const PlanRequest& q, const Progress& progress) {
+  if (!q.celsius.empty()) return plan_thermal(q, progress);
   PlanResult r(parse_bench(q.bench));
   r.name = q.name;
   r.warnings = q.warnings;
@@ -203,6 +224,13 @@ PlanResult plan(const PlanRequest& q, const Progress& progress) {
   r.remounts = run.remounts;
   r.given_travel_deg = given_run.travel_deg;
   r.given_remounts = given_run.remounts;
+  judge_rounding(q, r);
+  if (!r.as_run.full_rank())
+    r.warnings.push_back({q.name, "the program as run is rank-deficient (its criteria are infinite)"});
+  return r;
+}
+
+void judge_rounding(const PlanRequest& q, PlanResult& r) {
   r.designed = scalcal::evaluate(q.model, q.program);
   r.as_run = scalcal::evaluate(q.model, r.program_as_run());
   const int P = model_parameters(q.model);
@@ -212,9 +240,6 @@ PlanResult plan(const PlanRequest& q, const Progress& progress) {
         std::isfinite(before) && std::isfinite(after) ? 1 - efficiency(c, before, after, P) : NAN;
   }
   refuse_loss(q, r);
-  if (!r.as_run.full_rank())
-    r.warnings.push_back({q.name, "the program as run is rank-deficient (its criteria are infinite)"});
-  return r;
 }
 
 }  // namespace scalcal::commands

@@ -29,6 +29,16 @@ struct PlanRequest {
   std::vector<std::string> regions;  // --region, else the program file's; none: no region to keep
   ModelKind model = ModelKind::paper9;
   Warnings warnings;  // found while reading the request
+  // A thermal program's (a temperature column): each row's temperature, and the time per set-point and per
+  // position (thermal_plan.hpp); empty for a program without temperatures.
+  std::vector<double> celsius;
+  double soak_s = 1800, dwell_s = 5;
+};
+
+// A set-point of a thermal plan: its steps are steps[first_step .. first_step + steps - 1].
+struct SetPointRun {
+  double celsius = 0;  // the mean of its rows' temperatures
+  int first_step = 0, steps = 0;
 };
 
 struct PlannedStep {
@@ -56,6 +66,11 @@ struct PlanResult {
   // the share of the design's efficiency that rounding costs, whatever the region's limit.
   std::array<double, kCriterionCount> efficiency_lost{};
   Warnings warnings;
+  // A thermal plan's: each position's temperature, the set-points in run order, and the time (seconds):
+  // soak per set-point, rest per position, the total with the axes' travel at kTravelDegPerSecond.
+  std::vector<double> celsius;
+  std::vector<SetPointRun> setpoints;
+  double soak_s = 0, dwell_s = 0, total_s = 0;
 
   double max_rounding_deg() const;
   Program program_as_run() const;  // the steps' positions, in run order
@@ -64,7 +79,7 @@ struct PlanResult {
 const char* order_name(RunOrder order);
 
 // PROGRAM --bench SPEC [--resolution DEG] [--order travel|remounts|given] [--region SPEC]... [--model NAME]
-// [--out FILE] [--json]
+// [--soak MIN] [--dwell S] [--out FILE] [--json]
 const CommandTable& plan_table();
 PlanRequest plan_request(const Values& values);
 
@@ -72,6 +87,8 @@ PlanRequest plan_request(const Values& values);
 // no setting on the resolution grid keeps inside the region; UsageError when the rounding costs more
 // than max_loss of the design's D efficiency.
 PlanResult plan(const PlanRequest& request, const Progress& progress = {});
+// The criteria as designed and as run, and the share of efficiency the rounding lost (r.steps set).
+void judge_rounding(const PlanRequest& request, PlanResult& result);
 
 Json to_json(const PlanResult& result);
 

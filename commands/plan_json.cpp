@@ -2,13 +2,15 @@
 // without one), order, resolution_deg, steps (each: step, position (1-based), the mounting under the
 // bench's key when it has several, angles_deg or one key per axis, eta, rounding_deg),
 // total_travel_deg, remounts, given_order {total_travel_deg, remounts}, travel_saved_deg,
-// max_rounding_deg, criteria and criteria_designed (every criterion, thetas), efficiency_lost.
+// max_rounding_deg, criteria and criteria_designed (every criterion, thetas), efficiency_lost; a thermal
+// plan's setpoints (t_c, first_step, steps), soak_s, dwell_s, travel_deg_per_s and total_s.
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 
 #include "commands/evaluation_json.hpp"
 #include "commands/plan.hpp"
+#include "commands/thermal_plan.hpp"
 #include "numeric/io/input_error.hpp"
 
 namespace scalcal::commands {
@@ -69,6 +71,16 @@ Json to_json(const PlanResult& r) {
   j["criteria"] = as_run;
   j["criteria_designed"] = designed;
   j["efficiency_lost"] = lost;
+  if (!r.setpoints.empty()) {
+    Json setpoints = Json::array();
+    for (const auto& s : r.setpoints)
+      setpoints.push_back(Json{{"t_c", s.celsius}, {"first_step", s.first_step + 1}, {"steps", s.steps}});
+    j["setpoints"] = setpoints;
+    j["soak_s"] = r.soak_s;
+    j["dwell_s"] = r.dwell_s;
+    j["travel_deg_per_s"] = kTravelDegPerSecond;
+    j["total_s"] = r.total_s;
+  }
   return j;
 }
 
@@ -97,6 +109,11 @@ PlanFile plan_file(const PlanResult& r) {
   f.columns = {step, position};
   if (mountings.size() > 1) f.columns.push_back(mounting);
   f.columns.insert(f.columns.end(), angles.begin(), angles.end());
+  if (!r.celsius.empty()) {
+    ExtraColumn celsius{"t_c", {}};
+    for (const auto& s : r.steps) celsius.values.push_back(r.celsius[static_cast<std::size_t>(s.position)]);
+    f.columns.push_back(celsius);
+  }
   if (r.region) f.notes.region = r.region->specs;
   char travel[32];
   std::snprintf(travel, sizeof travel, "%.6g", r.travel_deg);

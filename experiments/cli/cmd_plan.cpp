@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "commands/plan.hpp"
+#include "commands/thermal_plan.hpp"
 #include "experiments/cli/command.hpp"
 #include "experiments/cli/json_output.hpp"
 #include "experiments/cli/output_file.hpp"
@@ -24,6 +25,21 @@ int decimals(double resolution) {
 std::string fixed(double v, int places, int width) {
   char s[64];
   std::snprintf(s, sizeof s, "%*.*f", width, places, v == 0 ? 0.0 : v);  // no "-0.0"
+  return s;
+}
+
+// A time as an operator reads it: 45 s, 12 min 30 s, 45 min, 3 h 05 min.
+std::string duration(double seconds) {
+  char s[48];
+  const long long t = std::llround(seconds), minutes = std::llround(seconds / 60);
+  if (t < 60)
+    std::snprintf(s, sizeof s, "%lld s", t);
+  else if (t < 3600 && t % 60 != 0)
+    std::snprintf(s, sizeof s, "%lld min %lld s", t / 60, t % 60);
+  else if (t < 3600)
+    std::snprintf(s, sizeof s, "%lld min", t / 60);
+  else
+    std::snprintf(s, sizeof s, "%lld h %02lld min", minutes / 60, minutes % 60);
   return s;
 }
 
@@ -47,6 +63,21 @@ void print_header(std::ostream& out, const commands::PlanResult& r) {
   if (r.given_travel_deg > 0 && r.travel_deg < r.given_travel_deg)
     out << "; " << percent(1 - r.travel_deg / r.given_travel_deg) << " less travel";
   out << ")\n";
+  if (r.setpoints.empty()) return;
+  out << r.setpoints.size() << " set-points from the coldest:";
+  for (std::size_t i = 0; i < r.setpoints.size(); ++i) out << (i ? ", " : " ") << fixed(r.setpoints[i].celsius, 1, 0);
+  out << " degC; soak " << duration(r.soak_s) << " at each, rest " << fixed(r.dwell_s, 1, 0) << " s on each position\n"
+      << "estimated time " << duration(r.total_s) << " (soaks " << duration(r.soak_s * r.setpoints.size()) << ", rests "
+      << duration(r.dwell_s * r.steps.size()) << ", travel at " << fixed(commands::kTravelDegPerSecond, 0, 0)
+      << " deg/s " << duration(r.travel_deg / commands::kTravelDegPerSecond)
+      << (r.remounts ? "; remounts by hand not counted" : "") << ")\n";
+}
+
+// The set-point that begins at step k (0-based), or nullptr.
+const commands::SetPointRun* setpoint_at(const commands::PlanResult& r, std::size_t k) {
+  for (const auto& s : r.setpoints)
+    if (static_cast<std::size_t>(s.first_step) == k) return &s;
+  return nullptr;
 }
 
 void print_steps(std::ostream& out, const commands::PlanResult& r) {
@@ -61,11 +92,21 @@ void print_steps(std::ostream& out, const commands::PlanResult& r) {
   int last = -1;
   for (std::size_t k = 0; k < r.steps.size(); ++k) {
     const commands::PlannedStep& s = r.steps[k];
+    const commands::SetPointRun* setpoint = setpoint_at(r, k);
+    if (setpoint) {
+      out << "\nset-point " << fixed(setpoint->celsius, 1, 0) << " degC: soak " << duration(r.soak_s) << ", then steps "
+          << k + 1 << "-" << k + static_cast<std::size_t>(setpoint->steps) << "\n";
+      if (headings && s.setting.mounting == last) {
+        out << "(still mounted: " << mountings[static_cast<std::size_t>(s.setting.mounting)].label << ")\n" << head;
+      } else if (!headings) {
+        out << head;
+      }
+    }
     if (headings && s.setting.mounting != last)
       out << (last < 0 ? "\nmount the meter: " : "\nremount the meter: ")
           << mountings[static_cast<std::size_t>(s.setting.mounting)].label << "\n"
           << head;
-    else if (k == 0)
+    else if (k == 0 && !setpoint)
       out << "\n" << head;
     last = s.setting.mounting;
     char lead[32];
