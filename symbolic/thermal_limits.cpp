@@ -54,6 +54,8 @@ GiNaC::ex interval_factor_exact(CriterionKind c, int k) {
   if (k == 2 && c == CriterionKind::A) return 8;
   if (k == 2 && c == CriterionKind::E) return 5;
   if (k == 2 && c == CriterionKind::S) return 4;
+  if (k == 3 && c == CriterionKind::E) return 25;
+  if (k == 3 && c == CriterionKind::S) return 16;
   return 0;
 }
 

@@ -46,7 +46,7 @@ std::vector<double> lobatto_points(int k) {
   return out;
 }
 
-// k = 1, 2: the designs proven in proofs/thermal_product.md (Theorem 25's one-dimensional part).
+// k = 1, 2 and E, S at k = 3: the designs proven in proofs/thermal_product.md (Theorem 25's one-dimensional part).
 std::optional<IntervalDesign> closed_form(CriterionKind c, int k) {
   IntervalDesign d;
   d.degree = k;
@@ -60,6 +60,10 @@ std::optional<IntervalDesign> closed_form(CriterionKind c, int k) {
   } else if (k == 2) {  // A and S
     d.points = {-1, 0, 1};
     d.weights = {0.25, 0.5, 0.25};
+  } else if (k == 3 && (c == CriterionKind::E || c == CriterionKind::S)) {  // T_3's extrema
+    d.points = {-1, -0.5, 0.5, 1};
+    d.weights = c == CriterionKind::E ? std::vector<double>{19.0 / 150, 28.0 / 75, 28.0 / 75, 19.0 / 150}
+                                      : std::vector<double>{1.0 / 6, 1.0 / 3, 1.0 / 3, 1.0 / 6};
   } else {
     return std::nullopt;
   }
@@ -223,7 +227,7 @@ std::optional<IntervalDesign> optimal_interval_design(CriterionKind c, int k) {
   } else {
     d = closed_form(c, k);
   }
-  if (!d) {  // k >= 3 for A, E, S: the best symmetric de la Garza design from the Lobatto design
+  if (!d) {  // A from k = 3, E and S from k = 4: the best symmetric de la Garza design from the Lobatto design
     const SymmetricDesigns family{k};
     auto objective = [&](const Eigen::VectorXd& x) {
       std::vector<double> p, w;

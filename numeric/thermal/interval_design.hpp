@@ -1,9 +1,9 @@
 // Optimal designs for polynomial regression of degree k on [-1, 1] (rows f(tau) = (1, tau, ..., tau^k)):
 // the temperature factor of a thermal model's optimal program (product_limits.hpp). D has a closed form
 // for every k: equal weights on the roots of (1 - tau^2) P_k'(tau), P_k Legendre's polynomial (Hoel
-// 1958, Guest 1958). A, E and S have closed forms for k = 1, 2 (proofs/thermal_product.md, checked by
-// proofs/checks/thermal_product.cpp); for k >= 3 they are found numerically among symmetric designs on
-// k + 1 points including the ends (de la Garza's class, which holds an optimum of every criterion
+// 1958, Guest 1958). A, E and S have closed forms for k = 1, 2, E and S for k = 3 on T_3's extrema
+// (proofs/thermal_product.md, checked by proofs/checks/thermal_product.cpp); the others are found numerically among
+// symmetric designs on k + 1 points including the ends (de la Garza's class, which holds an optimum of every criterion
 // that prefers larger information), with a lower bound from the criterion's convexity.
 #pragma once
 #include <optional>

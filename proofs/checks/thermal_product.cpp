@@ -1,6 +1,7 @@
 // Theorem 25 (proofs/thermal_product.md), checked with GiNaC only (independent of numeric/thermal): the
-// Kronecker identities behind the product, the interval's D-optimal designs for k = 1..6 and its A, E,
-// S designs for k = 1, 2 by their equivalence theorems in exact arithmetic, and paper9's thermal limits.
+// Kronecker identities behind the product, the interval's D-optimal designs for k = 1..6, its A, E, S
+// designs for k = 1, 2 and its E and S designs for k = 3 by their equivalence theorems in exact arithmetic,
+// and paper9's thermal limits.
 #include <algorithm>
 #include <iostream>
 #include <string>
@@ -148,6 +149,38 @@ matrix design_information(int k, const std::vector<ex>& points, const std::vecto
   return M;
 }
 
+// Part 3, k = 3: E and S on the Chebyshev points -1, -1/2, 1/2, 1, where T_3 = 4 t^3 - 3 t reaches +-1 and
+// 1 - T_3^2 = (1 - t^2) (4 t^2 - 1)^2.
+void interval_es_cubic() {
+  const matrix f3 = powers(3);
+  const ex half = ex(1) / 2;
+  const matrix E = design_information(3, {-1, -half, half, 1}, {ex(19) / 150, ex(28) / 75, ex(28) / 75, ex(19) / 150});
+  const matrix u = column({0, -3, 0, 4});  // T_3's coefficients, |u|^2 = 25
+  check(E.mul(u) == u.mul_scalar(ex(1) / 25),
+        "k = 3, E: (0, -3, 0, 4) is an eigenvector of M for 1/25 on -1, -1/2, 1/2, 1 with weights 19/150, 28/75");
+  // The other three eigenvalues exceed 1/25: the characteristic polynomial divided by (x - 1/25), shifted to
+  // x = 1/25 + s, is real-rooted (M symmetric), so by Descartes its roots are all positive iff its four
+  // coefficients alternate in sign.
+  ex q;
+  const ex cp = GiNaC::expand(E.charpoly(t));
+  const bool divides = GiNaC::divide(cp, t - ex(1) / 25, q);
+  const ex shifted = GiNaC::expand(q.subs(t == ex(1) / 25 + t));
+  bool alternate = shifted.degree(t) == 3;
+  for (int i = 0; i < 3 && alternate; ++i)
+    alternate = (shifted.coeff(t, i) * shifted.coeff(t, i + 1)).info(GiNaC::info_flags::negative);
+  check(divides && alternate, "k = 3, E: M's other eigenvalues exceed 1/25 (the smallest simple)");
+  const ex uf = u.transpose().mul(f3)(0, 0);
+  check(nonnegative_on_interval(ex(1) / 25 - GiNaC::pow(uf, 2) / 25, 0),
+        "k = 3, E: 1/25 - (u^T f)^2 / |u|^2 = (1 - t^2)(4 t^2 - 1)^2 / 25 >= 0 (E_1 = 25)");
+
+  const matrix S = design_information(3, {-1, -half, half, 1}, {ex(1) / 6, ex(1) / 3, ex(1) / 3, ex(1) / 6}).inverse();
+  check(S(0, 0) == 3 && S(1, 1) == 11 && S(2, 2) == 8 && S(3, 3) == 16,
+        "k = 3, S: the variances are 3, 11, 8, 16 on -1, -1/2, 1/2, 1 with weights 1/6, 1/3 (largest at t^3 alone)");
+  const ex e3 = S(3, 0) + S(3, 1) * t + S(3, 2) * t * t + S(3, 3) * t * t * t;  // 4 T_3
+  check(nonnegative_on_interval(16 - GiNaC::pow(e3, 2), 0),
+        "k = 3, S: 16 - (e_4^T M^-1 f)^2 = 16 (1 - t^2)(4 t^2 - 1)^2 >= 0 (S_1 = 16)");
+}
+
 // Part 3.
 void interval_aes() {
   const matrix f1 = powers(1), f2 = powers(2);
@@ -174,6 +207,7 @@ void interval_aes() {
   const ex vf = v.transpose().mul(f2)(0, 0);  // 1 - 2 t^2, and |v|^2 = 5
   check(nonnegative_on_interval(ex(1) / 5 - GiNaC::pow(vf, 2) / 5, 1),
         "k = 2, E: 1/5 - (v^T f)^2 / |v|^2 >= 0 (E_1 = 5)");
+  interval_es_cubic();
 }
 
 }  // namespace
