@@ -54,11 +54,21 @@ EvaluateRequest evaluate_request(const Values& v) {
 
 EvaluateResult evaluate(const EvaluateRequest& q, const Progress& progress) {
   if (q.thermal) {
-    if (!q.regions.empty()) throw UsageError("evaluate: a thermal model is judged on the sphere only (got --region)");
     EvaluateResult r;
     r.name = q.name;
-    r.thermal = evaluate_thermal(q.name, q.thermal_program, *q.thermal, *q.temperature);
-    r.warnings = r.thermal->warnings;
+    r.warnings = q.warnings;
+    std::optional<Region> region;
+    if (!q.regions.empty()) {
+      if (q.thermal->base != ModelKind::paper9)
+        throw UsageError("evaluate: --region has limits for the paper9 model only (got --model " + q.thermal->name() +
+                         ")");
+      region = resolve_region(q.regions, r.warnings);
+      Program positions;
+      for (const auto& e : q.thermal_program.positions) positions.positions.push_back(e);
+      refuse_outside(q.name, positions, *region, q.tolerance_deg);
+    }
+    r.thermal = evaluate_thermal(q.name, q.thermal_program, *q.thermal, *q.temperature, region, progress);
+    r.warnings.insert(r.warnings.end(), r.thermal->warnings.begin(), r.thermal->warnings.end());
     return r;
   }
   if (q.model != ModelKind::paper9 && !q.regions.empty())

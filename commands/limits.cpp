@@ -82,10 +82,12 @@ LimitsResult limits(const LimitsRequest& q, const Progress& progress) {
     if (!q.thermal) throw UsageError("limits: --temperature needs a thermal model, --model BASE+Tk (e.g. paper9+T3)");
     if (!q.temperature)
       throw UsageError("limits: --model " + q.thermal->name() + " needs --temperature T1..T2 (degrees Celsius)");
-    if (!sphere) throw UsageError("limits: a thermal model's limits are on the sphere only (got --region)");
     LimitsResult r;
     r.model = q.model;
-    r.thermal = thermal_limits(*q.thermal, *q.temperature);
+    if (!sphere && q.model != ModelKind::paper9)
+      throw UsageError("limits: --region has limits for the paper9 model only (got --model " + q.thermal->name() + ")");
+    if (!sphere) r.region = resolve_region(q.regions, r.warnings);
+    r.thermal = thermal_limits(*q.thermal, *q.temperature, r.region, progress);
     return r;
   }
   if (q.model != ModelKind::paper9 && !sphere)

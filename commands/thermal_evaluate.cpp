@@ -29,7 +29,8 @@ std::string list(const std::vector<double>& v) {
 }  // namespace
 
 ThermalEvaluation evaluate_thermal(const std::string& name, const ThermalProgram& p, const ThermalModel& model,
-                                   const TemperatureRange& range) {
+                                   const TemperatureRange& range, const std::optional<Region>& region,
+                                   const Progress& progress) {
   ThermalEvaluation e;
   e.name = name;
   e.model = model;
@@ -57,7 +58,7 @@ ThermalEvaluation evaluate_thermal(const std::string& name, const ThermalProgram
   if (e.setpoints.front() < range.low - 1e-9 || e.setpoints.back() > range.high + 1e-9)
     e.warnings.push_back({name, "temperatures outside --temperature " + range.text() + " (" + list(e.setpoints) +
                                     " degC): the limits are for that range, so an efficiency above 1 is possible"});
-  e.limits = thermal_limits(model, range);
+  e.limits = thermal_limits(model, range, region, progress);
   for (const auto& row : e.limits.rows) {
     const auto i = static_cast<std::size_t>(row.criterion.index());
     e.values[i] = information_criterion(row.criterion, m);

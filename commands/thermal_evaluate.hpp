@@ -28,8 +28,10 @@ struct ThermalEvaluation {
 };
 
 // Throws InputError naming the program for one that cannot identify the model.
+// With a region, the efficiencies are against region x [T1, T2]'s limits (thermal_limits.hpp).
 ThermalEvaluation evaluate_thermal(const std::string& name, const ThermalProgram& program, const ThermalModel& model,
-                                   const TemperatureRange& range);
+                                   const TemperatureRange& range, const std::optional<Region>& region = {},
+                                   const Progress& progress = {});
 
 Json to_json(const ThermalEvaluation& e);
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "commands/region_request.hpp"
 #include "commands/usage_error.hpp"
 #include "numeric/thermal/information_criteria.hpp"
 
@@ -49,7 +50,8 @@ std::string nearest_splits(int N, int base_parameters, int points) {
 
 ThermalOptimizeResult thermal_optimize(const OptimizeRequest& q, const ThermalModel& model,
                                        const TemperatureRange& range, const Progress& progress) {
-  if (!q.regions.empty()) throw UsageError("optimize: a thermal model is designed on the sphere only (got --region)");
+  if (!q.regions.empty() && model.base != ModelKind::paper9)
+    throw UsageError("optimize: --region has limits for the paper9 model only (got --model " + model.name() + ")");
   if (!q.from.empty() || q.start)
     throw UsageError("optimize: --from does not apply to a thermal model (the program is a product)");
   ThermalOptimizeResult r;
@@ -75,7 +77,10 @@ ThermalOptimizeResult thermal_optimize(const OptimizeRequest& q, const ThermalMo
   std::vector<Eigen::Vector3d> positions;
   for (const auto& e : r.sphere.program.positions) positions.emplace_back(e);
   const ThermalProgram p = product_program(positions, *design, r.counts, range);
-  r.evaluation = evaluate_thermal("the product program", p, model, range);
+  std::optional<Region> region;
+  Warnings said;  // the sphere program's optimize said them already
+  if (!q.regions.empty()) region = resolve_region(q.regions, said);
+  r.evaluation = evaluate_thermal("the product program", p, model, range, region, progress);
   for (const auto& w : r.evaluation.warnings) r.warnings.push_back(w);
   return r;
 }

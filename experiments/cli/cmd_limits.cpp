@@ -104,7 +104,7 @@ void print_sphere(const commands::LimitsResult& r) {
 void print_thermal(const commands::ThermalLimitsResult& t) {
   std::cout << "model " << t.model.name() << " (" << t.model.parameters() << " parameters, polynomials in tau = (T - "
             << shortest_text(t.range.middle()) << ") / " << shortest_text(t.range.half_range()) << " over "
-            << t.range.text() << " degC)\n";
+            << t.range.text() << " degC" << (t.region ? ", positions on " + t.region->text() : std::string()) << ")\n";
   for (const auto& row : t.rows) {
     std::cout << criterion_name(row.criterion);
     if (!row.limit) {
@@ -112,8 +112,20 @@ void print_thermal(const commands::ThermalLimitsResult& t) {
       continue;
     }
     const ThermalLimit& l = *row.limit;
-    if (row.status == "proven")
-      std::cout << " >= " << row.exact << " = " << decimal("%.10g", l.value) << " (proven: proofs/thermal_product.md)";
+    if (row.status == "proven") {  // a factor stated after "; " (a cap's D) goes after the value
+      const auto semicolon = row.exact.find("; ");
+      std::cout << " >= " << row.exact.substr(0, semicolon) << " = " << decimal("%.10g", l.value)
+                << " (proven: proofs/thermal_product.md)"
+                << (semicolon == std::string::npos ? "" : ", where " + row.exact.substr(semicolon + 2));
+    } else if (row.status == "certified") {  // printed outward as print_region prints the region's own
+      const double gap = std::max((l.value - l.lower_bound) / l.value, 1e-15);
+      const int digits = std::clamp(static_cast<int>(std::floor(-std::log10(gap))), 4, 12);
+      std::cout << " in [" << rounded(l.lower_bound, digits, false) << ", " << rounded(l.value, digits, true)
+                << "] (certified: " << l.form << ", " << row.note << "; gap below "
+                << decimal("%.0e", std::pow(10.0, std::ceil(std::log10(gap))))
+                << " relative; proofs/thermal_product.md)";
+    } else if (!std::isfinite(l.lower_bound))
+      std::cout << " = " << decimal("%.10g", l.value) << " (numerically: " << l.form << ", " << row.note << ")";
     else
       std::cout << " >= " << decimal("%.8g", l.lower_bound) << ", attained within "
                 << decimal("%.1e", (l.value - l.lower_bound) / l.value) << " by " << decimal("%.10g", l.value)

@@ -167,7 +167,7 @@ TEST(ThermalCli, BadInputIsOneLineAndExitTwo) {
         {"limits", "--model", "paper9+T3", "--temperature", "60..-20"},
         {"limits", "--model", "paper9+T9", "--temperature", "0..1"},
         {"limits", "--temperature", "0..40"},
-        {"limits", "--model", "paper9+T1", "--temperature", "0..40", "--region", "cap:60"}}) {
+        {"limits", "--model", "axis6+T1", "--temperature", "0..40", "--region", "cap:60"}}) {
     const CliResult r = run_cli(args);
     EXPECT_EQ(r.status, 2) << args[2];
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
