@@ -136,6 +136,10 @@ const CommandTable& simulate_table() {
                              "file path")),
        rehearsal(positive_option("--rate", "rehearsal: samples per second", "Hz", "100")),
        rehearsal(positive_option("--dwell", "rehearsal: seconds at rest on each position", "seconds", "5")),
+       rehearsal(number_option("--ramp", 0, 100,
+                               "thermal rehearsal: the temperature climbs from T1 to T2 at this rate while the "
+                               "program's positions (x,y,z) run over and over (0: the program's set-points, t_c)",
+                               "degC per minute", "0")),
        rehearsal(number_option("--still", 0, 3600,
                                "rehearsal: seconds at rest on the first position (calibrate's --still)", "seconds",
                                "30")),

@@ -6,15 +6,18 @@
 
 #include "commands/common_options.hpp"
 #include "commands/thermal_calibrate.hpp"
+#include "commands/thermal_plan.hpp"
 #include "commands/usage_error.hpp"
+#include "numeric/program/catalogue.hpp"
 
 namespace scalcal::commands {
 
 std::optional<ThermalRehearsalRequest> thermal_rehearsal_request(const Values& v) {
   const auto model = parse_thermal_model(v.text("--model"));
   if (!model) {
-    if (v.given("--temperature"))
-      throw UsageError("simulate: --temperature needs a thermal model, --model BASE+Tk (e.g. paper9+T2)");
+    for (const char* o : {"--temperature", "--ramp"})
+      if (v.given(o))
+        throw UsageError("simulate: " + std::string(o) + " needs a thermal model, --model BASE+Tk (e.g. paper9+T2)");
     return std::nullopt;
   }
   if (model->base != ModelKind::paper9)
@@ -29,9 +32,20 @@ std::optional<ThermalRehearsalRequest> thermal_rehearsal_request(const Values& v
                         "--tumble", "--still", "--instrument", "--format"})
     if (v.given(o)) throw UsageError(std::string(o) + " does not apply to a thermal rehearsal");
   ThermalRehearsalRequest q;
-  q.program = read_thermal_program_csv(v.text("--program"));
   q.model = *model;
   q.range = parse_temperature_range(v.text("--temperature"));
+  q.ramp_c_per_min = v.number("--ramp");
+  if (q.ramp_c_per_min > 0) {  // positions only: the ramp sets the temperatures
+    if (!program_temperatures(v.text("--program")).empty())
+      throw UsageError("simulate: --ramp sets the temperatures, and " + v.text("--program") +
+                       " has a temperature column: give its positions (x,y,z) or leave out --ramp");
+    for (const auto& e : resolve_program(v.text("--program")).positions) {
+      q.program.positions.emplace_back(e);
+      q.program.celsius.push_back(q.range.low);
+    }
+  } else {
+    q.program = read_thermal_program_csv(v.text("--program"));
+  }
   q.rate_hz = v.number("--rate");
   q.dwell_s = v.number("--dwell");
   q.noise = v.number("--noise");
@@ -44,7 +58,10 @@ std::optional<ThermalRehearsalRequest> thermal_rehearsal_request(const Values& v
 
 void write_thermal_log(std::ostream& out, const ThermalRehearsalRequest& q, const ThermalRehearsal& r) {
   out << "# thermal rehearsal: " << q.model.name() << " over " << q.range.text() << " degC, " << q.program.size()
-      << " rows, noise " << shortest_text(q.noise) << " |I|, seed " << q.seed << "\n";
+      << (q.ramp_c_per_min > 0
+              ? " positions run over and over on a ramp of " + shortest_text(q.ramp_c_per_min) + " degC/min"
+              : std::string(" rows"))
+      << ", noise " << shortest_text(q.noise) << " |I|, seed " << q.seed << "\n";
   out << "t,ix,iy,iz,temp\n";
   char buffer[160];
   for (std::size_t i = 0; i < r.t.size(); ++i) {

@@ -115,9 +115,12 @@ int rehearse_thermal(const commands::Values& v, const ThermalRehearsalRequest& q
     return 0;
   }
   std::cout << "thermal rehearsal of " << v.text("--program") << " under " << q.model.name() << ": " << q.program.size()
-            << " rows of the program, " << r.t.size() << " samples (" << std::setprecision(4)
-            << r.t.back() + 1 / q.rate_hz << " s at " << q.rate_hz << " Hz), noise " << q.noise << " |I|, seed "
-            << q.seed << " -> " << v.text("--log")
+            << (q.ramp_c_per_min > 0
+                    ? " positions over and over on a ramp of " + commands::shortest_text(q.ramp_c_per_min) +
+                          " degC/min from " + q.range.text() + " degC, "
+                    : std::string(" rows of the program, "))
+            << r.t.size() << " samples (" << std::setprecision(4) << r.t.back() + 1 / q.rate_hz << " s at " << q.rate_hz
+            << " Hz), noise " << q.noise << " |I|, seed " << q.seed << " -> " << v.text("--log")
             << (v.given("--truth") ? ", true parameters -> " + v.text("--truth") : std::string()) << "\n";
   return 0;
 }

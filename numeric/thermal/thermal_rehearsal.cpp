@@ -35,13 +35,20 @@ ThermalRehearsal rehearse_thermal(const ThermalRehearsalRequest& q) {
                                 ")");
   if (!(q.rate_hz >= 1e-3 && q.rate_hz <= 1e6)) throw std::invalid_argument("the rate must be within 1e-3..1e6 Hz");
   const double per_row = q.dwell_s + 2 + 180.0 / 45;  // a rest and the longest move, with a swing
-  if (static_cast<double>(q.program.size()) * per_row * q.rate_hz > 2e7)
-    throw std::invalid_argument("the log would have more than 2e7 samples: lower --rate or --dwell");
+  const bool ramp = q.ramp_c_per_min > 0;
+  const double seconds = ramp ? 60 * (q.range.high - q.range.low) / q.ramp_c_per_min + per_row
+                              : static_cast<double>(q.program.size()) * per_row;
+  if (seconds * q.rate_hz > 2e7)
+    throw std::invalid_argument(ramp ? "the ramp's log would have more than 2e7 samples: a faster ramp or a lower rate"
+                                     : "the log would have more than 2e7 samples: lower --rate or --dwell");
   ThermalRehearsal r;
   GaussianSource gauss(q.seed);
   r.truth.resize(q.model.parameters());
   for (Eigen::Index i = 0; i < r.truth.size(); ++i) r.truth(i) = (i < 9 ? q.size : q.drift) * gauss();
-  auto emit = [&](const Eigen::Vector3d& eta, double celsius, int row) {
+  auto emit = [&](const Eigen::Vector3d& eta, double planned, int row) {
+    const double celsius =
+        ramp ? std::min(q.range.high, q.range.low + q.ramp_c_per_min * static_cast<double>(r.t.size()) / q.rate_hz / 60)
+             : planned;
     const Eigen::Matrix<double, 9, 1> X = q.model.base_parameters_at(r.truth, q.range.tau(celsius));
     const Meter meter = Meter::from_parameters(X, q.magnitude);
     Eigen::Vector3d w = meter.measure(q.magnitude * eta);
@@ -60,12 +67,16 @@ ThermalRehearsal rehearse_thermal(const ThermalRehearsalRequest& q) {
     }
   };
   const int rest = std::max(1, static_cast<int>(std::lround(q.dwell_s * q.rate_hz)));
-  for (int i = 0; i < q.program.size(); ++i) {
+  const int n = q.program.size();
+  // Set-points: each row once. A ramp: the rows over and over until the temperature has reached T2.
+  for (int k = 0; ramp ? (r.celsius.empty() || r.celsius.back() < q.range.high) : k < n; ++k) {
+    const int i = k % n;
     const Eigen::Vector3d& e = q.program.positions[static_cast<std::size_t>(i)];
     const double c = q.program.celsius[static_cast<std::size_t>(i)];
-    if (i > 0) {
-      const Eigen::Vector3d& prev = q.program.positions[static_cast<std::size_t>(i - 1)];
-      const double pc = q.program.celsius[static_cast<std::size_t>(i - 1)];
+    if (k > 0) {
+      const int before = (k - 1) % n;
+      const Eigen::Vector3d& prev = q.program.positions[static_cast<std::size_t>(before)];
+      const double pc = q.program.celsius[static_cast<std::size_t>(before)];
       if (std::acos(std::clamp(prev.dot(e), -1.0, 1.0)) < 5 * M_PI / 180) {
         move(prev, aside(prev), pc, (pc + c) / 2);
         move(aside(prev), e, (pc + c) / 2, c);

@@ -6,7 +6,9 @@
 // poses); the temperature goes linearly from one row's to the next's during the move (the oven's soak
 // is not logged). Raw = bias(T) + gain(T) |I| eta + white noise of `noise` |I| per output; the
 // temperature column is exact. The truth: X_0 ~ N(0, size^2) and each drift coefficient of tau^j
-// ~ N(0, drift^2), from the seed.
+// ~ N(0, drift^2), from the seed. A ramp (ramp_c_per_min > 0) ignores the rows' temperatures: the
+// temperature climbs from T1 at that rate, during rests and moves alike, while the meter runs the program's
+// positions over and over, until the rest in which it reaches T2 ends.
 #pragma once
 #include <cstdint>
 #include <vector>
@@ -23,6 +25,7 @@ struct ThermalRehearsalRequest {
   TemperatureRange range;
   double rate_hz = 100, dwell_s = 5;
   double noise = 1e-3, magnitude = 1, size = 1e-3, drift = 1e-3;
+  double ramp_c_per_min = 0;  // > 0: a ramp from range.low to range.high instead of the rows' set-points
   std::uint64_t seed = 1;
 };
 

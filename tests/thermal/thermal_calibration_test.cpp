@@ -81,6 +81,61 @@ TEST(ThermalCalibration, RehearsalsCalibrateToTheirTruth) {
   EXPECT_LE(beyond, static_cast<int>(0.01 * static_cast<double>(z.size())) + 1) << z.size() << " errors";
 }
 
+// A ramp: the temperature climbs 2 degC per minute from -10 to 50 while the dodecahedron's 12 positions run over
+// and over (about 227 poses of 5 s at 20 Hz); 10 seeds, 270 standardised errors.
+TEST(ThermalCalibration, RampRehearsalsCalibrateToTheirTruth) {
+  std::vector<double> z;
+  for (int seed = 1; seed <= 10; ++seed) {
+    const std::string log = scratch("ramp_log.csv"), truth = scratch("ramp_truth.json");
+    const CliResult s = run_cli({"simulate",
+                                 "--program",
+                                 "dodecahedral-12",
+                                 "--model",
+                                 "paper9+T2",
+                                 "--temperature",
+                                 "-10..50",
+                                 "--ramp",
+                                 "2",
+                                 "--log",
+                                 log,
+                                 "--truth",
+                                 truth,
+                                 "--noise",
+                                 "1e-3",
+                                 "--size",
+                                 "3e-3",
+                                 "--seed",
+                                 std::to_string(seed),
+                                 "--rate",
+                                 "20"});
+    ASSERT_EQ(s.status, 0) << s.err;
+    const CliResult c = run_cli({"calibrate", "--measurements", log, "--model", "paper9+T2", "--magnitude", "1",
+                                 "--temperature", "-10..50", "--json"});
+    ASSERT_EQ(c.status, 0) << c.err;
+    const auto fit = nlohmann::json::parse(c.out);
+    std::ifstream in(truth);
+    const auto t = nlohmann::json::parse(in);
+    EXPECT_GT(fit["poses"].size(), 200u) << "seed " << seed;
+    for (const auto& [name, p] : fit["parameters"].items())
+      z.push_back((p["value"].get<double>() - t["parameters"][name].get<double>()) / p["standard_error"].get<double>());
+  }
+  double sum = 0;
+  for (double v : z) sum += v * v;
+  const double rms = std::sqrt(sum / static_cast<double>(z.size()));
+  EXPECT_GT(rms, 0.7);
+  EXPECT_LT(rms, 1.3);
+  // The ramp sets the temperatures: a program with its own is refused, and so is a ramp without a thermal model.
+  const std::string program = write_program({0, 40}, "ramp_program.csv");
+  EXPECT_EQ(run_cli({"simulate", "--program", program, "--model", "paper9+T1", "--temperature", "0..40", "--ramp", "1",
+                     "--log", scratch("x.csv"), "--noise", "1e-3"})
+                .status,
+            2);
+  EXPECT_EQ(
+      run_cli({"simulate", "--program", "dodecahedral-12", "--ramp", "1", "--log", scratch("x.csv"), "--noise", "1e-3"})
+          .status,
+      2);
+}
+
 TEST(ThermalCalibration, TooFewSetPointsAreRefusedWithWhatWouldWork) {
   const std::string program = write_program({0, 40}, "two.csv"), log = scratch("two_log.csv");
   ASSERT_EQ(run_cli({"simulate", "--program", program, "--model", "paper9+T2", "--temperature", "0..40", "--log", log,
