@@ -29,12 +29,35 @@ std::string num(double v) {
 struct Interval {
   double start, end, residual;
   Vec3 mean;
-  int samples = -1;  // -1: the file does not say
+  int samples = -1;      // -1: the file does not say
+  double celsius = NAN;  // a thermal calibration's pose: its mean temperature
 };
+
+// A thermal calibration's poses (calibrate --model paper9+Tk --out): t_c, start_s, stop_s, mean, samples and
+// residual (|corrected| / |I| - 1, drawn as |I| times it).
+std::vector<Interval> poses_of(const Json& j, const std::string& file, double magnitude) {
+  std::vector<Interval> out;
+  for (const auto& p : j["poses"]) {
+    if (!p.is_object() || !p["t_c"].is_number() || !p["start_s"].is_number() || !p.contains("stop_s") ||
+        !p["stop_s"].is_number() || !p["residual"].is_number() || !p["mean"].is_array() || p["mean"].size() != 3 ||
+        !p["samples"].is_number_integer())
+      throw InputError(file, 0, "its poses need t_c, start_s, stop_s, mean, samples and residual (calibrate --out)");
+    out.push_back({p["start_s"].get<double>(), p["stop_s"].get<double>(), magnitude * p["residual"].get<double>(),
+                   Vec3(p["mean"][0].get<double>(), p["mean"][1].get<double>(), p["mean"][2].get<double>()),
+                   p["samples"].get<int>(), p["t_c"].get<double>()});
+  }
+  return out;
+}
 
 // The calibration's intervals (start, end in seconds, raw mean, residual) and |I|.
 std::vector<Interval> intervals_of(const std::string& file, double& magnitude) {
   Json j = parse_json_file_text(read_text_file(file), file);
+  if (j.is_object() && j.contains("poses") && j["poses"].is_array()) {
+    magnitude = j.contains("magnitude") && j["magnitude"].is_number() ? j["magnitude"].get<double>() : 1.0;
+    std::vector<Interval> out = poses_of(j, file, magnitude);
+    if (out.empty()) throw InputError(file, 0, "no poses");
+    return out;
+  }
   if (!j.is_object() || !j.contains("intervals") || !j["intervals"].is_array())
     throw InputError(file, 0, "not a calibration of a log (calibrate --out): it has no 'intervals'");
   magnitude = j.contains("magnitude") && j["magnitude"].is_number() ? j["magnitude"].get<double>() : 1.0;
@@ -91,6 +114,27 @@ void refuse_other_log(const PlotRequest& q, const RawLog& log, const std::vector
   }
 }
 
+// Panel (b) of a log: |mean| - |I| per interval, before (one gain) and after calibration, on a log scale.
+std::string residual_per_interval(std::size_t intervals) {
+  return "set xlabel 'static interval'\nset ylabel '| |mean| − |I| |'\nset xrange [0:" + std::to_string(intervals + 1) +
+         "]\nset yrange [*:*]\nset logscale y\nset format y '10^{/*1.1 %T}'\n"
+         "plot intervals_file skip 1 using 1:(abs($4)) with points pt 6 ps 0.9 lw 1.5 lc rgb '" +
+         std::string(kGrey) +
+         "' title 'before (one gain)', \\\n"
+         "     intervals_file skip 1 using 1:(abs($5)) with points pt 7 ps 0.9 lc rgb '" +
+         kDark + "' title 'after calibration'\nunset multiplot\n";
+}
+
+// Panel (b) of a thermal log: each pose's residual after the thermal calibration against its temperature
+// (signed, linear: a trend left in it is drift the model's degree missed).
+std::string residual_against_temperature() {
+  return "set xlabel 'temperature (°C)'\nset ylabel '|corrected| − |I|'\nset xrange [*:*]\nset yrange [*:*]\n"
+         "set format y '%.0e'\n"
+         "plot intervals_file skip 1 using 6:5 with points pt 7 ps 0.9 lc rgb '" +
+         std::string(kDark) + "' title 'after calibration', 0 with lines lc rgb '" + kGrey +
+         "' notitle\nunset multiplot\n";
+}
+
 }  // namespace
 
 void plot_log(const PlotRequest& q, PlotResult& r) {
@@ -104,10 +148,12 @@ void plot_log(const PlotRequest& q, PlotResult& r) {
   std::vector<double> sorted = norms;
   std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2), sorted.end());
   const double gain = sorted[sorted.size() / 2] / magnitude;
-  std::string iv = "interval,start,end,before,after\n";
+  const bool thermal = !std::isnan(intervals.front().celsius);
+  std::string iv = std::string("interval,start,end,before,after") + (thermal ? ",t_c" : "") + "\n";
   for (std::size_t k = 0; k < intervals.size(); ++k)
     iv += std::to_string(k + 1) + "," + num(intervals[k].start) + "," + num(intervals[k].end) + "," +
-          num(norms[k] / gain - magnitude) + "," + num(intervals[k].residual) + "\n";
+          num(norms[k] / gain - magnitude) + "," + num(intervals[k].residual) +
+          (thermal ? "," + num(intervals[k].celsius) : "") + "\n";
   const int step = std::max(1, log.size() / kMaxLogRows);
   std::string rows = "t,ix,iy,iz\n";
   double lo = INFINITY, hi = -INFINITY;
@@ -145,15 +191,8 @@ void plot_log(const PlotRequest& q, PlotResult& r) {
       "     log_file skip 1 using 1:4 with lines lw 1 lc rgb '" +
       kLight +
       "' title 'z'\n"
-      "set label 1 '(b)'\nset tmargin at screen 0.44\nset bmargin at screen 0.12\nset xlabel 'static interval'\n"
-      "set ylabel '| |mean| − |I| |'\nset xrange [0:" +
-      std::to_string(intervals.size() + 1) +
-      "]\nset yrange [*:*]\nset logscale y\nset format y '10^{/*1.1 %T}'\n"
-      "plot intervals_file skip 1 using 1:(abs($4)) with points pt 6 ps 0.9 lw 1.5 lc rgb '" +
-      kGrey +
-      "' title 'before (one gain)', \\\n"
-      "     intervals_file skip 1 using 1:(abs($5)) with points pt 7 ps 0.9 lc rgb '" +
-      kDark + "' title 'after calibration'\nunset multiplot\n";
+      "set label 1 '(b)'\nset tmargin at screen 0.44\nset bmargin at screen 0.12\n" +
+      (thermal ? residual_against_temperature() : residual_per_interval(intervals.size()));
 }
 
 }  // namespace scalcal::commands

@@ -92,6 +92,8 @@ Json to_json(const ThermalCalibration& c) {
   for (std::size_t i = 0; i < c.poses.size(); ++i)
     poses.push_back(Json{{"t_c", c.poses[i].celsius},
                          {"start_s", c.poses[i].start},
+                         {"stop_s", c.poses[i].stop},
+                         {"mean", Json{c.poses[i].mean(0), c.poses[i].mean(1), c.poses[i].mean(2)}},
                          {"samples", c.poses[i].samples},
                          {"residual", i < f.residuals.size() ? Json(f.residuals[i]) : Json(nullptr)}});
   Json j = thermal_model_json(f.model, f.range);

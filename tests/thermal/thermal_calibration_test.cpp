@@ -136,6 +136,36 @@ TEST(ThermalCalibration, RampRehearsalsCalibrateToTheirTruth) {
       2);
 }
 
+// plot --log draws a thermal calibration's poses: the raw log with the poses shaded, and each pose's residual
+// against its temperature; another log's calibration is refused.
+TEST(ThermalCalibration, PlotLogDrawsTheResidualAgainstTemperature) {
+  const std::string program = write_program({0, 20, 40}, "plot_program.csv"), log = scratch("plot_log.csv"),
+                    other = scratch("plot_other.csv"), cal = scratch("plot_cal.json"), figure = scratch("plot_fig.svg");
+  for (const auto& [file, seed] : {std::pair{log, "4"}, std::pair{other, "5"}})
+    ASSERT_EQ(run_cli({"simulate", "--program", program, "--model", "paper9+T2", "--temperature", "0..40", "--log",
+                       file, "--noise", "1e-3", "--seed", seed, "--rate", "50"})
+                  .status,
+              0);
+  ASSERT_EQ(
+      run_cli({"calibrate", "--measurements", log, "--model", "paper9+T2", "--magnitude", "1", "--out", cal}).status,
+      0);
+  const CliResult p = run_cli({"plot", "--log", log, "--calibration", cal, "--out", figure});
+  ASSERT_EQ(p.status, 0) << p.err;
+  std::ifstream in(scratch("plot_fig_intervals.csv"));
+  std::string header, line;
+  std::getline(in, header);
+  EXPECT_EQ(header, "interval,start,end,before,after,t_c");
+  std::vector<double> celsius;
+  while (std::getline(in, line)) celsius.push_back(std::stod(line.substr(line.rfind(',') + 1)));
+  ASSERT_EQ(celsius.size(), 36u);
+  EXPECT_NEAR(celsius.front(), 0, 0.5);
+  EXPECT_NEAR(celsius.back(), 40, 0.5);
+  EXPECT_NE(testing::slurp(scratch("plot_fig.gp")).find("temperature"), std::string::npos);
+  const CliResult wrong = run_cli({"plot", "--log", other, "--calibration", cal, "--out", scratch("wrong.svg")});
+  EXPECT_EQ(wrong.status, 2);
+  EXPECT_NE(wrong.err.find("another log's calibration"), std::string::npos) << wrong.err;
+}
+
 TEST(ThermalCalibration, TooFewSetPointsAreRefusedWithWhatWouldWork) {
   const std::string program = write_program({0, 40}, "two.csv"), log = scratch("two_log.csv");
   ASSERT_EQ(run_cli({"simulate", "--program", program, "--model", "paper9+T2", "--temperature", "0..40", "--log", log,
