@@ -57,7 +57,7 @@ AugmentResult augment(const AugmentRequest& q, const Progress& progress) {
              augment_work(q.given.size() + q.add), "augment a smaller program");
   r.augmented = augment_program(q.given, q.add, q.criterion, r.region, q.model, q.polish);
   r.columns = region_columns(r.region, r.augmented.program);
-  if (q.model == ModelKind::paper9 && std::isfinite(r.augmented.value)) {
+  if (model_supports(q.model, ModelCapability::region_limits) && std::isfinite(r.augmented.value)) {
     try {
       if (progress) progress("the " + std::string(criterion_name(q.criterion)) + " limit on " + r.region.text(), 0, 0);
       r.limit = limit_value(q.criterion, r.region);
@@ -83,7 +83,7 @@ Json to_json(const AugmentResult& r) {
          {"efficiency", r.efficiency ? Json(*r.efficiency) : Json(nullptr)},
          {"added", added},
          {"program", program_json(r.augmented.program)}};
-  if (r.model != ModelKind::paper9) j["model"] = std::string(model_name(r.model));
+  if (!is_default_model(r.model)) j["model"] = std::string(model_name(r.model));
   return j;
 }
 

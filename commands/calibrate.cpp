@@ -379,7 +379,7 @@ CalibrateResult calibrate(const CalibrateRequest& q, CalibrationInput in, const 
   if (!out.excluded.empty()) out.warnings.push_back({q.file, outlier_warning(out.excluded)});
   if (progress) progress("model", 0, 3);
   choose(q, in.data, magnitude, out);
-  if (!q.model && out.model != ModelKind::paper9)
+  if (!q.model && !is_default_model(out.model))
     out.warnings.push_back({q.file, "model " + std::string(model_name(out.model)) + " (auto): " + out.model_reason});
   if (magnitude_auto)
     out.not_identifiable.emplace_back(

@@ -203,7 +203,7 @@ void judge_program(GyroCalibrateResult& r) {
   for (CriterionKind c : kCriteria) {
     const double v = r.program->value(c);
     double limit = NAN;
-    if (model == ModelKind::paper9 && has_limit(c))
+    if (model_supports(model, ModelCapability::criteria_native) && has_limit(c))
       limit = limit_value(c, sphere_region());
     else if (const auto stated = stated_limit(model, criterion_name(c)))
       limit = stated->value;

@@ -277,8 +277,9 @@ void check_calibrate_request(const CalibrateRequest& o) {
     throw UsageError(
         "calibrate: --magnitude auto does not work with --model cubic12: its cubic term is relative to "
         "|I|, which would be one more unknown; give |I|");
-  if (o.model && *o.model != ModelKind::paper9 && !o.regions.empty())
-    throw UsageError("calibrate: --region (the advice on what to add) works with the paper9 model only");
+  if (o.model && !model_supports(*o.model, ModelCapability::region_limits) && !o.regions.empty())
+    throw UsageError("calibrate: --region (the advice on what to add) works with the " +
+                     models_supporting(ModelCapability::region_limits) + " model only");
   if (!(o.rate >= 0) || !std::isfinite(o.rate)) throw UsageError("calibrate: --rate must be a positive number");
 }
 

@@ -110,10 +110,11 @@ std::vector<Vec3> positions_to_add(const Program& measured, int add, CriterionKi
 
 ProgramQuality program_quality(const CalibrateRequest& q, CalibrateResult& r, const Progress&) {
   ProgramQuality out;
-  const bool paper9 = r.model == ModelKind::paper9;
+  const bool paper9 = model_supports(r.model, ModelCapability::region_limits);
   if (!paper9 && !q.regions.empty())
-    r.warnings.push_back({"--region", "ignored: the advice on a region works with paper9 only, and the model is " +
-                                          std::string(model_name(r.model))});
+    r.warnings.push_back({"--region", "ignored: the advice on a region works with " +
+                                          models_supporting(ModelCapability::region_limits) +
+                                          " only, and the model is " + std::string(model_name(r.model))});
   const Region region = region_of(paper9 ? q.regions : std::vector<std::string>{}, r.warnings);
   out.region = region.text();
   const Program measured{r.fit.directions};

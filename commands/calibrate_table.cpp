@@ -228,7 +228,7 @@ CalibrateRequest calibrate_request(const Values& v) {
     q.temperature = parse_temperature_range(v.text("--temperature"));
   }
   if (q.thermal) {
-    if (q.thermal->base != ModelKind::paper9)
+    if (!model_supports(q.thermal->base, ModelCapability::thermal_base))
       throw UsageError("--model " + q.thermal->name() + ": a thermal log is fitted under paper9+Tk or paper9+bias:Tk");
     return q;
   }

@@ -59,9 +59,9 @@ EvaluateResult evaluate(const EvaluateRequest& q, const Progress& progress) {
     r.warnings = q.warnings;
     std::optional<Region> region;
     if (!q.regions.empty()) {
-      if (q.thermal->base != ModelKind::paper9)
-        throw UsageError("evaluate: --region has limits for the paper9 model only (got --model " + q.thermal->name() +
-                         ")");
+      if (!model_supports(q.thermal->base, ModelCapability::region_limits))
+        throw UsageError("evaluate: --region has limits for the " + models_supporting(ModelCapability::region_limits) +
+                         " model only (got --model " + q.thermal->name() + ")");
       region = resolve_region(q.regions, r.warnings);
       Program positions;
       for (const auto& e : q.thermal_program.positions) positions.positions.push_back(e);
@@ -71,9 +71,9 @@ EvaluateResult evaluate(const EvaluateRequest& q, const Progress& progress) {
     r.warnings.insert(r.warnings.end(), r.thermal->warnings.begin(), r.thermal->warnings.end());
     return r;
   }
-  if (q.model != ModelKind::paper9 && !q.regions.empty())
-    throw UsageError("evaluate: --region has limits for the paper9 model only (got --model " +
-                     std::string(model_name(q.model)) + ")");
+  if (!model_supports(q.model, ModelCapability::region_limits) && !q.regions.empty())
+    throw UsageError("evaluate: --region has limits for the " + models_supporting(ModelCapability::region_limits) +
+                     " model only (got --model " + std::string(model_name(q.model)) + ")");
   EvaluateResult r;
   r.warnings = q.warnings;
   r.name = q.name;

@@ -14,7 +14,7 @@ Json evaluation_json(const ModelEvaluation& ev) {
   Json names = Json::array();
   for (int r : ev.unidentifiable) names.push_back(std::string(ev.parameter_names[static_cast<std::size_t>(r)]));
   Json j = Json::object();
-  if (ev.model != ModelKind::paper9) {
+  if (!is_default_model(ev.model)) {
     j["model"] = std::string(ev.model_name);
     Json p = Json::array();
     for (auto n : ev.parameter_names) p.push_back(std::string(n));

@@ -31,7 +31,7 @@ std::string family_names() {
 }
 
 symbolic::ExactCriteria exact_of(const FamilyRequest& q, const symbolic::FamilyInstance& inst) {
-  const bool paper9 = q.model == ModelKind::paper9;
+  const bool paper9 = model_supports(q.model, ModelCapability::criteria_native);
   const int P = model_parameters(q.model);
   if (!paper9 && !inst.moment)
     throw InputError(q.name, 0,
@@ -124,7 +124,7 @@ Json to_json(const FamilyResult& r) {
   for (const auto& [k, v] : r.params) ps[k] = v;
   // positions is always the exact text; positions_value the number, null when N is symbolic.
   Json out{{"family", r.family}, {"params", ps}, {"positions", r.positions}};
-  if (r.model != ModelKind::paper9) out["model"] = std::string(model_name(r.model));
+  if (!is_default_model(r.model)) out["model"] = std::string(model_name(r.model));
   out["positions_value"] = !r.positions_value    ? Json(nullptr)
                            : r.positions_integer ? Json(static_cast<long>(*r.positions_value))
                                                  : Json(*r.positions_value);

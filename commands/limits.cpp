@@ -84,15 +84,16 @@ LimitsResult limits(const LimitsRequest& q, const Progress& progress) {
       throw UsageError("limits: --model " + q.thermal->name() + " needs --temperature T1..T2 (degrees Celsius)");
     LimitsResult r;
     r.model = q.model;
-    if (!sphere && q.model != ModelKind::paper9)
-      throw UsageError("limits: --region has limits for the paper9 model only (got --model " + q.thermal->name() + ")");
+    if (!sphere && !model_supports(q.model, ModelCapability::region_limits))
+      throw UsageError("limits: --region has limits for the " + models_supporting(ModelCapability::region_limits) +
+                       " model only (got --model " + q.thermal->name() + ")");
     if (!sphere) r.region = resolve_region(q.regions, r.warnings);
     r.thermal = thermal_limits(*q.thermal, *q.temperature, r.region, progress);
     return r;
   }
-  if (q.model != ModelKind::paper9 && !sphere)
-    throw UsageError("limits: --region has limits for the paper9 model only (got --model " +
-                     std::string(model_name(q.model)) + ")");
+  if (!model_supports(q.model, ModelCapability::region_limits) && !sphere)
+    throw UsageError("limits: --region has limits for the " + models_supporting(ModelCapability::region_limits) +
+                     " model only (got --model " + std::string(model_name(q.model)) + ")");
   LimitsResult r;
   r.model = q.model;
   if (!sphere) r.region = resolve_region(q.regions, r.warnings);
@@ -101,7 +102,7 @@ LimitsResult limits(const LimitsRequest& q, const Progress& progress) {
   for (auto c : kCriteria) {
     CriterionLimits l;
     l.criterion = c;
-    l.sphere = q.model == ModelKind::paper9 ? paper9_limit(c) : model_limit(q.model, c);
+    l.sphere = model_supports(q.model, ModelCapability::criteria_native) ? paper9_limit(c) : model_limit(q.model, c);
     if (r.region && l.sphere) {  // a region's limit is judged against the sphere's, so both must exist
       tasks.push_back({c, *r.region});
       task_row.push_back(r.criteria.size());

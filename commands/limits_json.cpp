@@ -57,15 +57,15 @@ Json region_json(const RegionLimit& l, const std::string& exact, double sphere) 
 Json to_json(const LimitsResult& r) {
   if (r.thermal) return to_json(*r.thermal);
   Json j = Json::object();
-  if (r.model != ModelKind::paper9) j["model"] = std::string(model_name(r.model));
+  if (!is_default_model(r.model)) j["model"] = std::string(model_name(r.model));
   if (r.region) j["region"] = r.region->text();
   for (const auto& l : r.criteria) {
     const std::string key(criterion_name(l.criterion));
     if (r.region)
       j[key] = l.region ? region_json(*l.region, l.region_exact, *l.sphere_value) : Json(nullptr);
     else if (l.sphere)
-      j[key] = sphere_json(*l.sphere, r.model != ModelKind::paper9);
-    else if (r.model == ModelKind::paper9)
+      j[key] = sphere_json(*l.sphere, !model_supports(r.model, ModelCapability::criteria_native));
+    else if (model_supports(r.model, ModelCapability::criteria_native))
       j[key] = nullptr;  // no known limit (another model's JSON lists only what it states)
   }
   return j;

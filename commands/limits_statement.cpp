@@ -10,7 +10,7 @@ namespace scalcal::commands {
 
 std::optional<ReportedLimit> reported_limit(CriterionKind c, ModelKind model, const std::optional<Region>& region) {
   ReportedLimit out;
-  if (model != ModelKind::paper9) {  // a model's stated limits are on the sphere only
+  if (!model_supports(model, ModelCapability::criteria_native)) {  // a model's stated limits: on the sphere only
     const auto l = stated_limit(model, criterion_name(c));
     if (!l) return std::nullopt;
     const std::string_view proof = visit_model(model, [](auto M) { return decltype(M)::proof; });

@@ -25,9 +25,17 @@ void check(const OptimizeRequest& q) {
     throw UsageError("optimize: --positions " + std::to_string(o.positions) + " is below the " +
                      std::to_string(model_parameters(o.model)) + " parameters of --model " +
                      std::string(model_name(o.model)));
-  if (o.model != ModelKind::paper9 && (!q.regions.empty() || q.digits > 0))
-    throw UsageError("optimize: --region and --digits work with the paper9 model only (got --model " +
-                     std::string(model_name(o.model)) + ")");
+  // The message as it always read while one model had both (paper9); with other models it says which has which.
+  const bool regions = !q.regions.empty() && !model_supports(o.model, ModelCapability::region_limits),
+             digits = q.digits > 0 && !model_supports(o.model, ModelCapability::polish_digits);
+  const std::string with_regions = models_supporting(ModelCapability::region_limits),
+                    with_digits = models_supporting(ModelCapability::polish_digits);
+  if (regions || digits)
+    throw UsageError("optimize: " +
+                     (with_regions == with_digits ? "--region and --digits work with the " + with_regions
+                      : regions                   ? "--region works with the " + with_regions
+                                                  : "--digits works with the " + with_digits) +
+                     " model only (got --model " + std::string(model_name(o.model)) + ")");
 }
 
 // --from: start 0 is that program, and N its size.
@@ -171,7 +179,7 @@ OptimizeResult optimize(const OptimizeRequest& q, const Progress& progress) {
   r.program = r.polished ? r.polished->program : r.synthesis.program;
   if (r.region) r.columns = region_columns(*r.region, r.program);
   const int P = model_parameters(opt.model);
-  if (opt.model != ModelKind::paper9 || r.region) {
+  if (!model_supports(opt.model, ModelCapability::criteria_native) || r.region) {
     if (r.region && progress)
       progress("the " + std::string(criterion_name(opt.criterion)) + " limit on " + r.region->text(), 0, 0);
     r.limit_statement = reported_limit(opt.criterion, opt.model, r.region);  // none: no known limit
@@ -195,7 +203,7 @@ Json to_json(const OptimizeResult& r) {
          {"seconds", s.seconds},
          {"local_solver", s.local_solver},
          {"confirmed", s.summary.converged()}};
-  if (r.model != ModelKind::paper9) {
+  if (!is_default_model(r.model)) {
     j["model"] = std::string(model_name(r.model));
     if (r.limit) {
       j["limit"] = *r.limit;

@@ -67,7 +67,7 @@ Json to_json(const PlanResult& r) {
          {"given_order", Json{{"total_travel_deg", r.given_travel_deg}, {"remounts", r.given_remounts}}},
          {"travel_saved_deg", r.given_travel_deg - r.travel_deg},
          {"max_rounding_deg", r.max_rounding_deg()}};
-  if (r.model != ModelKind::paper9) j["model"] = std::string(model_name(r.model));
+  if (!is_default_model(r.model)) j["model"] = std::string(model_name(r.model));
   j["criteria"] = as_run;
   j["criteria_designed"] = designed;
   j["efficiency_lost"] = lost;

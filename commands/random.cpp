@@ -73,7 +73,7 @@ Json to_json(const RandomResult& r) {
          {"program", program_json(r.search.program)},
          {"seconds", r.search.seconds}};
   if (!r.region.empty()) j["region"] = r.region;
-  if (r.request.model != ModelKind::paper9) j["model"] = std::string(model_name(r.request.model));
+  if (!is_default_model(r.request.model)) j["model"] = std::string(model_name(r.request.model));
   return j;
 }
 

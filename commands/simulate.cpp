@@ -335,7 +335,7 @@ Json to_json(const SimulateResult& result) {
            {"seed", q.seed},
            {"samples", q.samples},
            {"size", q.size}};
-  if (q.model != ModelKind::paper9) all["model"] = std::string(model_name(q.model));
+  if (!is_default_model(q.model)) all["model"] = std::string(model_name(q.model));
   Json results = Json::array();
   for (const auto& [m, r] : result.results) {
     Json params = Json::array();

@@ -86,9 +86,9 @@ Sweep::Sweep(const SweepRequest& q) : request_(q), limits_(kCriterionCount) {
     throw UsageError("sweep: --positions " + std::to_string(q.lo) + " is below the " +
                      std::to_string(model_parameters(q.model)) + " parameters of --model " +
                      std::string(model_name(q.model)));
-  if (q.model != ModelKind::paper9 && !q.regions.empty())
-    throw UsageError("sweep: --region works with the paper9 model only (got --model " +
-                     std::string(model_name(q.model)) + ")");
+  if (!model_supports(q.model, ModelCapability::region_limits) && !q.regions.empty())
+    throw UsageError("sweep: --region works with the " + models_supporting(ModelCapability::region_limits) +
+                     " model only (got --model " + std::string(model_name(q.model)) + ")");
   if (!q.regions.empty()) region_ = resolve_region(q.regions, warnings_);
   for (const CriterionKind c : q.criteria)
     for (int n = q.lo; n <= q.hi; ++n) tasks_.push_back({c, n});
@@ -101,7 +101,7 @@ std::optional<double> Sweep::limit(CriterionKind c) const {
     try {
       if (restricted())
         l = limit_value(c, *region_);
-      else if (request_.model == ModelKind::paper9)
+      else if (model_supports(request_.model, ModelCapability::criteria_native))
         l = criterion_limit(c).value;
       else if (const auto stated = stated_limit(request_.model, criterion_name(c)))
         l = stated->value;
@@ -141,7 +141,7 @@ Json to_json(const Sweep& sweep, const SweepRow& row, bool timing) {
          {"stopping", r.stopping},
          {"distinct", r.distinct}};
   if (timing) j["seconds"] = r.seconds;
-  if (sweep.request().model != ModelKind::paper9) {
+  if (!is_default_model(sweep.request().model)) {
     j["model"] = std::string(model_name(sweep.request().model));
     j["limit"] = limit;
   }

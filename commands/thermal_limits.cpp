@@ -29,7 +29,7 @@ struct BaseFactor {
 };
 
 BaseFactor sphere_factor(ModelKind model, CriterionKind c) {
-  if (model == ModelKind::paper9) {
+  if (model_supports(model, ModelCapability::criteria_native)) {
     if (!symbolic::has_symbolic_limit(c)) return {};
     const auto l = symbolic::symbolic_limit(c);
     return {GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(l.value)).to_double(), symbolic::canonical_text(l.value), {}};

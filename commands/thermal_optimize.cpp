@@ -50,8 +50,9 @@ std::string nearest_splits(int N, int base_parameters, int points) {
 
 ThermalOptimizeResult thermal_optimize(const OptimizeRequest& q, const ThermalModel& model,
                                        const TemperatureRange& range, const Progress& progress) {
-  if (!q.regions.empty() && model.base != ModelKind::paper9)
-    throw UsageError("optimize: --region has limits for the paper9 model only (got --model " + model.name() + ")");
+  if (!q.regions.empty() && !model_supports(model.base, ModelCapability::region_limits))
+    throw UsageError("optimize: --region has limits for the " + models_supporting(ModelCapability::region_limits) +
+                     " model only (got --model " + model.name() + ")");
   if (!q.from.empty() || q.start)
     throw UsageError("optimize: --from does not apply to a thermal model (the program is a product)");
   ThermalOptimizeResult r;

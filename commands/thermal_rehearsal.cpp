@@ -20,7 +20,7 @@ std::optional<ThermalRehearsalRequest> thermal_rehearsal_request(const Values& v
         throw UsageError("simulate: " + std::string(o) + " needs a thermal model, --model BASE+Tk (e.g. paper9+T2)");
     return std::nullopt;
   }
-  if (model->base != ModelKind::paper9)
+  if (!model_supports(model->base, ModelCapability::thermal_base))
     throw UsageError("simulate: a thermal rehearsal simulates paper9+Tk or paper9+bias:Tk (got --model " +
                      model->name() + ")");
   if (!v.given("--log"))

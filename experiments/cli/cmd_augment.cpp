@@ -30,7 +30,7 @@ int run(const commands::Values& v) {
     print_json(commands::to_json(r));
     return 0;
   }
-  if (r.model != ModelKind::paper9) std::cout << "model " << model_name(r.model) << ", ";
+  if (!is_default_model(r.model)) std::cout << "model " << model_name(r.model) << ", ";
   std::cout << criterion_name(r.criterion) << ": " << value_text(a.value_before) << " with the " << r.given
             << " given positions, " << value_text(a.value) << " with " << a.added.size() << " added on "
             << r.region.text() << ":\n";

@@ -18,7 +18,7 @@ int run(const commands::Values& v) {
   }
   std::cout << "family " << r.family;
   for (const auto& [k, text] : r.params) std::cout << " " << k << "=" << text;
-  if (r.model != ModelKind::paper9)
+  if (!is_default_model(r.model))
     std::cout << " (model " << model_name(r.model) << ", D = N^" << model_parameters(r.model) << " det K)";
   std::cout << "\npositions N = " << r.positions << "\n";
   for (const auto& row : r.rows) {

@@ -81,7 +81,7 @@ void print_region(const commands::LimitsResult& r) {
 }
 
 void print_sphere(const commands::LimitsResult& r) {
-  const bool paper9 = r.model == ModelKind::paper9;
+  const bool paper9 = model_supports(r.model, ModelCapability::criteria_native);
   for (const auto& l : r.criteria) {
     if (!l.sphere) {
       if (paper9) std::cout << criterion_name(l.criterion) << ": no known limit\n";

@@ -61,7 +61,7 @@ void print_text(const commands::OptimizeResult& r) {
             << s.distinct << (s.distinct == 1 ? " program" : " distinct programs") << " up to symmetry, "
             << std::setprecision(3) << s.seconds << " s)\n";
   if (r.designed_on) std::cout << "designed on " << r.designed_on->text() << "\n";
-  if (r.limit && r.model != ModelKind::paper9)
+  if (r.limit && !is_default_model(r.model))
     std::cout << "model " << model_name(r.model) << ": limit " << std::setprecision(10) << *r.limit << " ("
               << limit_status(*r.limit_statement) << "), efficiency " << std::setprecision(9) << *r.efficiency
               << " (limit / value; D as its " << model_parameters(r.model) << "th root)\n";

@@ -24,7 +24,7 @@ int run(const commands::Values& v) {
   const auto& q = r.request;
   std::cout << "best " << criterion_name(q.criterion) << " = " << std::setprecision(12) << r.search.best << " of "
             << r.search.count << " random programs of " << q.positions << " positions"
-            << (q.model == ModelKind::paper9 ? "" : " (model " + std::string(model_name(q.model)) + ")")
+            << (is_default_model(q.model) ? "" : " (model " + std::string(model_name(q.model)) + ")")
             << (r.region.empty() ? "" : " on " + r.region) << " (" << std::setprecision(3) << r.search.seconds << " s, "
             << r.search.count / r.search.seconds / 1e6 << " M programs/s)\n";
   return 0;

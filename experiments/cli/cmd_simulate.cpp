@@ -138,7 +138,7 @@ int run(const commands::Values& v) {
     std::cout << "Monte-Carlo calibration: program " << q.name << " (N = " << q.program.size() << "), " << q.trials
               << " trials, noise " << q.noise << " |I|, bench error " << q.bench_error_deg << " deg, " << q.samples
               << " sample(s) per position, error size " << q.size << ", seed " << q.seed
-              << (q.model == ModelKind::paper9 ? "" : ", model " + std::string(model_name(q.model))) << "\n";
+              << (is_default_model(q.model) ? "" : ", model " + std::string(model_name(q.model))) << "\n";
   if (json)
     print_json(commands::to_json(r));
   else

@@ -9,7 +9,7 @@ namespace scalcal::cli {
 void print_evaluation(std::ostream& out, const std::string& name, const ModelEvaluation& ev) {
   char buf[160];
   out << "program " << name << ": N = " << ev.positions << ", rank " << ev.rank;
-  if (ev.model != ModelKind::paper9) out << " (model " << ev.model_name << ", " << ev.parameters << " parameters)";
+  if (!is_default_model(ev.model)) out << " (model " << ev.model_name << ", " << ev.parameters << " parameters)";
   out << ", condition of H^T H = ";
   std::snprintf(buf, sizeof buf, "%.6g\n", ev.condition);
   out << buf;

@@ -72,7 +72,7 @@ std::vector<PositionSamples> simulate_measurements(const Meter& meter, const Pro
 MonteCarloResult run_monte_carlo(const MonteCarloOptions& o, const std::function<void(int, int)>& progress,
                                  ModelKind model) {
   MonteCarloResult r;
-  const bool paper9 = model == ModelKind::paper9;
+  const bool paper9 = model_supports(model, ModelCapability::criteria_native);  // the meter is the paper's
   const Meter meter = reference_meter(o.size);
   const ModelMeter model_meter = paper9 ? ModelMeter{meter, Vec3::Zero()} : reference_model_meter(model, o.size);
   const std::vector<int> index = meter_indices(model);

@@ -11,6 +11,12 @@ struct Paper9Model {
   static constexpr std::string_view summary = "h = (x, y, z, x^2, y^2, z^2, xy, yz, zx): the paper's model";
   // Its limits come from the criteria and symbolic/limits.hpp, proven here:
   static constexpr std::string_view proof = "proofs/d_limit.md, proofs/aes_limits.md";
+  // Capabilities (registry.hpp, model_supports): the criteria's exact limits and kernels, the region machinery,
+  // the MPFR polish and the thermal models are written for the paper's rows and its meter (eq. 2).
+  static constexpr bool criteria_native = true;
+  static constexpr bool region_limits = true;
+  static constexpr bool polish_digits = true;
+  static constexpr bool thermal_base = true;
   static constexpr std::array<std::string_view, 9> parameter_names = {
       "bias_x", "bias_y", "bias_z", "scale_x", "scale_y", "scale_z", "nonorth_xy", "nonorth_yz", "nonorth_zx"};
   static constexpr std::array<ParameterGroup, 9> parameter_groups = {

@@ -83,6 +83,46 @@ inline std::string model_names(std::string_view separator = "|") {
   return out;
 }
 
+// The first registered model is the default (the paper's): results name a model only when it is another.
+inline constexpr bool is_default_model(ModelKind m) { return m.index() == 0; }
+
+// What a model supports beyond the CalibrationModel concept: a static constexpr bool of that name on its type,
+// absent meaning no. criteria_native: the criteria's own kernels and exact sphere limits (symbolic/limits.hpp)
+// are its (the paper's rows); region_limits: limits and synthesis on a region; polish_digits: the MPFR polish
+// (optimize --digits); thermal_base: the base of a thermal model BASE+Tk (its meter drifts, numeric/thermal/).
+enum class ModelCapability { criteria_native, region_limits, polish_digits, thermal_base };
+
+template <class M>
+constexpr bool model_supports(ModelCapability c) {
+  switch (c) {
+    case ModelCapability::criteria_native:
+      if constexpr (requires { M::criteria_native; }) return M::criteria_native;
+      return false;
+    case ModelCapability::region_limits:
+      if constexpr (requires { M::region_limits; }) return M::region_limits;
+      return false;
+    case ModelCapability::polish_digits:
+      if constexpr (requires { M::polish_digits; }) return M::polish_digits;
+      return false;
+    case ModelCapability::thermal_base:
+      if constexpr (requires { M::thermal_base; }) return M::thermal_base;
+      return false;
+  }
+  return false;
+}
+
+inline bool model_supports(ModelKind m, ModelCapability c) {
+  return visit_model(m, [c](auto M) { return model_supports<decltype(M)>(c); });
+}
+
+// "paper9" (or "paper9, axis6"): the models with a capability, for messages saying which would do.
+inline std::string models_supporting(ModelCapability c) {
+  std::string out;
+  for (int i = 0; i < kModelCount; ++i)
+    if (model_supports(ModelKind(i), c)) out += (out.empty() ? "" : ", ") + std::string(model_name(ModelKind(i)));
+  return out;
+}
+
 // The model's own statement of its limit for a criterion named `criterion` (models other than the
 // paper's give a table; the paper's limits come from the criteria and symbolic/limits.hpp).
 template <class Model>

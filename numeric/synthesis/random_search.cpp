@@ -217,10 +217,11 @@ RandomSearchResult random_search(int positions, long long count, CriterionKind c
   const long long chunks = (count + kChunk - 1) / kChunk;
   const auto score = visit_criterion(criterion, [](auto C) { return &score_information<decltype(C)>; });
   const bool batched = visit_criterion(criterion, [](auto C) { return kDeterminantOnly<decltype(C)>; });
-  const ModelScore model_score = model == ModelKind::paper9 ? nullptr : visit_model(model, [criterion](auto M) {
-    return visit_criterion(criterion,
-                           [](auto C) -> ModelScore { return &score_model_positions<decltype(M), decltype(C)>; });
-  });
+  const ModelScore model_score =
+      model_supports(model, ModelCapability::criteria_native) ? nullptr : visit_model(model, [criterion](auto M) {
+        return visit_criterion(criterion,
+                               [](auto C) -> ModelScore { return &score_model_positions<decltype(M), decltype(C)>; });
+      });
   static const SearchChunk search_chunk = pick_search_chunk();
   const int nthreads = static_cast<int>(std::min<long long>(thread_count(threads), chunks));
   std::vector<Best> best(static_cast<std::size_t>(nthreads));
@@ -255,9 +256,9 @@ RandomSearchResult random_search(int positions, long long count, CriterionKind c
   out.count = count;
   for (int i = 0; i < positions; ++i)
     out.program.positions.emplace_back(winner->eta[3 * i], winner->eta[3 * i + 1], winner->eta[3 * i + 2]);
-  out.best = winner->index < 0            ? winner->value
-             : model == ModelKind::paper9 ? criterion_value(out.program, criterion)
-                                          : evaluate(model, out.program).value(criterion);
+  out.best = winner->index < 0                                         ? winner->value
+             : model_supports(model, ModelCapability::criteria_native) ? criterion_value(out.program, criterion)
+                                                                       : evaluate(model, out.program).value(criterion);
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;
 }

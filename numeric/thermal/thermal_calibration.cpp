@@ -53,7 +53,7 @@ std::string identifiability(const std::vector<ThermalPose>& poses, const Thermal
 
 ThermalFit fit_thermal(const std::vector<ThermalPose>& poses, const ThermalModel& model, const TemperatureRange& range,
                        double magnitude) {
-  if (model.base != ModelKind::paper9)
+  if (!model_supports(model.base, ModelCapability::thermal_base))
     throw std::invalid_argument("a thermal log is fitted under paper9+Tk or paper9+bias:Tk (got " + model.name() + ")");
   ThermalFit f;
   f.model = model;

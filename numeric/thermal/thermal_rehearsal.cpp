@@ -30,7 +30,7 @@ Eigen::Vector3d aside(const Eigen::Vector3d& a) {
 }  // namespace
 
 ThermalRehearsal rehearse_thermal(const ThermalRehearsalRequest& q) {
-  if (q.model.base != ModelKind::paper9)
+  if (!model_supports(q.model.base, ModelCapability::thermal_base))
     throw std::invalid_argument("a thermal rehearsal simulates paper9+Tk or paper9+bias:Tk (got " + q.model.name() +
                                 ")");
   if (!(q.rate_hz >= 1e-3 && q.rate_hz <= 1e6)) throw std::invalid_argument("the rate must be within 1e-3..1e6 Hz");
