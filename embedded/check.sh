@@ -63,6 +63,7 @@ for prec in float double; do
     objects+=("$out/host_$(basename "$s" .c)_$prec.o")
   done
   "$cc" "${host_flags[@]}" "${def[@]}" "${objects[@]}" "$here/tests/unit_test.c" -lm -o "$out/unit_$prec"
+  "$cc" "${host_flags[@]}" "${def[@]}" "${objects[@]}" "$here/tests/planar_test.c" -lm -o "$out/planar_$prec"
   "$cc" "${host_flags[@]}" "${def[@]}" "${objects[@]}" "$here/tests/log_reader.c" "$here/tests/host_run.c" -lm \
     -o "$out/host_run_$prec"
   "$cc" "${host_flags[@]}" "${def[@]}" -I"$here/tests/qemu" -DLOG_PATH="\"$xsens\"" "${objects[@]}" \
@@ -74,9 +75,11 @@ done
 "$cc" "${host_flags[@]}" -DSCALCAL_LONG_DOUBLE "${sources[@]}" "$here/tests/log_reader.c" "$here/tests/host_run.c" \
   -lm -o "$out/host_run_long"
 
-step "unit tests: simulated truth, fuzzed streams, records, guidance; the export header"
+step "unit tests: simulated truth, fuzzed streams, records, guidance, planar layouts; the export header"
 "$out/unit_float"
 "$out/unit_double"
+"$out/planar_float"
+"$out/planar_double"
 "$out/export_header_float" "$xsens"
 "$out/export_header_double" "$xsens"
 
