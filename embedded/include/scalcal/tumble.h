@@ -3,17 +3,19 @@
  * and the fit's residual |A (x - o)| is not linear in the samples, so no fixed set of sums is exactly
  * sufficient for it. What is kept instead: the samples clustered as they come into at most
  * `capacity` cells of the caller's pose set (count, mean, scatter matrix per cell: a cell is a
- * pose), cells merged two by two by Ward's rule (the pair whose merging adds least scatter) when a
- * sample lies farther from every cell than the cheapest pair. No sample is dropped: every valid
- * sample is in exactly one cell, and the fit (scalcal_fit with options.tumble set) weights a cell
- * by its samples and takes a cell's mean modulus to second order in its spread: the mean over the
- * cell of |A x_i| is |A m| + tr(A^T (I - u u^T) A S) / (2 n |A m|) (u the direction of A m, S the
- * scatter, the first-order term vanishing about the mean), so the fit is the per-sample fit up to
- * terms of fourth order in a cell's angular spread (64 cells: about 1e-4 of the field, see
- * README.md "Tumbling mode"). One sample's noise comes from second differences, as the host's.
- * Not done here (README.md): the host's disturbed stretches (its residuals need every sample after
- * the fit; scalcal_tumble_gate gives a second pass instead) and its Newey-West widening for
- * residuals correlated in time (the device's residual-based errors are the white ones). */
+ * pose), cells merged two by two by Ward's rule (the pair whose merging adds least scatter,
+ * distances in units of each axis's noise) when a sample lies farther from every cell than the
+ * cheapest pair. No sample is dropped: every valid sample is in exactly one cell. The fit
+ * (scalcal_fit with options.tumble set) weights a cell by its samples and takes its samples' mean
+ * modulus from their mean square, which is exact from the sums however far the cell spreads
+ * (|c|^2 + tr(A S A^T) / n), less the radial noise's share (src/cell_modulus.c): the per-sample fit's
+ * residuals, summed over the cell, up to terms of fourth order in the noise. What a cell loses is
+ * how its samples' rows vary inside it (README.md "Tumbling mode": 0.4-0.9 of the library's
+ * standard errors from the CLI's per-sample fit at 64 cells). One sample's noise comes from second
+ * differences, as the host's. Not done here (README.md): the host's disturbed stretches (its
+ * residuals need every sample after the fit; scalcal_tumble_gate gives further passes instead) and
+ * its Newey-West widening for residuals correlated in time (the device's residual-based errors come
+ * from the scatter between cells: batch means over directions). */
 #ifndef SCALCAL_TUMBLE_H
 #define SCALCAL_TUMBLE_H
 
@@ -38,7 +40,8 @@ typedef struct scalcal_tumble {
   uint32_t run; /* valid samples in a row so far (saturated at 2) */
   scalcal_real d2[3];
   uint32_t nd;
-  /* The cheapest pair of cells (Ward's cost n_a n_b / (n_a + n_b) |m_a - m_b|^2) once the set is full. */
+  /* The cheapest pair of cells (Ward's cost n_a n_b / (n_a + n_b) |m_a - m_b|^2, each axis in units
+   * of its noise so far) once the set is full. */
   uint32_t pair_a, pair_b;
   scalcal_real pair_cost;
   /* Counts. */
