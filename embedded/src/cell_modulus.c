@@ -41,7 +41,8 @@ scalcal_real sc_cell_modulus(const sc_problem* q, const sc_meter* m, uint32_t i,
    * sums, |c|^2 + tr(A S A^T) / n, however far the cell spreads over the sphere. The mean of the
    * moduli is its square root less var(|c_i|^2) / (8 mean^(3/2)); on the fitted sphere |c_i|^2
    * varies only with the radial noise, var = 4 mean s^2 (s^2 = u^T A N A^T u, N the per-axis noise
-   * variances in raw units), so the mean modulus is sqrt(mean) - s^2 / (2 sqrt(mean)). What is
+   * variances in raw units), so the mean modulus is sqrt(mean) - s^2 / (2 sqrt(mean)) (times
+   * (n - 1) / n, below). What is
    * left: terms of fourth order in the noise, and the misfit's variation within the cell (an
    * expansion of |c_i| about the cell's mean instead would leave the fourth order of the cell's
    * angular spread: 1.6 standard errors on the rehearsal with 64 cells). */
@@ -55,6 +56,8 @@ scalcal_real sc_cell_modulus(const sc_problem* q, const sc_meter* m, uint32_t i,
     const scalcal_real v = (c[0] * A[r] + c[1] * A[3 + r] + c[2] * A[6 + r]) / norm;
     noise += v * v * q->raw_noise[r] * q->raw_noise[r];
   }
+  /* The cell's own scatter of |c_i|^2 about its mean has (n - 1) / n of the variance: 0 for one sample. */
+  noise *= (scalcal_real)(q->set->poses[i].count - 1) / (scalcal_real)q->set->poses[i].count;
   mean_square = SC_SQRT(mean_square);
   return mean_square - noise / (2 * mean_square);
 }
