@@ -26,7 +26,7 @@ void scalcal_tumble_gate(scalcal_tumble* t, const scalcal_calibration* cal, scal
 
 void scalcal_tumble_noise(const scalcal_tumble* t, scalcal_real noise[3]) {
   int k;
-  for (k = 0; k < 3; ++k) noise[k] = t->nd ? SC_SQRT(t->d2[k] / ((scalcal_real)6 * (scalcal_real)t->nd)) : 0;
+  for (k = 0; k < 3; ++k) noise[k] = t->nd ? SC_SQRT(t->d2[k] / 6) : 0;
 }
 
 static scalcal_real distance2(const scalcal_real w[3], const scalcal_real a[3], const scalcal_real b[3]) {
@@ -40,7 +40,7 @@ static scalcal_real distance2(const scalcal_real w[3], const scalcal_real a[3], 
  * deviations by 0.4-0.8 % at every number of cells (tests/tumble_test.c, test_anisotropic). */
 static void metric(const scalcal_tumble* t, scalcal_real w[3]) {
   int k;
-  for (k = 0; k < 3; ++k) w[k] = t->nd && t->d2[k] > 0 ? (scalcal_real)t->nd / t->d2[k] : 1;
+  for (k = 0; k < 3; ++k) w[k] = t->nd && t->d2[k] > 0 ? 1 / t->d2[k] : 1;
 }
 
 /* Ward's cost of merging cells a and b: the scatter their union adds. */
@@ -125,12 +125,12 @@ int scalcal_tumble_push(scalcal_tumble* t, scalcal_pose_set* cells, const scalca
   }
   for (k = 0; k < 3; ++k) r[k] = sample[k] - cells->origin[k];
   /* The noise from every valid run, gated or not: a disturbance moves slowly, the noise does not. */
-  if (t->run >= 2) {
+  if (t->run >= 2) { /* a running mean, not a sum: a float sum of hours of samples stops growing */
+    t->nd++;
     for (k = 0; k < 3; ++k) {
       const scalcal_real d = r[k] - 2 * t->previous[1][k] + t->previous[0][k];
-      t->d2[k] += d * d;
+      t->d2[k] += (d * d - t->d2[k]) / (scalcal_real)t->nd;
     }
-    t->nd++;
   }
   memcpy(t->previous[0], t->previous[1], sizeof t->previous[0]);
   memcpy(t->previous[1], r, sizeof t->previous[1]);

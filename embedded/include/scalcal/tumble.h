@@ -34,8 +34,8 @@ typedef struct scalcal_tumble {
   /* The gate of a second pass (scalcal_tumble_gate): 0 when off. */
   const scalcal_calibration* gate;
   scalcal_real gate_limit; /* |corrected modulus / magnitude - 1| beyond this is disturbed */
-  /* Second differences x_k - 2 x_(k-1) + x_(k-2) over runs of valid samples: per-axis sum of squares
-   * (about the running origin: the samples relative to the set's first one) and their number. */
+  /* Second differences x_k - 2 x_(k-1) + x_(k-2) over runs of valid samples: per-axis mean square
+   * (the samples relative to the set's first one) and their number. */
   scalcal_real previous[2][3];
   uint32_t run; /* valid samples in a row so far (saturated at 2) */
   scalcal_real d2[3];
