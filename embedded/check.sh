@@ -63,6 +63,8 @@ for prec in float double; do
     objects+=("$out/host_$(basename "$s" .c)_$prec.o")
   done
   "$cc" "${host_flags[@]}" "${def[@]}" "${objects[@]}" "$here/tests/unit_test.c" -lm -o "$out/unit_$prec"
+  "$cc" "${host_flags[@]}" "${def[@]}" "${objects[@]}" "$here/tests/planar_test.c" -lm -o "$out/planar_$prec"
+  "$cc" "${host_flags[@]}" "${def[@]}" "${objects[@]}" "$here/tests/tumble_test.c" -lm -o "$out/tumble_$prec"
   "$cc" "${host_flags[@]}" "${def[@]}" "${objects[@]}" "$here/tests/log_reader.c" "$here/tests/host_run.c" -lm \
     -o "$out/host_run_$prec"
   "$cc" "${host_flags[@]}" "${def[@]}" -I"$here/tests/qemu" -DLOG_PATH="\"$xsens\"" "${objects[@]}" \
@@ -74,9 +76,12 @@ done
 "$cc" "${host_flags[@]}" -DSCALCAL_LONG_DOUBLE "${sources[@]}" "$here/tests/log_reader.c" "$here/tests/host_run.c" \
   -lm -o "$out/host_run_long"
 
-step "unit tests: simulated truth, fuzzed streams, records, guidance; the export header"
-"$out/unit_float"
-"$out/unit_double"
+step "unit tests: simulated truth, fuzzed streams, records, guidance, planar layouts, tumbling; the export header"
+for prec in float double; do
+  "$out/unit_$prec"
+  "$out/planar_$prec"
+  "$out/tumble_$prec"
+done
 "$out/export_header_float" "$xsens"
 "$out/export_header_double" "$xsens"
 
@@ -94,7 +99,7 @@ arm_flags=(-mcpu=cortex-m4 -mthumb -mfpu=fpv4-sp-d16 -mfloat-abi=hard -Os -std=c
   -I"$here/tests/qemu")
 link=(-T "$here/tests/qemu/mps2_an386.ld" -nostartfiles -Wl,--gc-sections -lm)
 step "cross-compilation for the Cortex-M4F (float, double)"
-declare -A flash ram stack
+declare -A flash ram stack mag_flash mag_ram mag_stack
 for prec in float double; do
   def=()
   [ "$prec" = double ] && def=(-DSCALCAL_DOUBLE)
@@ -114,6 +119,13 @@ for prec in float double; do
     "$here/examples/imu_calibration.c" "$here/examples/board_qemu.c" "${target[@]}" "${link[@]}" -o "$out/example_$prec.elf"
   arm-none-eabi-gcc "${arm_flags[@]}" "${def[@]}" -DLOG_PATH="\"$xsens\"" "${objects[@]}" \
     "$here/tests/qemu/qemu_main.c" "${target[@]}" "${link[@]}" -o "$out/stream_$prec.elf"
+  # The tumbling magnetometer's firmware (examples/mag_calibration.c): its size, and its run on the
+  # QMC5883L log (t ix iy iz, 50 Hz).
+  arm-none-eabi-gcc "${arm_flags[@]}" "${def[@]}" "${objects[@]}" "$here/examples/mag_calibration.c" \
+    "$here/examples/board_stub.c" "${target[@]}" "${link[@]}" -o "$out/size_mag_$prec.elf"
+  arm-none-eabi-gcc "${arm_flags[@]}" "${def[@]}" -DLOG_PATH="\"$out/qmc5883l_t.txt\"" "${objects[@]}" \
+    "$here/examples/mag_calibration.c" "$here/examples/board_qemu.c" "${target[@]}" "${link[@]}" \
+    -o "$out/mag_example_$prec.elf"
   echo "$prec: the library's objects (arm-none-eabi-size -t):"
   arm-none-eabi-size -t "${objects[@]}" | tail -1
   echo "$prec: the worked example with the library, smallest board:"
@@ -121,7 +133,14 @@ for prec in float double; do
   read -r text data bss _ < <(arm-none-eabi-size "$out/size_$prec.elf" | tail -1)
   flash[$prec]=$((text + data))
   ram[$prec]=$((data + bss))
+  echo "$prec: the tumbling magnetometer example with the library, smallest board:"
+  arm-none-eabi-size "$out/size_mag_$prec.elf"
+  read -r text data bss _ < <(arm-none-eabi-size "$out/size_mag_$prec.elf" | tail -1)
+  mag_flash[$prec]=$((text + data))
+  mag_ram[$prec]=$((data + bss))
 done
+qmc="$root/../shared/data/qmc5883l_mag.csv"
+[ -f "$qmc" ] && awk -F, 'NR > 1 { printf "%.2f %s %s %s\n", (NR - 2) / 50, $1, $2, $3 }' "$qmc" > "$out/qmc5883l_t.txt"
 
 qemu() { timeout 300 qemu-system-arm -M mps2-an386 -nographic -semihosting-config enable=on,target=native -kernel "$1" 2>&1; }
 step "QEMU mps2-an386: the streaming path on $(basename "$xsens"), against the host build"
@@ -138,6 +157,15 @@ for prec in float double; do
   stack[$prec]=$(sed -n 's/^stack_peak_bytes //p' "$out/example_qemu_$prec.txt")
   echo "$prec: worked example calibrated on QEMU; stack peak ${stack[$prec]} bytes;" \
     "flash ${flash[$prec]} bytes, ram $((ram[$prec] + stack[$prec])) bytes (static ${ram[$prec]} + stack ${stack[$prec]})"
+  if [ -f "$out/qmc5883l_t.txt" ]; then
+    qemu "$out/mag_example_$prec.elf" > "$out/mag_example_qemu_$prec.txt"
+    grep -q '^calibrated' "$out/mag_example_qemu_$prec.txt" || { cat "$out/mag_example_qemu_$prec.txt"; exit 1; }
+    mag_stack[$prec]=$(sed -n 's/^stack_peak_bytes //p' "$out/mag_example_qemu_$prec.txt")
+    echo "$prec: tumbling magnetometer example calibrated the QMC5883L log on QEMU ($(grep -c . "$out/mag_example_qemu_$prec.txt") lines:" \
+      "$(grep -v stack_peak "$out/mag_example_qemu_$prec.txt" | tr '\n' ';' | cut -c1-300));" \
+      "flash ${mag_flash[$prec]} bytes, ram $((mag_ram[$prec] + mag_stack[$prec])) bytes" \
+      "(static ${mag_ram[$prec]} + stack ${mag_stack[$prec]})"
+  fi
 done
 step "embedded check passed"
 echo "flash ${flash[float]} bytes, ram $((ram[float] + stack[float])) bytes"

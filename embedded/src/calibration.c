@@ -61,7 +61,7 @@ const char* scalcal_status_text(scalcal_status status) {
       return "the record's magic, version, size or checksum is wrong";
     case SCALCAL_E_MOVING:
       return "the poses are not still: the stream moves most of the time; a magnetometer turned continuously "
-             "needs the tumbling fit (scalcal calibrate), not in this library";
+             "needs the tumbling mode (scalcal/tumble.h)";
   }
   return "unknown status";
 }

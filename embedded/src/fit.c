@@ -4,6 +4,7 @@
 #include <string.h>
 
 #include "fit_internal.h"
+#include "scalcal/tumble.h"
 
 void scalcal_fit_options_default(scalcal_fit_options* o) {
   memset(o, 0, sizeof *o);
@@ -144,13 +145,21 @@ scalcal_status scalcal_fit(const scalcal_pose_set* set, const scalcal_fit_option
   if (options->max_iterations < 1) return SCALCAL_E_ARGUMENT;
   if (!(options->noise >= 0 && sc_finite(options->noise))) return SCALCAL_E_ARGUMENT;
   if (!poses_finite(set)) return SCALCAL_E_NOT_FINITE;
-  /* The host's rule for a log mostly in motion (README.md, "A stream that never stops"). */
-  if ((uint64_t)set->windows_moving * 4 > (uint64_t)set->windows_judged * 3) return SCALCAL_E_MOVING;
+  /* The host's rule for a log mostly in motion (README.md, "A stream that never stops"); a tumbling
+   * set is motion by design, fitted on every sample. */
+  if (!options->tumble && (uint64_t)set->windows_moving * 4 > (uint64_t)set->windows_judged * 3)
+    return SCALCAL_E_MOVING;
   memset(&q, 0, sizeof q);
   q.set = set;
   q.magnitude = magnitude_auto ? 1 : options->magnitude;
   q.weight_by_samples = options->weight_by_samples;
   q.noise = options->noise;
+  if (options->tumble) {
+    q.tumbling = 1;
+    q.weight_by_samples = 1; /* every sample counts once, as the host's per-sample fit */
+    q.noise = 0;
+    scalcal_tumble_noise(options->tumble, q.raw_noise);
+  }
   status = choose(&q, options->model, magnitude_auto, r);
   if (status != SCALCAL_OK) return status;
   q.p = (int)r->model;
@@ -175,6 +184,11 @@ scalcal_status scalcal_fit(const scalcal_pose_set* set, const scalcal_fit_option
   }
   status = compose(&q, X, &out);
   if (status != SCALCAL_OK) return status;
+  if (q.tumbling) {
+    sc_meter m;
+    sc_meter_of(&q, X, &m);
+    q.noise = sc_tumbling_noise(&q, &m);
+  }
   sc_standard_errors(&q, X, &out, r);
   if (!calibration_finite(&out)) return SCALCAL_E_NOT_FINITE;
   if (!matrix_usable(&out)) return SCALCAL_E_DEGENERATE;

@@ -12,25 +12,6 @@ static scalcal_real larger(scalcal_real p, scalcal_real a) {
   return p > a ? p : a;
 }
 
-/* The scatter of the compensated samples' moduli within pose i, to first order: the modulus moves
- * with u . A d for a deviation d of a sample from its pose's mean (A = G^-1 T, u the direction), so
- * the sum of squares is w^T S w with w = A^T u and S the pose's scatter matrix. */
-static scalcal_real modulus_scatter(const sc_problem* q, const sc_meter* m, uint32_t i) {
-  static const int pair[6][2] = {{0, 0}, {1, 1}, {2, 2}, {0, 1}, {1, 2}, {2, 0}};
-  const scalcal_real* S = q->set->poses[i].scatter;
-  scalcal_real c[3], u[3], A[9], w[3], s = 0;
-  const scalcal_real norm = sc_compensate(q, m, i, c);
-  int k;
-  for (k = 0; k < 3; ++k) u[k] = c[k] / norm;
-  if (q->started)
-    sc_mul3(m->Ginv, q->start.matrix, A);
-  else
-    memcpy(A, m->Ginv, sizeof A);
-  for (k = 0; k < 3; ++k) w[k] = u[0] * A[k] + u[1] * A[3 + k] + u[2] * A[6 + k];
-  for (k = 0; k < 6; ++k) s += (k < 3 ? 1 : 2) * S[k] * w[pair[k][0]] * w[pair[k][1]];
-  return s;
-}
-
 /* sqrt of the diagonal of a covariance of the estimator's parameters, in the reported units: the
  * bias through the start to raw units, the scale deviations relative to their geometric mean when
  * the start set the nominal gain. */
@@ -103,15 +84,29 @@ static void noise_and_residuals(const sc_problem* q, const sc_meter* m, scalcal_
   uint32_t i, samples = 0;
   *weighted = 0;
   for (i = 0; i < n; ++i) {
-    const scalcal_real J = sc_compensate(q, m, i, c) / M - 1;
+    const scalcal_real norm = sc_compensate(q, m, i, c);
+    const scalcal_real J = sc_cell_modulus(q, m, i, c, norm) / M - 1;
     ss += J * J;
     *weighted += sc_problem_weight(q, i) * J * J;
     samples += q->set->poses[i].count;
-    scatter += modulus_scatter(q, m, i);
+    scatter += sc_radial_scatter(q, m, i, c, norm);
   }
   cal->residual_rms = SC_SQRT(ss / (scalcal_real)n) * M;
   report->noise_source = SCALCAL_NOISE_NONE;
   cal->noise = 0;
+  if (q->tumbling) {
+    /* The noise is the second differences'. A sample's residual is its cell's mean residual plus its
+     * deviation from it, which the cell's radial scatter does not give (the arc's sagitta enters it
+     * at the same order as the noise): the per-sample RMS is taken as the cells' weighted residuals
+     * plus the noise within them. The residual-based errors below use the cells' residuals only
+     * (between cells, weighted by their samples, dof cells - P): batch means over directions. */
+    cal->noise = q->noise;
+    cal->residual_rms = SC_SQRT((*weighted + (scalcal_real)(samples - n) * (q->noise / M) * (q->noise / M)) /
+                                (scalcal_real)samples) * M;
+    report->noise_source = q->noise > 0 ? SCALCAL_NOISE_DIFFERENCES : SCALCAL_NOISE_NONE;
+    report->chi_square = (scalcal_real)NAN;
+    return;
+  }
   if (q->noise > 0) {
     cal->noise = q->noise;
     report->noise_source = SCALCAL_NOISE_GIVEN;
@@ -152,6 +147,7 @@ static int error_model(const sc_problem* q, const sc_meter* m, const scalcal_rea
   const scalcal_real M = q->magnitude;
   sc_between b;
   if (report->noise_source != SCALCAL_NOISE_SCATTER && report->noise_source != SCALCAL_NOISE_GIVEN) return 0;
+  if (q->tumbling) return 0; /* cells are not poses: no scatter between them to model */
   if (report->dof < SC_ERROR_MODEL_DOF) return 0;
   if (!sc_between_poses(q, m, (cal->noise / M) * (cal->noise / M), K, A, B, &b)) return 0;
   report->error_model = 1;

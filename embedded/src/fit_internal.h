@@ -68,6 +68,10 @@ typedef struct {
   int started;
   sc_correction start; /* its offset relative to the set's origin */
   scalcal_real noise;  /* one sample's noise given by the caller; 0: from the scatter within poses */
+  /* Tumbling mode (scalcal/tumble.h): the poses are cells of moving samples; their per-axis noise in
+   * raw units (second differences). */
+  int tumbling;
+  scalcal_real raw_noise[3];
 } sc_problem;
 
 void sc_problem_mean(const sc_problem* q, uint32_t i, scalcal_real y[3]);
@@ -84,6 +88,19 @@ typedef struct {
 void sc_meter_of(const sc_problem* q, const scalcal_real* X, sc_meter* m);
 /* c = G^-1 (y - bias) of pose i; returns |c|. */
 scalcal_real sc_compensate(const sc_problem* q, const sc_meter* m, uint32_t i, scalcal_real c[3]);
+
+/* The modulus the estimator fits for pose i, given c and |c| of sc_compensate: |c| for a still pose;
+ * for a tumbling cell the mean of its samples' moduli, sqrt(q) - s^2 / (2 sqrt(q)) with q = |c|^2 +
+ * tr(A S A^T) / n their mean square (A = G^-1 T the map of a raw deviation into c, S the cell's
+ * scatter) and s^2 one sample's radial noise variance (cell_modulus.c derives it). */
+scalcal_real sc_cell_modulus(const sc_problem* q, const sc_meter* m, uint32_t i, const scalcal_real c[3],
+                             scalcal_real norm);
+/* sum over pose i's samples of (u . A d)^2: the first-order scatter of their moduli (S as above). */
+scalcal_real sc_radial_scatter(const sc_problem* q, const sc_meter* m, uint32_t i, const scalcal_real c[3],
+                               scalcal_real norm);
+/* Tumbling: one sample's noise in c's units at meter m, sqrt(tr(A diag(raw_noise^2) A^T) / 3), the
+ * host's noise_relative times |I| (the radial part, averaged over directions). */
+scalcal_real sc_tumbling_noise(const sc_problem* q, const sc_meter* m);
 
 /* The closed-form start through the pose means (relative to the origin), |physical| = magnitude:
  * 1 on success. */

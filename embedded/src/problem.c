@@ -81,12 +81,18 @@ static scalcal_real condition_of(const scalcal_real* info, int p, uint32_t n) {
   return values[p - 1] / values[0];
 }
 
+/* The columns judged: the model's P, and for bias3 with a gain the start estimated, a constant
+ * one (its derivative: a common gain moves every residual alike). axis6 and paper9 carry the common
+ * gain already (x^2 + y^2 + z^2 = 1 is in their span). */
+static int judged_columns(int p, int started) { return p == 3 && started ? 4 : p; }
+
 static void add_direction(scalcal_real* info, int p, scalcal_real e[3]) {
   scalcal_real h[SC_P];
   const scalcal_real norm = sc_norm3(e);
   int r, c;
   e[0] /= norm, e[1] /= norm, e[2] /= norm;
   sc_row(e, h);
+  if (p == 4) h[3] = 1;
   for (r = 0; r < p; ++r)
     for (c = 0; c < p; ++c) info[r * p + c] += h[r] * h[c];
 }
@@ -94,6 +100,7 @@ static void add_direction(scalcal_real* info, int p, scalcal_real e[3]) {
 scalcal_real sc_layout_condition(const sc_problem* q, int p, const sc_correction* through) {
   scalcal_real info[SC_P * SC_P];
   uint32_t i;
+  p = judged_columns(p, through || q->started);
   memset(info, 0, sizeof info);
   for (i = 0; i < q->set->count; ++i) {
     scalcal_real m[3], e[3];
@@ -111,13 +118,14 @@ scalcal_real sc_layout_condition(const sc_problem* q, int p, const sc_correction
 
 scalcal_real sc_fitted_condition(const sc_problem* q, const scalcal_real* X) {
   scalcal_real info[SC_P * SC_P], c[3];
+  const int p = judged_columns(q->p, q->started);
   sc_meter m;
   uint32_t i;
   memset(info, 0, sizeof info);
   sc_meter_of(q, X, &m);
   for (i = 0; i < q->set->count; ++i) {
     sc_compensate(q, &m, i, c);
-    add_direction(info, q->p, c);
+    add_direction(info, p, c);
   }
-  return condition_of(info, q->p, q->set->count);
+  return condition_of(info, p, q->set->count);
 }

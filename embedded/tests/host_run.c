@@ -5,7 +5,10 @@
  * that are not its, as sample indices of the log from 0; `exclude LINE` for the samples the CLI
  * left out as outliers), or from the library's streaming detector (--detect). --noise gives the fit
  * one sample's noise instead of its own first-order estimate (to compare the error model with the
- * CLI's on the same noise). */
+ * CLI's on the same noise). --tumble feeds every sample to the tumbling accumulator (cells of the
+ * set's capacity, scalcal/tumble.h) and fits them in tumbling mode; --gate S then feeds the log again
+ * (--passes N in all, default 2) with samples beyond S times the last fit's noise (second differences:
+ * a disturbance does not inflate it as it does the residuals) left out, and fits again. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -15,6 +18,7 @@
 #include "scalcal/detector.h"
 #include "scalcal/fit.h"
 #include "scalcal/guidance.h"
+#include "scalcal/tumble.h"
 
 #define MAX_INTERVALS 4096
 
@@ -112,6 +116,23 @@ static int feed_detector(const test_log* log, double rate, scalcal_pose_set* set
   return 0;
 }
 
+/* Every sample to the tumbling accumulator (gated by cal when not null). */
+static int feed_tumble(const test_log* log, scalcal_tumble* t, scalcal_pose_set* set, const scalcal_calibration* cal,
+                       scalcal_real limit) {
+  int row;
+  if (scalcal_tumble_init(t, set, 0, 0) != SCALCAL_OK) return 1;
+  scalcal_tumble_gate(t, cal, limit);
+  for (row = 0; row < log->rows; ++row) {
+    scalcal_real x[3];
+    x[0] = (scalcal_real)log->x[row][0], x[1] = (scalcal_real)log->x[row][1], x[2] = (scalcal_real)log->x[row][2];
+    scalcal_tumble_push(t, set, x);
+  }
+  printf("tumble_samples %u\ntumble_invalid %u\ntumble_disturbed %u\ntumble_merges %u\ntumble_cells %u\n",
+         (unsigned)t->samples, (unsigned)t->invalid, (unsigned)t->disturbed, (unsigned)t->merges,
+         (unsigned)set->count);
+  return 0;
+}
+
 static void print_result(const scalcal_pose_set* set, const scalcal_calibration* c, const scalcal_fit_report* r) {
   scalcal_program_quality pq;
   uint32_t i, best;
@@ -167,7 +188,10 @@ int main(int argc, char** argv) {
   test_log log;
   const char *path = 0, *intervals = 0;
   double rate = 0;
-  int k, detect = 0, capacity = SCALCAL_MAX_POSES;
+  int k, detect = 0, tumble = 0, capacity = SCALCAL_MAX_POSES;
+  double gate = 0;
+  int passes = 2;
+  static scalcal_tumble tumbler;
   scalcal_fit_options_default(&o);
   for (k = 1; k < argc; ++k) {
     if (!strcmp(argv[k], "--rate") && k + 1 < argc)
@@ -192,12 +216,18 @@ int main(int argc, char** argv) {
       o.noise = (scalcal_real)atof(argv[++k]);
     else if (!strcmp(argv[k], "--detect"))
       detect = 1;
+    else if (!strcmp(argv[k], "--tumble"))
+      tumble = 1;
+    else if (!strcmp(argv[k], "--gate") && k + 1 < argc)
+      gate = atof(argv[++k]);
+    else if (!strcmp(argv[k], "--passes") && k + 1 < argc)
+      passes = atoi(argv[++k]);
     else if (!strcmp(argv[k], "--weights-samples"))
       o.weight_by_samples = 1;
     else
       path = argv[k];
   }
-  if (!path || (!intervals && !detect)) {
+  if (!path || (!intervals && !detect && !tumble)) {
     fprintf(stderr,
             "usage: host_run LOG [--rate HZ] --magnitude M|auto [--model NAME] (--intervals FILE | --detect)\n");
     return 2;
@@ -209,7 +239,10 @@ int main(int argc, char** argv) {
     rate = 1 / ((log.t[log.rows - 1] - log.t[0]) / (log.rows - 1));
   }
   scalcal_pose_set_init(&set, storage, (uint32_t)capacity);
-  if (intervals) {
+  if (tumble) {
+    if (feed_tumble(&log, &tumbler, &set, 0, 0)) return 2;
+    o.tumble = &tumbler;
+  } else if (intervals) {
     if (read_intervals(intervals, &given) || feed_given(&log, &given, &set)) return 2;
   } else if (feed_detector(&log, rate, &set)) {
     return 2;
@@ -217,6 +250,15 @@ int main(int argc, char** argv) {
   printf("precision %s\n", sizeof(scalcal_real) == 8 ? "double" : "float");
   printf("poses %u\n", (unsigned)set.count);
   s = scalcal_fit(&set, &o, &cal, &report);
+  for (k = 2; tumble && gate > 0 && k <= passes && s == SCALCAL_OK; ++k) { /* a pass gated by the last */
+    static scalcal_calibration previous;
+    previous = cal;
+    printf("pass_offset %d %.17g %.17g %.17g\n", k - 1, (double)cal.offset[0], (double)cal.offset[1],
+           (double)cal.offset[2]);
+    if (feed_tumble(&log, &tumbler, &set, &previous, (scalcal_real)gate * previous.noise / previous.magnitude))
+      return 2;
+    s = scalcal_fit(&set, &o, &cal, &report);
+  }
   printf("status %d %s\n", (int)s, scalcal_status_text(s));
   printf("model %d\n", (int)report.model);
   printf("started %d\n", report.started);

@@ -17,6 +17,8 @@
 extern "C" {
 #endif
 
+struct scalcal_tumble; /* scalcal/tumble.h */
+
 typedef struct {
   scalcal_model model;    /* SCALCAL_MODEL_AUTO (default): the richest of paper9, axis6, bias3 carried */
   scalcal_real magnitude; /* |I| in physical units (9.80665 for g); > 0 unless magnitude_auto */
@@ -27,6 +29,11 @@ typedef struct {
    * > 0: that noise known beforehand (a long still period's, a datasheet's), in the units of
    * scalcal_calibration.noise, used in its place. */
   scalcal_real noise;
+  /* Tumbling mode (scalcal/tumble.h): null (default) for still poses; else the accumulator that filled
+   * the set with cells. Each cell is weighted by its samples, its mean modulus taken to second order
+   * in its spread, the noise from the accumulator's second differences (`noise` ignored), no
+   * between-pose error model, no SCALCAL_E_MOVING; dof and residual_rms count samples. */
+  const struct scalcal_tumble* tumble;
 } scalcal_fit_options;
 
 /* How the iteration ended. */
