@@ -52,18 +52,19 @@ void choose(const CalibrateRequest& q, const std::vector<PositionSamples>& data,
                      "no ellipsoid passes near the " + std::to_string(data.size()) +
                          " positions' means: they are too few or too flat to judge the layout");
   const Program layout{*directions};
-  const auto automatic = choose_model(layout);
+  const bool gain = gain_estimated(data, magnitude, q.magnitude == "auto", q.modulus);
+  const auto automatic = choose_model(layout, gain);
   if (!q.model) {
     if (!automatic)
       throw InputError(q.file, 0,
                        std::to_string(data.size()) + " positions carry none of the models paper9, axis6, bias3 (" +
-                           judge_layout(*parse_model("bias3"), layout).why + ")");
+                           judge_layout(*parse_model("bias3"), layout, gain).why + ")");
     out.model = automatic->model;
     out.model_reason = automatic->reason;
     out.not_identifiable = automatic->not_identifiable;
     return;
   }
-  const LayoutVerdict v = judge_layout(*q.model, layout);
+  const LayoutVerdict v = judge_layout(*q.model, layout, gain);
   if (!v.carried) {
     std::string hint = automatic ? "; --model " + std::string(model_name(automatic->model)) + " (or auto) would work"
                                  : "; no registered model would work with these positions";
@@ -262,6 +263,11 @@ void fit_model(const CalibrateRequest& q, CalibrationInput& in, AnyUnitsOptions 
     out.fit = calibrate_any_units(q.file, in.data, ao);
 }
 
+// Whether the fit estimated the field's gain with the offsets (judge_layout's gain_estimated).
+bool gain_fitted(const CalibrateRequest& q, const CalibrateResult& out) {
+  return q.magnitude == "auto" || out.fit.started;
+}
+
 // --model auto judged the layout at its starting ellipsoid's directions; after the fit it is judged
 // again at the fitted ones. A model that is not identified there, or that did not converge where a
 // simpler model's fitted directions show the positions cannot carry it, gives way to the richest
@@ -273,7 +279,7 @@ void fit_with_fallback(const CalibrateRequest& q, CalibrationInput& in, const An
   fit_model(q, in, ao, out);
   const auto trouble = [&]() -> std::string {
     if (!out.fit.estimate.summary.converged()) return "did not converge (" + out.fit.estimate.summary.message + ")";
-    const LayoutVerdict v = judge_layout(out.model, Program{out.fit.directions});
+    const LayoutVerdict v = judge_layout(out.model, Program{out.fit.directions}, gain_fitted(q, out));
     return v.carried ? "" : "is not identified at the fitted directions (" + v.why + ")";
   };
   const std::string why = trouble();
@@ -297,7 +303,8 @@ void fit_with_fallback(const CalibrateRequest& q, CalibrationInput& in, const An
       continue;
     }
     if (!trouble().empty()) continue;
-    if (judge_layout(first, Program{out.fit.directions}).carried) break;  // the data, not the layout
+    if (judge_layout(first, Program{out.fit.directions}, gain_fitted(q, out)).carried)
+      break;  // the data, not the layout
     const std::string note = "model " + std::string(model_name(first)) + " (auto) " + why + "; the simpler " + name +
                              " converges and the fitted directions cannot carry " + std::string(model_name(first));
     out.warnings.push_back({q.file, note + ": " + name + " is the one reported"});

@@ -181,7 +181,8 @@ std::optional<double> detection_score(const RawLog& log, const IntervalDetection
     const AnyUnitsCalibration fit = calibrate_any_units(o.file, interval_positions(log, d), ao);
     if (!fit.estimate.summary.converged() || fit.noise_covariance.size() == 0) return std::nullopt;
     // Under --model auto a candidate scores under the model auto would take for it.
-    if (!o.model && !judge_layout(model, Program{fit.directions}).carried) return std::nullopt;
+    if (!o.model && !judge_layout(model, Program{fit.directions}, ao.magnitude_auto || fit.started).carried)
+      return std::nullopt;
     const Eigen::LDLT<Eigen::MatrixXd> c(fit.noise_covariance);
     if (c.info() != Eigen::Success || !(c.vectorD().minCoeff() > 0)) return std::nullopt;
     return std::exp(c.vectorD().array().log().sum() / static_cast<double>(fit.noise_covariance.rows()));

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include <Eigen/Eigenvalues>
+#include <Eigen/QR>
 
 #include "numeric/calibration/full_correction.hpp"
 #include "numeric/criteria/identifiability.hpp"
@@ -14,7 +15,42 @@
 
 namespace scalcal {
 
-LayoutVerdict judge_layout(ModelKind model, const Program& directions) {
+namespace {
+
+// With the gain fitted too: the rows and a constant column, unless the rows span the constant already (every
+// model with the squares x^2 + y^2 + z^2 = 1); "" when the layout carries it, else why not.
+std::string with_gain(ModelKind model, const Program& directions, LayoutVerdict& v) {
+  const int P = model_parameters(model), N = directions.size();
+  Eigen::MatrixXd H(N, P + 1);
+  for (int i = 0; i < N; ++i) {
+    const Vec3& eta = directions.positions[static_cast<std::size_t>(i)];
+    H.row(i).head(P) = visit_model(model, [&eta](auto M) { return Eigen::VectorXd(decltype(M)::row(eta)); });
+    H(i, P) = 1;
+  }
+  const Eigen::VectorXd ones = Eigen::VectorXd::Ones(N);
+  const Eigen::VectorXd spanned = H.leftCols(P).colPivHouseholderQr().solve(ones);
+  if ((H.leftCols(P) * spanned - ones).norm() <= 1e-9 * std::sqrt(static_cast<double>(N))) return "";
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(H.transpose() * H / N);
+  const Eigen::VectorXd& l = eig.eigenvalues();
+  const double condition = l(0) > 0 ? l(P) / l(0) : INFINITY;
+  if (condition <= kCarryCondition) return "";
+  v.condition = condition;
+  std::ostringstream s;
+  s << std::setprecision(3) << "with the gain fitted too (the data are not in the field's units), condition "
+    << condition << " > " << kCarryCondition << ": the offset along the positions' common normal trades against "
+    << "the gain (positions on one circle; positions off it, or the field's modulus in the data's own units, would "
+       "fix it)";
+  const ModelEvaluation ev = evaluate(model, directions);
+  for (int r = 0; r < P; ++r)
+    if (std::abs(eig.eigenvectors()(r, 0)) > 0.3)
+      v.poorly_determined.emplace_back(ev.parameter_names[static_cast<std::size_t>(r)]);
+  v.poorly_determined.emplace_back("gain");
+  return s.str();
+}
+
+}  // namespace
+
+LayoutVerdict judge_layout(ModelKind model, const Program& directions, bool gain_estimated) {
   LayoutVerdict v;
   v.model = model;
   const ModelEvaluation ev = evaluate(model, directions);
@@ -40,17 +76,21 @@ LayoutVerdict judge_layout(ModelKind model, const Program& directions) {
     v.why = s.str();
     return v;
   }
+  if (gain_estimated) {
+    v.why = with_gain(model, directions, v);
+    if (!v.why.empty()) return v;
+  }
   v.carried = true;
   return v;
 }
 
-std::optional<ModelChoice> choose_model(const Program& directions) {
+std::optional<ModelChoice> choose_model(const Program& directions, bool gain_estimated) {
   const ModelKind candidates[] = {*parse_model("paper9"), *parse_model("axis6"), *parse_model("bias3")};
-  const LayoutVerdict richest = judge_layout(candidates[0], directions);
+  const LayoutVerdict richest = judge_layout(candidates[0], directions, gain_estimated);
   std::ostringstream s;
   s << std::setprecision(3);
   for (const ModelKind m : candidates) {
-    const LayoutVerdict v = m == candidates[0] ? richest : judge_layout(m, directions);
+    const LayoutVerdict v = m == candidates[0] ? richest : judge_layout(m, directions, gain_estimated);
     if (!v.carried) continue;
     ModelChoice c;
     c.model = m;
@@ -70,6 +110,15 @@ std::optional<ModelChoice> choose_model(const Program& directions) {
     return c;
   }
   return std::nullopt;
+}
+
+bool gain_estimated(const std::vector<PositionSamples>& data, double magnitude, bool magnitude_auto, Modulus modulus) {
+  if (modulus == Modulus::projection || data.empty()) return false;
+  if (magnitude_auto) return true;
+  std::vector<double> ratio;
+  for (const auto& p : data) ratio.push_back(p.mean().norm() / magnitude);
+  std::nth_element(ratio.begin(), ratio.begin() + static_cast<std::ptrdiff_t>(ratio.size() / 2), ratio.end());
+  return std::abs(ratio[ratio.size() / 2] - 1) > 0.1;
 }
 
 std::optional<std::vector<Vec3>> layout_directions(const std::vector<PositionSamples>& data, double magnitude,

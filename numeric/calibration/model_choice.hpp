@@ -29,7 +29,11 @@ struct LayoutVerdict {
   std::vector<std::string> poorly_determined;  // the parameters of the null space or the worst combination
 };
 
-LayoutVerdict judge_layout(ModelKind model, const Program& directions);
+// gain_estimated: the field's common gain is fitted too (magnitude auto, or data not in the field's units,
+// whose start estimates it): a model whose rows do not span the constant (bias3) is then judged with that
+// column added, since a circle of positions trades the offset along its normal against the gain (a planar
+// layout of bias3 in counts otherwise passes with offsets of 1e5 counts; the C library found it).
+LayoutVerdict judge_layout(ModelKind model, const Program& directions, bool gain_estimated = false);
 
 struct ModelChoice {
   ModelKind model = ModelKind::paper9;
@@ -40,7 +44,7 @@ struct ModelChoice {
 // --model auto: the richest of the linear models (paper9, then axis6, then bias3; cubic12 only when
 // asked for: its correction is not linear and it needs the field's strength) that the layout
 // carries. Empty when none does (too few positions).
-std::optional<ModelChoice> choose_model(const Program& directions);
+std::optional<ModelChoice> choose_model(const Program& directions, bool gain_estimated = false);
 
 // The positions' directions before any fit: the normalised means when the data are in the field's
 // units (within 10 % of magnitude; the nominal directions for the projection modulus), else the
@@ -48,5 +52,8 @@ std::optional<ModelChoice> choose_model(const Program& directions);
 // determines). Empty when no such ellipsoid exists.
 std::optional<std::vector<Vec3>> layout_directions(const std::vector<PositionSamples>& data, double magnitude,
                                                    bool magnitude_auto, Modulus modulus);
+// Whether the gain is fitted with the offsets (judge_layout's gain_estimated): magnitude auto, or the data
+// not within 10 % of magnitude (layout_directions' ellipsoid start), the projection modulus never.
+bool gain_estimated(const std::vector<PositionSamples>& data, double magnitude, bool magnitude_auto, Modulus modulus);
 
 }  // namespace scalcal
