@@ -1,6 +1,6 @@
 # Precompiled headers: every unit parsed Eigen and the standard library again (and the front ends
 # nlohmann-json, symbolic GiNaC, the tests GoogleTest), most of a small unit's compile time:
-# commands/correct.cpp spent 7 s of its 8.5 s in -fsyntax-only. One header per target, private to
+# commands/calibration/correct.cpp spent 7 s of its 8.5 s in -fsyntax-only. One header per target, private to
 # it (nothing installed depends on it); -DSCALCAL_PCH=OFF turns them off. Targets whose units are
 # compiled with the same flags share one: building a header costs 3-7 s of CPU, and 26 targets
 # each built their own (124 s of a whole build's CPU, 26 s of the CLI's).

@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <charconv>
 
-#include "commands/usage_error.hpp"
+#include "commands/core/usage_error.hpp"
 #include "numeric/io/csv_table.hpp"
 #include "python/from_numpy.hpp"
 

@@ -7,7 +7,7 @@
 #pragma once
 #include <pybind11/pybind11.h>
 
-#include "commands/values.hpp"
+#include "commands/core/values.hpp"
 
 namespace scalcal::python {
 

@@ -6,10 +6,10 @@
 #include <string>
 #include <vector>
 
-#include "commands/json.hpp"
-#include "commands/progress.hpp"
-#include "commands/values.hpp"
-#include "commands/warning.hpp"
+#include "commands/core/json.hpp"
+#include "commands/core/progress.hpp"
+#include "commands/core/values.hpp"
+#include "commands/core/warning.hpp"
 
 namespace scalcal::python {
 

@@ -18,7 +18,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
-#include "commands/usage_error.hpp"
+#include "commands/core/usage_error.hpp"
 #include "numeric/calibration/measurements_csv.hpp"
 #include "numeric/io/blas_kernel.hpp"
 #include "numeric/io/input_error.hpp"

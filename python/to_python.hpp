@@ -4,7 +4,7 @@
 #pragma once
 #include <pybind11/pybind11.h>
 
-#include "commands/json.hpp"
+#include "commands/core/json.hpp"
 
 namespace scalcal::python {
 

@@ -41,7 +41,7 @@
 #endif
 
 /* Thresholds of the host (numeric/calibration/model_choice.hpp, identifiability.hpp, any_units.cpp,
- * model_calibration.cpp, commands/correct.cpp). */
+ * model_calibration.cpp, commands/calibration/correct.cpp). */
 #define SC_CARRY_CONDITION ((scalcal_real)1e4) /* a layout carries a model up to this condition */
 #define SC_ILL_CONDITIONED ((scalcal_real)1e10)
 #define SC_IN_UNITS ((scalcal_real)0.1)         /* data within 10 % of |I| need no start */

@@ -4,7 +4,7 @@
 #pragma once
 #include <string>
 
-#include "commands/calibrate_gyro.hpp"
+#include "commands/calibration/calibrate_gyro.hpp"
 
 namespace scalcal::cli {
 

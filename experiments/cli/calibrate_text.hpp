@@ -4,7 +4,7 @@
 #pragma once
 #include <string>
 
-#include "commands/calibrate.hpp"
+#include "commands/calibration/calibrate.hpp"
 
 namespace scalcal::cli {
 

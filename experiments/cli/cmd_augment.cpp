@@ -1,10 +1,10 @@
 // `scalcal augment --program FILE --add K [--criterion C] [--model NAME] [--region SPEC]... [--out FILE]
-// [--json]`: the lab's positions and the K added inside the bench's region (commands/augment.hpp).
+// [--json]`: the lab's positions and the K added inside the bench's region (commands/design/augment.hpp).
 #include <cmath>
 #include <cstdio>
 #include <iostream>
 
-#include "commands/augment.hpp"
+#include "commands/design/augment.hpp"
 #include "experiments/cli/command.hpp"
 #include "experiments/cli/json_output.hpp"
 #include "experiments/cli/output_file.hpp"

@@ -1,7 +1,7 @@
 // `scalcal calibrate --measurements FILE --magnitude M|auto [...]`: the scalar calibration of one
 // meter from bench data (samples grouped by position) or from a raw log (time and raw outputs, or
 // --rate, the static intervals found in it), in any units, with the model the layout carries
-// (commands/calibrate.hpp): the result's warnings to stderr, --out, and the text or the JSON to
+// (commands/calibration/calibrate.hpp): the result's warnings to stderr, --out, and the text or the JSON to
 // stdout. Exit 1 when the fit did not converge.
 #include <cmath>
 #include <cstdio>
@@ -9,10 +9,10 @@
 #include <iostream>
 #include <sstream>
 
-#include "commands/calibrate.hpp"
-#include "commands/calibrate_gyro.hpp"
-#include "commands/calibrate_json.hpp"
-#include "commands/common_options.hpp"
+#include "commands/calibration/calibrate.hpp"
+#include "commands/calibration/calibrate_gyro.hpp"
+#include "commands/calibration/calibrate_json.hpp"
+#include "commands/core/common_options.hpp"
 #include "experiments/cli/calibrate_gyro_text.hpp"
 #include "experiments/cli/calibrate_text.hpp"
 #include "experiments/cli/command.hpp"
@@ -22,7 +22,7 @@
 namespace scalcal::cli {
 namespace {
 
-// --instrument gyro: a rate table, known turns or hand rotations (commands/calibrate_gyro.hpp).
+// --instrument gyro: a rate table, known turns or hand rotations (commands/calibration/calibrate_gyro.hpp).
 int run_gyro(const commands::Values& v) {
   const commands::GyroCalibrateResult r = commands::calibrate_gyro(commands::gyro_calibrate_request(v));
   print_warnings("calibrate", r.warnings);

@@ -1,9 +1,9 @@
 // `scalcal catalogue [--json]`: every named program with its source and criteria
-// (commands/catalogue.hpp), one line each, a column per registered criterion.
+// (commands/design/catalogue.hpp), one line each, a column per registered criterion.
 #include <algorithm>
 #include <cstdio>
 
-#include "commands/catalogue.hpp"
+#include "commands/design/catalogue.hpp"
 #include "experiments/cli/command.hpp"
 #include "experiments/cli/json_output.hpp"
 #include "numeric/criteria/identifiability.hpp"

@@ -1,11 +1,11 @@
 // `scalcal certify PROGRAM --criterion C [--digits P] [--json]`: the interval certificate for one program
-// (commands/certify.hpp): the limit attained (proven: an exact program within `radius`) or missed (a
+// (commands/research/certify.hpp): the limit attained (proven: an exact program within `radius`) or missed (a
 // certified local optimum whose value lies in `enclosure`, above the limit), or why the claim stays
 // numerical.
 #include <iomanip>
 #include <iostream>
 
-#include "commands/certify.hpp"
+#include "commands/research/certify.hpp"
 #include "experiments/cli/command.hpp"
 #include "experiments/cli/json_output.hpp"
 

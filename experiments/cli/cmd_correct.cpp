@@ -1,12 +1,12 @@
 // `scalcal correct --calibration CAL.json --measurements FILE [--format auto|csv|text] [--force] [--out FILE]`:
 // applies a calibration written by `calibrate --out CAL.json` (physical = matrix (raw - offset)) to
-// every row of raw data and writes the corrected x, y, z and their modulus as CSV (commands/correct.hpp).
+// every row of raw data and writes the corrected x, y, z and their modulus as CSV (commands/calibration/correct.hpp).
 // A calibration whose fit did not converge or whose matrix is ill-conditioned is refused (exit 2, with
 // the reason) unless --force.
 #include <iostream>
 
-#include "commands/common_options.hpp"
-#include "commands/correct.hpp"
+#include "commands/calibration/correct.hpp"
+#include "commands/core/common_options.hpp"
 #include "experiments/cli/command.hpp"
 #include "experiments/cli/output_file.hpp"
 

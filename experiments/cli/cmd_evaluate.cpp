@@ -1,12 +1,12 @@
 // `scalcal evaluate PROGRAM [--model NAME] [--region SPEC]... [--out FILE] [--json]`: the criteria of
-// one program, as the paper compares them (commands/evaluate.hpp); --out writes the program itself
+// one program, as the paper compares them (commands/design/evaluate.hpp); --out writes the program itself
 // as CSV (any catalogue name becomes a file), with tilt and azimuth on a one-zone region.
 #include <cstdio>
 #include <iostream>
 #include <sstream>
 
-#include "commands/common_options.hpp"
-#include "commands/evaluate.hpp"
+#include "commands/core/common_options.hpp"
+#include "commands/design/evaluate.hpp"
 #include "experiments/cli/command.hpp"
 #include "experiments/cli/evaluation_report.hpp"
 #include "experiments/cli/json_output.hpp"

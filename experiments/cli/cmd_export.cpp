@@ -1,9 +1,9 @@
 // `scalcal export CALIBRATION --format json|magcal|imu_tk|kalibr|px4|ardupilot [--instrument accel|mag]
 // [--instance N] [--force] [--out FILE] [--json]`: a calibration in another tool's form
-// (commands/export.hpp), to --out or standard output.
+// (commands/bench/export.hpp), to --out or standard output.
 #include <iostream>
 
-#include "commands/export.hpp"
+#include "commands/bench/export.hpp"
 #include "experiments/cli/command.hpp"
 #include "experiments/cli/json_output.hpp"
 #include "experiments/cli/output_file.hpp"

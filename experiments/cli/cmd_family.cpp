@@ -1,8 +1,8 @@
 // `scalcal family NAME [--param KEY=VALUE]... [--model NAME] [--json]`: the exact criteria of a family
-// member, or closed forms in symbolic parameters (commands/family.hpp).
+// member, or closed forms in symbolic parameters (commands/research/family.hpp).
 #include <iostream>
 
-#include "commands/family.hpp"
+#include "commands/research/family.hpp"
 #include "experiments/cli/command.hpp"
 #include "experiments/cli/json_output.hpp"
 

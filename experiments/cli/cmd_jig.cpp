@@ -1,11 +1,11 @@
 // `scalcal jig NAME [--criterion C] [--starts K] [--seed S] [--instrument accel|gyro] [--out FILE] [--json]`: the best
-// way to mount the meter in a printable jig (commands/jig.hpp), as a sheet: the value, what is proven, the meter's axes
-// in jig coordinates, the criteria before and after.
+// way to mount the meter in a printable jig (commands/bench/jig.hpp), as a sheet: the value, what is proven, the
+// meter's axes in jig coordinates, the criteria before and after.
 #include <cstdio>
 #include <iostream>
 
-#include "commands/evaluation_json.hpp"
-#include "commands/jig.hpp"
+#include "commands/bench/jig.hpp"
+#include "commands/core/evaluation_json.hpp"
 #include "experiments/cli/command.hpp"
 #include "experiments/cli/json_output.hpp"
 #include "experiments/cli/output_file.hpp"

@@ -1,15 +1,15 @@
 // `scalcal limits [--model NAME] [--region SPEC]... [--out FILE] [--json]`: the infimum of each normalised
 // criterion over all measures on the sphere, derived symbolically, with the moments of an optimal
 // measure; on a restricted region, an optimal measure found numerically and a lower bound certified
-// by weak duality over the whole region, or the closed form where a theorem gives one (commands/limits.hpp).
+// by weak duality over the whole region, or the closed form where a theorem gives one (commands/design/limits.hpp).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <sstream>
 
-#include "commands/common_options.hpp"
-#include "commands/limits.hpp"
+#include "commands/core/common_options.hpp"
+#include "commands/design/limits.hpp"
 #include "experiments/cli/command.hpp"
 #include "experiments/cli/json_output.hpp"
 #include "experiments/cli/output_file.hpp"

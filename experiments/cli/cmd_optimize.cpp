@@ -1,13 +1,13 @@
 // `scalcal optimize --positions N|--from PROGRAM --criterion C [--model NAME] [--region SPEC]...
 // [--starts K] [--seed S] [--threads T] [--digits P] [--local auto|newton|lbfgs|ipopt] [--out FILE]
-// [--json]`: the optimal program by a multistart, optionally polished to P digits (commands/optimize.hpp);
+// [--json]`: the optimal program by a multistart, optionally polished to P digits (commands/design/optimize.hpp);
 // with --digits, --out and the JSON program are the polished program.
 #include <iomanip>
 #include <iostream>
 #include <string>
 
-#include "commands/optimize.hpp"
-#include "commands/thermal_optimize.hpp"
+#include "commands/design/optimize.hpp"
+#include "commands/design/thermal_optimize.hpp"
 #include "experiments/cli/command.hpp"
 #include "experiments/cli/json_output.hpp"
 #include "experiments/cli/output_file.hpp"

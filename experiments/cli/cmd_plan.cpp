@@ -1,5 +1,5 @@
 // `scalcal plan PROGRAM --bench SPEC [--resolution DEG] [--order travel|remounts|given] [--region SPEC]...
-// [--model NAME] [--out FILE] [--json]`: bench settings and a run order (commands/plan.hpp), printed as
+// [--model NAME] [--out FILE] [--json]`: bench settings and a run order (commands/bench/plan.hpp), printed as
 // a sheet an operator follows step by step; --out writes the plan as a program file in run order.
 #include <algorithm>
 #include <cmath>
@@ -7,8 +7,8 @@
 #include <iostream>
 #include <sstream>
 
-#include "commands/plan.hpp"
-#include "commands/thermal_plan.hpp"
+#include "commands/bench/plan.hpp"
+#include "commands/bench/thermal_plan.hpp"
 #include "experiments/cli/command.hpp"
 #include "experiments/cli/json_output.hpp"
 #include "experiments/cli/output_file.hpp"

@@ -1,10 +1,10 @@
 // `scalcal plot PROGRAM [--region SPEC]... [--out FILE.pdf|png|svg]`: the figure of a program
-// (commands/plot.hpp), rendered by gnuplot at print size; FILE.gp, FILE.pdf, FILE.png, FILE.svg and
+// (commands/bench/plot.hpp), rendered by gnuplot at print size; FILE.gp, FILE.pdf, FILE.png, FILE.svg and
 // the CSV data are written into FILE's folder, and their names printed.
 #include <filesystem>
 #include <iostream>
 
-#include "commands/plot.hpp"
+#include "commands/bench/plot.hpp"
 #include "experiments/cli/command.hpp"
 #include "experiments/cli/output_file.hpp"
 #include "numeric/io/input_error.hpp"

@@ -1,10 +1,10 @@
 // `scalcal polish PROGRAM --criterion C [--digits P] [--out FILE] [--json]`: the program polished by
 // Newton's method in MPFR on its first-order conditions, with the certificate's second-order verdict
-// (commands/polish.hpp); --out writes the polished program. Exit 1 when the polish did not converge.
+// (commands/research/polish.hpp); --out writes the polished program. Exit 1 when the polish did not converge.
 #include <iomanip>
 #include <iostream>
 
-#include "commands/polish.hpp"
+#include "commands/research/polish.hpp"
 #include "experiments/cli/command.hpp"
 #include "experiments/cli/json_output.hpp"
 #include "experiments/cli/output_file.hpp"

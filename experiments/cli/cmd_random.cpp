@@ -1,9 +1,9 @@
 // `scalcal random --positions N --count R [--seed S] [--criterion C] [--model NAME] [--region SPEC]...
-// [--threads T] [--out FILE] [--json]`: the best of R uniform random programs (commands/random.hpp).
+// [--threads T] [--out FILE] [--json]`: the best of R uniform random programs (commands/design/random.hpp).
 #include <iomanip>
 #include <iostream>
 
-#include "commands/random.hpp"
+#include "commands/design/random.hpp"
 #include "experiments/cli/command.hpp"
 #include "experiments/cli/json_output.hpp"
 #include "experiments/cli/output_file.hpp"

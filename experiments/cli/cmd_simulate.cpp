@@ -1,13 +1,13 @@
 // `scalcal simulate --program P --trials T --noise SIGMA [--bench-error DEG] [--modulus ...] [--model NAME]
 // [--seed S] [--samples K] [--size A] [--out FILE] [--json]`: Monte-Carlo calibration of simulated meters
-// (commands/simulate.hpp), printed as a table per modulus; with --log FILE or --bench-file FILE a
-// rehearsal instead (commands/rehearsal.hpp): the files, and the true parameters in --truth FILE.
+// (commands/calibration/simulate.hpp), printed as a table per modulus; with --log FILE or --bench-file FILE a
+// rehearsal instead (commands/calibration/rehearsal.hpp): the files, and the true parameters in --truth FILE.
 #include <cmath>
 #include <iomanip>
 #include <iostream>
 
-#include "commands/common_options.hpp"
-#include "commands/simulate.hpp"
+#include "commands/calibration/simulate.hpp"
+#include "commands/core/common_options.hpp"
 #include "experiments/cli/command.hpp"
 #include "experiments/cli/json_output.hpp"
 #include "experiments/cli/output_file.hpp"

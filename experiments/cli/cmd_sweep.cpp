@@ -1,6 +1,6 @@
 // `scalcal sweep --positions 9..40 --criteria D,A,E,S [--model NAME] [--region SPEC]... [--starts K]
 // [--seed S] [--threads T] [--out FILE] [--json] [--no-timing]`: the best program for every N and
-// criterion with its ratio to the limit (commands/sweep.hpp), each row shown and saved as it is
+// criterion with its ratio to the limit (commands/research/sweep.hpp), each row shown and saved as it is
 // found. --no-timing leaves out the only columns that differ between runs. Started by mpirun, the
 // tasks are spread over the ranks and rank 0 prints what a single process would.
 #include <cstdlib>
@@ -9,7 +9,7 @@
 
 #include <fmt/format.h>
 
-#include "commands/sweep.hpp"
+#include "commands/research/sweep.hpp"
 #include "experiments/cli/command.hpp"
 #include "experiments/cli/json_output.hpp"
 #include "experiments/cli/mpi_ranks.hpp"

@@ -7,10 +7,10 @@
 #include <string>
 #include <vector>
 
-#include "commands/progress.hpp"
-#include "commands/usage_error.hpp"
-#include "commands/values.hpp"
-#include "commands/warning.hpp"
+#include "commands/core/progress.hpp"
+#include "commands/core/usage_error.hpp"
+#include "commands/core/values.hpp"
+#include "commands/core/warning.hpp"
 
 namespace CLI {
 class App;

@@ -1,10 +1,10 @@
 // How the CLI shows an Evaluation as text: the table of `scalcal evaluate` (its JSON form is
-// commands/evaluation_json.hpp).
+// commands/core/evaluation_json.hpp).
 #pragma once
 #include <ostream>
 #include <string>
 
-#include "commands/evaluation_json.hpp"
+#include "commands/core/evaluation_json.hpp"
 #include "experiments/cli/json_output.hpp"
 #include "numeric/criteria/identifiability.hpp"
 

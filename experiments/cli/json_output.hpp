@@ -1,9 +1,9 @@
-// JSON on the CLI's stdout and in its files: the results' JSON form (commands/json.hpp), printed
+// JSON on the CLI's stdout and in its files: the results' JSON form (commands/core/json.hpp), printed
 // indented with one trailing newline.
 #pragma once
 #include <ostream>
 
-#include "commands/json.hpp"
+#include "commands/core/json.hpp"
 
 namespace scalcal::cli {
 

@@ -14,7 +14,7 @@
 #endif
 #include <CLI/CLI.hpp>
 
-#include "commands/tool_info.hpp"
+#include "commands/core/tool_info.hpp"
 #include "experiments/cli/command.hpp"
 #include "experiments/cli/man_page.hpp"
 #include "experiments/cli/output_file.hpp"

@@ -4,7 +4,7 @@
 
 #include <limits>
 
-#include "commands/common_options.hpp"
+#include "commands/core/common_options.hpp"
 #include "experiments/cli/table_options.hpp"
 
 namespace scalcal::cli {

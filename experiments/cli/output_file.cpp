@@ -9,7 +9,7 @@
 
 #include <unistd.h>
 
-#include "commands/region_request.hpp"
+#include "commands/core/region_request.hpp"
 #include "numeric/program/program_csv.hpp"
 
 namespace scalcal::cli {

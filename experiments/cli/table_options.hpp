@@ -1,10 +1,10 @@
-// A command's option table (commands/option_table.hpp) as CLI11 options: each value is checked by
+// A command's option table (commands/core/option_table.hpp) as CLI11 options: each value is checked by
 // the table's own rule, so a bad value fails with the option's name and the reason, and --help
 // shows the table's help lines. Only this file and options.cpp, main.cpp see CLI11 itself.
 #pragma once
 #include <functional>
 
-#include "commands/values.hpp"
+#include "commands/core/values.hpp"
 
 namespace CLI {
 class App;

@@ -1,7 +1,7 @@
 // `scalcal reproduce` as a command (command.hpp).
 #include "experiments/reproduce/command.hpp"
 
-#include "commands/common_options.hpp"
+#include "commands/core/common_options.hpp"
 
 namespace scalcal::reproduce {
 

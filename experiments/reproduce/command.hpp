@@ -2,8 +2,8 @@
 // the pipeline's options and summary from and to the commands' forms. Its result is the folder it
 // writes (REPORT.md, the figures and their data): the one command whose work is files.
 #pragma once
-#include "commands/json.hpp"
-#include "commands/values.hpp"
+#include "commands/core/json.hpp"
+#include "commands/core/values.hpp"
 #include "experiments/reproduce/pipeline.hpp"
 
 namespace scalcal::reproduce {

@@ -5,7 +5,7 @@
 #include <iterator>
 #include <stdexcept>
 
-#include "commands/tool_info.hpp"
+#include "commands/core/tool_info.hpp"
 #include "experiments/reproduce/figures.hpp"
 #include "experiments/reproduce/format.hpp"
 #include "experiments/reproduce/programs.hpp"

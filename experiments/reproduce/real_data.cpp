@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "commands/calibrate.hpp"
+#include "commands/calibration/calibrate.hpp"
 #include "experiments/reproduce/figures.hpp"
 #include "experiments/reproduce/format.hpp"
 #include "numeric/calibration/raw_log.hpp"

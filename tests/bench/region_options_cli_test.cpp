@@ -8,7 +8,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "commands/region_request.hpp"
+#include "commands/core/region_request.hpp"
 #include "numeric/io/input_error.hpp"
 #include "numeric/program/program_csv.hpp"
 #include "tests/common/run_cli.hpp"

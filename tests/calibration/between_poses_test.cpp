@@ -14,7 +14,7 @@
 #include <boost/math/distributions/binomial.hpp>
 #include <boost/math/distributions/students_t.hpp>
 
-#include "commands/calibrate.hpp"
+#include "commands/calibration/calibrate.hpp"
 #include "numeric/calibration/between_poses.hpp"
 #include "numeric/calibration/tumbling.hpp"
 

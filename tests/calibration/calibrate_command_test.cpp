@@ -1,4 +1,4 @@
-// `calibrate` as a library function (commands/calibrate.hpp, issue 31) on simulated logs whose
+// `calibrate` as a library function (commands/calibration/calibrate.hpp, issue 31) on simulated logs whose
 // truth is known (tests/calibration/raw_log_simulator.hpp, written apart from the estimator): a log
 // without a still start, six faces only, one degree of freedom, no time column, a field of unknown
 // strength; each time the truth must lie within the reported uncertainty. Also: the model a layout
@@ -12,9 +12,9 @@
 
 #include <gtest/gtest.h>
 
-#include "commands/calibrate.hpp"
-#include "commands/calibrate_json.hpp"
-#include "commands/correct.hpp"
+#include "commands/calibration/calibrate.hpp"
+#include "commands/calibration/calibrate_json.hpp"
+#include "commands/calibration/correct.hpp"
 #include "numeric/io/input_error.hpp"
 #include "tests/calibration/raw_log_simulator.hpp"
 

@@ -15,7 +15,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "commands/calibrate.hpp"
+#include "commands/calibration/calibrate.hpp"
 
 namespace scalcal {
 namespace {

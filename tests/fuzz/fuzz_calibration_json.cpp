@@ -5,8 +5,8 @@
 #include <cstdint>
 #include <string>
 
-#include "commands/correct.hpp"
-#include "commands/json.hpp"
+#include "commands/calibration/correct.hpp"
+#include "commands/core/json.hpp"
 #include "numeric/io/input_error.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

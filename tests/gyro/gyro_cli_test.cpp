@@ -9,8 +9,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "commands/gyro_regions.hpp"
-#include "commands/usage_error.hpp"
+#include "commands/core/usage_error.hpp"
+#include "commands/design/gyro_regions.hpp"
 #include "tests/common/run_cli.hpp"
 
 namespace scalcal::testing {

@@ -1,5 +1,5 @@
 // Issue 50 item 4: the work estimates that decide whether a request may start
-// (commands/work_bound.hpp) against measured runs: each within 3x of the CPU time a run of a second
+// (commands/core/work_bound.hpp) against measured runs: each within 3x of the CPU time a run of a second
 // or less takes (random's was 4.4 h for a run of 2.4 h: off by how much? now measured here). The runs
 // are the CLI's (CPU time of the child, start-up included) or the command's function in this process.
 #include <gtest/gtest.h>
@@ -16,9 +16,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "commands/plan.hpp"
-#include "commands/rehearsal.hpp"
-#include "commands/work_bound.hpp"
+#include "commands/bench/plan.hpp"
+#include "commands/calibration/rehearsal.hpp"
+#include "commands/core/work_bound.hpp"
 #include "numeric/bench/registry.hpp"
 #include "numeric/program/catalogue.hpp"
 #include "tests/common/bad_input.hpp"

@@ -46,7 +46,7 @@ class Includes(unittest.TestCase):
         self.assertIn("no place", cr.include_breach("numeric/newrole/a.hpp", "numeric/io/b.hpp"))
         self.assertIn("consumer", cr.include_breach("commands/a.cpp", "tests/common/run_cli.hpp"))
         self.assertIn("nothing of the C++", cr.include_breach("embedded/src/a.c", "numeric/io/b.hpp"))
-        self.assertIsNone(cr.include_breach("tests/x/a.cpp", "commands/calibrate.hpp"))
+        self.assertIsNone(cr.include_breach("tests/x/a.cpp", "commands/calibration/calibrate.hpp"))
         self.assertIsNone(cr.include_breach("commands/a.cpp", "symbolic/b.hpp"))
 
 

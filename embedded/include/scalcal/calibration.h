@@ -25,9 +25,9 @@ typedef enum {
 /* Where the noise (and the noise-based standard errors) came from. */
 typedef enum {
   SCALCAL_NOISE_NONE = 0,
-  SCALCAL_NOISE_SCATTER,   /* the scatter of the samples within poses */
-  SCALCAL_NOISE_RESIDUALS, /* the residuals between poses (one sample per pose) */
-  SCALCAL_NOISE_GIVEN,     /* scalcal_fit_options.noise */
+  SCALCAL_NOISE_SCATTER,    /* the scatter of the samples within poses */
+  SCALCAL_NOISE_RESIDUALS,  /* the residuals between poses (one sample per pose) */
+  SCALCAL_NOISE_GIVEN,      /* scalcal_fit_options.noise */
   SCALCAL_NOISE_DIFFERENCES /* tumbling: the samples' second differences (scalcal/tumble.h) */
 } scalcal_noise_source;
 

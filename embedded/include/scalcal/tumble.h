@@ -45,10 +45,10 @@ typedef struct scalcal_tumble {
   uint32_t pair_a, pair_b;
   scalcal_real pair_cost;
   /* Counts. */
-  uint32_t samples;  /* valid samples in cells */
-  uint32_t invalid;  /* not finite or saturated */
+  uint32_t samples;   /* valid samples in cells */
+  uint32_t invalid;   /* not finite or saturated */
   uint32_t disturbed; /* left out by the gate */
-  uint32_t merges;   /* pairs of cells merged */
+  uint32_t merges;    /* pairs of cells merged */
 } scalcal_tumble;
 
 /* Starts an empty accumulation into `cells` (emptied; its capacity is the maximum number of cells,

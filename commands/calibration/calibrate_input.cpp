@@ -1,0 +1,287 @@
+// The data of `calibrate`: bench positions or a raw log's static intervals, and what to say when a
+// log has too few of them.
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+#include "commands/calibration/calibrate.hpp"
+#include "commands/core/usage_error.hpp"
+#include "numeric/calibration/measurements_csv.hpp"
+#include "numeric/calibration/model_choice.hpp"
+
+#include <Eigen/Dense>
+#include "numeric/io/input_error.hpp"
+
+namespace scalcal::commands {
+namespace {
+
+std::string lines_text(const std::vector<int>& lines, int total) {
+  std::string s;
+  for (int l : lines) s += (s.empty() ? "" : ", ") + std::to_string(l);
+  return s + (total > static_cast<int>(lines.size()) ? ", ..." : "");
+}
+
+std::string shortest(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
+// Too few intervals: what the detector did, and what would actually help for this log.
+std::string too_few_message(const IntervalDetection& d, const StaticIntervalOptions& o, const std::string& need) {
+  std::ostringstream s;
+  s << std::setprecision(4) << "found " << d.intervals.size() << " static intervals; " << need << ". A window of "
+    << d.window << " samples is static when its variance norm stays below " << d.threshold << " = --threshold-factor "
+    << o.threshold_factor << " x the noise floor " << d.still_variance << " ("
+    << (d.floor_from_still ? "the variance of the first --still " + shortest(o.still_seconds) + " s"
+                           : std::string("the median of the log's quiet windows"))
+    << "), for at least --min-interval " << o.min_seconds << " s. ";
+  if (d.drifting_runs > 0 && d.intervals.empty()) {
+    s << d.drifting_runs << " runs under the threshold turned by more than two degrees (slow motion, not poses): "
+      << "the threshold is above the motion"
+      << (d.floor_from_still ? "; the --still period is not still (drop --still: the floor then comes from the quiet "
+                               "windows)"
+                             : "; a smaller --threshold-factor separates the positions");
+  } else if (d.longest_fraction > 0.5) {
+    s << "One interval covers " << std::setprecision(2) << 100 * d.longest_fraction
+      << " % of the log: the threshold is above the motion"
+      << (d.floor_from_still ? "; the --still period is not still (drop --still: the floor then comes from the quiet "
+                               "windows)"
+                             : "; a smaller --threshold-factor separates the positions");
+  } else if (d.short_runs > 0) {
+    s << d.short_runs << " still runs were shorter than --min-interval: a shorter --min-interval counts them";
+  } else {
+    s << "The log holds no other still period of that length: record more positions";
+  }
+  return s.str();
+}
+
+}  // namespace
+
+namespace {
+
+// Bench data or a raw log given as columns (Python): the same checks as a file's.
+CalibrationInput input_from_table(const CalibrateRequest& o, const CsvTable& table) {
+  if (o.rate > 0 || is_raw_log(table)) {
+    if (table.has("position"))
+      throw InputError(o.file, 1, "a 'position' column makes this bench data, which --rate does not apply to");
+    return calibration_input(raw_log_from_table(table, o.rate), o);
+  }
+  for (const auto& row : table.rows)
+    for (std::size_t c = 0; c < row.values.size(); ++c)
+      if (!std::isfinite(row.values[c]))
+        throw InputError(o.file, row.line, "value in column " + table.columns[c] + " is not finite");
+  if (!table.has("position") && rows_change_like_a_log(table))
+    throw InputError(o.file, 0,
+                     "its rows change as a raw log's do (consecutive rows close together, motion between), but it "
+                     "has no time column: give the sample rate (rate) or a position column");
+  CalibrationInput in;
+  in.data = measurements_from_table(table, o.modulus == Modulus::projection);
+  return in;
+}
+
+}  // namespace
+
+CalibrationInput read_calibration_input(const CalibrateRequest& o) {
+  if (o.table) return input_from_table(o, *o.table);
+  const bool need_nominal = o.modulus == Modulus::projection;
+  const std::string text = read_text_file(o.file);
+  if (o.format == "text" || (o.format == "auto" && looks_like_text_log(text)))
+    return calibration_input(parse_raw_log(text, o.file, LogFormat::text, o.rate), o);
+  TableFormat lenient;  // a raw log's dropouts are counted, not refused
+  lenient.nonfinite_allowed = true;
+  const CsvTable table = parse_table(text, o.file, lenient);
+  if (o.rate > 0 || is_raw_log(table)) {
+    if (table.has("position"))
+      throw InputError(o.file, 1, "a 'position' column makes this bench data, which --rate does not apply to");
+    return calibration_input(raw_log_from_table(table, o.rate), o);
+  }
+  if (!table.has("position") && time_column(table) < 0 && rows_change_like_a_log(table))
+    throw InputError(o.file, 0,
+                     "its rows change as a raw log's do (consecutive rows close together, motion between), but it "
+                     "has no time column: give the sample rate with --rate HZ (or a position column, if it is bench "
+                     "data with samples of each position in a row)");
+  CalibrationInput in;
+  in.data = measurements_from_table(parse_csv(text, o.file), need_nominal);  // strict, as always
+  return in;
+}
+
+namespace {
+
+// The quietest windows of a log in motion varying more than this many times one sample's white
+// noise are slow motion, not still poses (the public logs' still windows: 0.6-1.1 times).
+constexpr double kQuietIsMotion = 10;
+
+// The instrument and whether every sample is a position: as given, or as the log shows it (a log
+// mostly in motion whose modulus survives the motion is a magnetometer's, turned as magcal, PX4 and
+// ArduPilot expect), else from the magnitude where the Earth fixes it.
+void decide_instrument(const CalibrateRequest& o, CalibrationInput& in) {
+  const LogMotion& m = in.motion;
+  const bool tumbling = m.mostly_moving() && m.field_survives();
+  if (o.instrument) {
+    in.instrument = o.instrument;
+    in.instrument_reason = "given";
+  } else if (o.magnitude == "auto") {
+    in.instrument = Instrument::mag;
+    in.instrument_reason = "a field of unknown strength (--magnitude auto)";
+  } else {
+    const double magnitude = std::stod(o.magnitude);
+    for (Instrument i : {Instrument::accel, Instrument::mag})
+      if (unit_of_earth_magnitude(i, magnitude)) {
+        in.instrument = i;
+        in.instrument_reason = std::string(i == Instrument::accel ? "gravity" : "the geomagnetic field") +
+                               "'s strength (--magnitude " + o.magnitude + ")";
+      }
+    if (!in.instrument && tumbling) {
+      in.instrument = Instrument::mag;
+      in.instrument_reason = "the modulus survives the motion of a log turned continuously, as a magnetometer's does";
+    }
+  }
+  // A log taken for a magnetometer's by its magnitude alone whose modulus does not survive the
+  // motion is not one (an accelerometer moved with --magnitude auto): only its still poses count.
+  if (!o.instrument && in.instrument == Instrument::mag && m.mostly_moving() && !m.field_survives()) {
+    in.instrument.reset();
+    in.instrument_reason.clear();
+    return;
+  }
+  if (o.instrument == Instrument::mag && m.mostly_moving() && m.ellipsoid && !m.field_survives())
+    in.warnings.push_back({o.file, "the modulus changes with the motion: " + motion_text(m) +
+                                       "; a magnetometer's field should not (a nearby magnet or current, or an "
+                                       "accelerometer's log?): the residual-based standard errors include it"});
+  // A magnetometer's log in motion: every sample is a position (magcal's way).
+  if (in.instrument && field_survives_motion(*in.instrument) && m.mostly_moving()) {
+    if (!m.ellipsoid)
+      throw InputError(o.file, 0, "no ellipsoid passes through the log's samples: they are too few or too flat");
+    in.every_sample = true;
+    in.instrument_reason += "; turned continuously: " + motion_text(m) + ", so every sample is a position";
+  }
+}
+
+// An accelerometer's log (or one the log cannot show is not) in continuous motion: its samples in
+// motion measure acceleration besides gravity, so only still poses count; too few of them is this.
+std::string moving_log_message(const LogMotion& m, const IntervalDetection& d, const std::string& need) {
+  return "the log never stands still long enough: " + motion_text(m) + ", and " + std::to_string(d.intervals.size()) +
+         " still intervals were found (" + need +
+         "). An accelerometer measures gravity only at rest: record still poses of a second or more; a magnetometer's "
+         "log is calibrated sample by sample (--instrument mag)";
+}
+
+// det(covariance)^(1/P) of the noise-based errors of the calibration a detection's positions give
+// under `model`, or none.
+std::optional<double> detection_score(const RawLog& log, const IntervalDetection& d, const CalibrateRequest& o,
+                                      ModelKind model) {
+  if (static_cast<int>(d.intervals.size()) < model_parameters(model) + 1) return std::nullopt;
+  AnyUnitsOptions ao;
+  ao.modulus = o.modulus;
+  ao.magnitude_auto = o.magnitude == "auto";
+  ao.magnitude = ao.magnitude_auto ? 1.0 : std::stod(o.magnitude);
+  ao.weight_by_samples = o.weights == "samples";
+  ao.model = model;
+  try {
+    const AnyUnitsCalibration fit = calibrate_any_units(o.file, interval_positions(log, d), ao);
+    if (!fit.estimate.summary.converged() || fit.noise_covariance.size() == 0) return std::nullopt;
+    // Under --model auto a candidate scores under the model auto would take for it.
+    if (!o.model && !judge_layout(model, Program{fit.directions}, ao.magnitude_auto || fit.started).carried)
+      return std::nullopt;
+    const Eigen::LDLT<Eigen::MatrixXd> c(fit.noise_covariance);
+    if (c.info() != Eigen::Success || !(c.vectorD().minCoeff() > 0)) return std::nullopt;
+    return std::exp(c.vectorD().array().log().sum() / static_cast<double>(fit.noise_covariance.rows()));
+  } catch (const InputError&) {
+    return std::nullopt;
+  }
+}
+
+// The detection of a raw log's still poses, chosen among the candidates by the predicted errors of
+// the calibration each gives: under the requested model, else the richest linear model under which
+// some candidate calibrates.
+void choose_for_log(const CalibrateRequest& o, CalibrationInput& in) {
+  std::vector<ModelKind> models;
+  if (o.model)
+    models.push_back(*o.model);
+  else
+    for (const char* name : {"paper9", "axis6", "bias3"}) models.push_back(*parse_model(name));
+  for (const ModelKind model : models) {
+    const auto chosen = choose_detection(
+        *in.log, o.intervals, [&](const IntervalDetection& d) { return detection_score(*in.log, d, o, model); });
+    if (!chosen) continue;
+    in.chosen = chosen;
+    in.detection = chosen->detection;
+    return;
+  }
+}
+
+}  // namespace
+
+CalibrationInput calibration_input(RawLog log, const CalibrateRequest& o) {
+  // --model auto takes the richest model the positions carry, down to offsets only.
+  const int needed = o.model ? model_parameters(*o.model) : model_parameters(*parse_model("bias3"));
+  const std::string need = o.model ? "--model " + std::string(model_name(*o.model)) + " needs at least " +
+                                         std::to_string(needed) + " positions"
+                                   : "paper9 needs at least 9 positions (axis6 6, bias3 3)";
+  CalibrationInput in;
+  in.log = std::move(log);
+  if (o.modulus == Modulus::projection)
+    throw InputError(o.file, 0, "a raw log has no nominal directions: the projection modulus needs them");
+  in.detection = detect_static_intervals(*in.log, o.intervals);
+  const auto& d = in.detection;
+  if (d.nonfinite > 0)
+    in.warnings.push_back({o.file, std::to_string(d.nonfinite) +
+                                       " rows with a NaN or infinite value are not used (lines " +
+                                       lines_text(d.nonfinite_lines, d.nonfinite) + ")"});
+  if (d.saturated > 0)
+    in.warnings.push_back(
+        {o.file, std::to_string(d.saturated) +
+                     " samples sit at an output's extreme in runs of three or more (saturated) and are "
+                     "not used (lines " +
+                     lines_text(d.saturated_lines, d.saturated) + ")"});
+  in.motion = judge_motion(*in.log, d);
+  decide_instrument(o, in);
+  if (in.every_sample) {
+    in.data = sample_positions(*in.log, d.usable, in.sample_index);
+    if (in.data.size() < static_cast<std::size_t>(needed))
+      throw InputError(o.file, 0, std::to_string(in.data.size()) + " usable samples; " + need);
+    return in;
+  }
+  if (!o.intervals_given) choose_for_log(o, in);
+  if (d.intervals.size() < static_cast<std::size_t>(needed))
+    throw InputError(o.file, 0,
+                     in.motion.mostly_moving() && !d.floor_from_still ? moving_log_message(in.motion, d, need)
+                                                                      : too_few_message(d, o.intervals, need));
+  // A log in motion whose quietest windows still move far more than one sample's noise has no
+  // still poses at all, only slow phases of its motion: an accelerometer there measures more than
+  // gravity. (A sensor whose noise is not white can show a floor a few times its second-difference
+  // noise: the factor leaves room for that; --still sets the floor from a known still start.)
+  const double white = in.motion.noise.cwiseProduct(in.motion.noise).norm();
+  if (in.motion.mostly_moving() && !d.floor_from_still && d.still_variance > kQuietIsMotion * white)
+    throw InputError(o.file, 0,
+                     moving_log_message(in.motion, d, need) + "; its quietest windows vary " +
+                         shortest(d.still_variance / white) + " times as much as one sample's noise");
+  in.data = interval_positions(*in.log, in.detection);
+  return in;
+}
+
+std::string magnitude_problem(const std::string& s) {
+  if (s == "auto") return "";
+  try {
+    std::size_t used = 0;
+    const double v = std::stod(s, &used);
+    if (used == s.size() && std::isfinite(v) && v > 0) return "";
+  } catch (...) {
+  }
+  return "must be a positive number or auto, got '" + s + "'";
+}
+
+void check_calibrate_request(const CalibrateRequest& o) {
+  if (const std::string problem = magnitude_problem(o.magnitude); !problem.empty())
+    throw UsageError("calibrate: --magnitude " + problem);
+  if (o.model && model_name(*o.model) == "cubic12" && o.magnitude == "auto")
+    throw UsageError(
+        "calibrate: --magnitude auto does not work with --model cubic12: its cubic term is relative to "
+        "|I|, which would be one more unknown; give |I|");
+  if (o.model && !model_supports(*o.model, ModelCapability::region_limits) && !o.regions.empty())
+    throw UsageError("calibrate: --region (the advice on what to add) works with the " +
+                     models_supporting(ModelCapability::region_limits) + " model only");
+  if (!(o.rate >= 0) || !std::isfinite(o.rate)) throw UsageError("calibrate: --rate must be a positive number");
+}
+
+}  // namespace scalcal::commands
