@@ -1,0 +1,185 @@
+#!/usr/bin/python3
+# web/test/browser_test.py: drives the built page in Debian's headless chromium (selenium + chromedriver) through
+# design, a real log, calibration and every export format, and compares every number with the CLI's for the same
+# inputs and seed. Exit 1 on any difference; the last line is check.sh's summary.
+#
+# usage: browser_test.py PAGE_DIR SCALCAL_CLI LOG MAGNITUDE WORK_DIR
+import gzip
+import json
+import os
+import subprocess
+import sys
+import time
+
+from selenium import webdriver
+from selenium.webdriver.chrome.service import Service
+from selenium.webdriver.common.by import By
+from selenium.webdriver.support.ui import Select, WebDriverWait
+
+from compare import Comparison
+
+PAGE, CLI, LOG, MAGNITUDE, WORK = sys.argv[1:6]
+DESIGN = {"positions": "18", "criterion": "D", "count": "20000", "seed": "7"}
+# Why a JSON number may differ in its last digits: the wasm core has no x86 SIMD and musl's libm, so sums
+# run in another order (seen: 2.6e-10 relative at most, on a p-value of 1e-110; 2e-11 on residuals that are
+# differences of nearly equal moduli). Every number must agree to 9 significant digits, the most the CLI's
+# text prints for any of them; how many agree exactly is reported.
+RELATIVE = 1e-9
+
+
+def cli(*args, check=True):
+    """The CLI's stdout (its --json parsed when asked), with SOURCE_DATE_EPOCH so its files carry no clock."""
+    env = dict(os.environ, SOURCE_DATE_EPOCH="0")
+    p = subprocess.run([CLI, *args], capture_output=True, text=True, env=env, cwd=WORK)
+    if check and p.returncode != 0:
+        sys.exit(f"browser test: scalcal {' '.join(args)} failed ({p.returncode}): {p.stderr}")
+    return p
+
+
+def browser():
+    options = webdriver.ChromeOptions()
+    options.binary_location = "/usr/bin/chromium"
+    for a in ("--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage", "--window-size=1200,2400"):
+        options.add_argument(a)
+    options.add_experimental_option("prefs", {"download.default_directory": WORK, "download.prompt_for_download": False})
+    return webdriver.Chrome(service=Service("/usr/bin/chromedriver"), options=options)
+
+
+def wait_status(d, word, timeout=120, allow_error=False):
+    """Waits for the status line to say `word: done.` (or failed) and, unless allowed, fails on the page's error."""
+    WebDriverWait(d, timeout).until(lambda d: d.find_element(By.ID, "status").text in (word + ": done.", word + " failed."))
+    err = d.find_element(By.ID, "error").text
+    if err and not allow_error:
+        sys.exit(f"browser test: the page says: {err}")
+
+
+def downloaded(name, timeout=20):
+    path = os.path.join(WORK, name)
+    end = time.time() + timeout
+    while time.time() < end:
+        if os.path.exists(path) and not os.path.exists(path + ".crdownload"):
+            with open(path) as f:
+                return f.read()
+        time.sleep(0.1)
+    sys.exit(f"browser test: {name} was not downloaded")
+
+
+def design(d, cmp):
+    for k, v in DESIGN.items():
+        if k == "criterion":
+            Select(d.find_element(By.ID, k)).select_by_value(v)
+        else:
+            e = d.find_element(By.ID, k)
+            e.clear()
+            e.send_keys(v)
+    d.find_element(By.ID, "design").click()
+    wait_status(d, "Design")
+    page = d.execute_script("return window.scalcalPage")
+    args = [f"--{k}={v}" for k, v in DESIGN.items()]
+    ref = json.loads(cli("random", *args, "--json").stdout)
+    cmp.json("random", ref, page["results"]["random"], skip={"/seconds"})
+    d.find_element(By.ID, "download-design").click()
+    downloaded("design.csv")
+    # The page's design file, evaluated by the CLI: the same program, the same criteria and efficiencies.
+    ref = json.loads(cli("evaluate", "design.csv", "--region", "sphere", "--json").stdout)
+    cmp.json("evaluate design.csv", ref, page["results"]["evaluate"])
+    cmp.shown(d, "criteria-rows", [[c, ref[c], ref["limits"][c]["value"], ref["efficiency"][c]] for c in "DAES"])
+    d.save_screenshot(os.path.join(WORK, "design.png"))
+    return page["timings"]["design"]
+
+
+def catalogue(d, cmp):
+    """Named programs (one from the paper's Table 1, read from the embedded data) against `scalcal evaluate`."""
+    for name in ("icosahedral-20", "table1-A"):
+        Select(d.find_element(By.ID, "program")).select_by_value(name)
+        d.find_element(By.ID, "evaluate").click()
+        wait_status(d, "Evaluation")
+        ref = json.loads(cli("evaluate", name, "--region", "sphere", "--json").stdout)
+        cmp.json(f"evaluate {name}", ref, d.execute_script("return window.scalcalPage.results.evaluate"))
+
+
+def calibrate(d, cmp):
+    d.find_element(By.ID, "log-file").send_keys(LOG)
+    WebDriverWait(d, 30).until(lambda d: "rows read" in d.find_element(By.ID, "log-info").text)
+    m = d.find_element(By.ID, "magnitude")
+    m.clear()
+    m.send_keys(MAGNITUDE)
+    d.find_element(By.ID, "calibrate").click()
+    wait_status(d, "Calibration")
+    page = d.execute_script("return window.scalcalPage")
+    name = os.path.basename(LOG)
+    run = cli("calibrate", "--measurements", LOG, "--magnitude", MAGNITUDE, "--suggest", "0", "--json",
+              "--out", "cli_cal.json")
+    cmp.json("calibrate", json.loads(run.stdout), page["results"]["calibrate"])
+    d.find_element(By.ID, "download-cal").click()
+    mine = json.loads(downloaded("cal.json"))
+    with open(os.path.join(WORK, "cli_cal.json")) as f:
+        ref = json.load(f)
+    # created is the clock (the CLI's SOURCE_DATE_EPOCH), tool.commit the build's; the data file is named as
+    # given (a path for the CLI, the dropped file's name for the page).
+    cmp.json("cal.json", ref, mine, skip={"/created", "/tool/commit"}, strings=True)
+    r = json.loads(run.stdout)
+    rows = [[k, v, None] for k, v in r["parameters"].items()]
+    cmp.shown(d, "param-rows", rows, columns=2)
+    d.save_screenshot(os.path.join(WORK, "calibrate.png"))
+    return page["timings"]["calibrate"], name
+
+
+def export_all(d, cmp):
+    """Every registered format, the page's against `scalcal export` on the page's own cal.json: the same bytes,
+    or the same refusal; once as it is, once with a driver's scale (the Xsens log is in counts, about 4057 a g:
+    its nominal gain 413.7 per m/s^2) and --force, so the firmware formats are written too."""
+    formats = d.execute_script("return window.scalcalPage.formats")
+    outcomes = {"written": 0, "refused": 0}
+    for scale, force in (("", False), ("1/4057g", True)):
+        e = d.find_element(By.ID, "raw-scale")
+        e.clear()
+        e.send_keys(scale)
+        if d.find_element(By.ID, "force").is_selected() != force:
+            d.find_element(By.ID, "force").click()
+        extra = (["--raw-scale", scale] if scale else []) + (["--force"] if force else [])
+        for f in formats:
+            Select(d.find_element(By.ID, "format")).select_by_value(f)
+            d.execute_script("window.scalcalPage.results.export = null")
+            d.find_element(By.ID, "export").click()
+            wait_status(d, "Export", allow_error=True)
+            error = d.find_element(By.ID, "error").text
+            what = f"export --format {f} {' '.join(extra)}".strip()
+            ref = cli("export", "cal.json", "--format", f, *extra, check=False)
+            if ref.returncode == 0:
+                text = d.execute_script("return window.scalcalPage.results.export.text") if not error else error
+                cmp.same_text(what, ref.stdout, text)
+                outcomes["written"] += 1
+            else:
+                outcomes["refused"] += 1
+                message = ref.stderr.strip().splitlines()[-1].removeprefix("scalcal export: ")
+                cmp.same_text(what + " (refused)", message, error.removeprefix("Export failed: "))
+    return outcomes
+
+
+def main():
+    os.makedirs(WORK, exist_ok=True)
+    for n in ("design.csv", "cal.json"):
+        if os.path.exists(os.path.join(WORK, n)):
+            os.remove(os.path.join(WORK, n))
+    cmp = Comparison(RELATIVE)
+    d = browser()
+    try:
+        d.get("file://" + os.path.join(PAGE, "index.html"))
+        WebDriverWait(d, 60).until(lambda d: d.execute_script("return window.scalcalPage && window.scalcalPage.ready"))
+        catalogue(d, cmp)
+        t_design = design(d, cmp)
+        t_cal, _ = calibrate(d, cmp)
+        n = export_all(d, cmp)
+    finally:
+        d.quit()
+    print(cmp.report())
+    print(f"browser test: every registered format exported twice: {n['written']} written, the same bytes as the CLI's; "
+          f"{n['refused']} refused with the CLI's message")
+    size = sum(len(gzip.compress(open(os.path.join(PAGE, f), "rb").read(), 9)) for f in os.listdir(PAGE))
+    print(f"page {size} bytes compressed, design {t_design:.2f} s, calibrate {t_cal:.2f} s")
+    return 1 if cmp.failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
