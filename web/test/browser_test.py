@@ -64,6 +64,14 @@ def downloaded(name, timeout=20):
     sys.exit(f"browser test: {name} was not downloaded")
 
 
+def csv_numbers(text):
+    return [[float(v) for v in line.split(",")] for line in text.splitlines() if line[:1].isdigit() or line[:1] == "-"]
+
+
+def csv_header(text):
+    return "\n".join(line for line in text.splitlines() if not (line[:1].isdigit() or line[:1] == "-"))
+
+
 def design(d, cmp):
     for k, v in DESIGN.items():
         if k == "criterion":
@@ -76,10 +84,15 @@ def design(d, cmp):
     wait_status(d, "Design")
     page = d.execute_script("return window.scalcalPage")
     args = [f"--{k}={v}" for k, v in DESIGN.items()]
-    ref = json.loads(cli("random", *args, "--json").stdout)
+    ref = json.loads(cli("random", *args, "--json", "--out", "cli_design.csv").stdout)
     cmp.json("random", ref, page["results"]["random"], skip={"/seconds"})
     d.find_element(By.ID, "download-design").click()
-    downloaded("design.csv")
+    mine = downloaded("design.csv")
+    with open(os.path.join(WORK, "cli_design.csv")) as f:
+        theirs = f.read()
+    # The files: the same lines of text apart from the numbers, the numbers (x, y, z and the angles) as above.
+    cmp.json("design.csv", csv_numbers(theirs), csv_numbers(mine))
+    cmp.same_text("design.csv's header", csv_header(theirs), csv_header(mine))
     # The page's design file, evaluated by the CLI: the same program, the same criteria and efficiencies.
     ref = json.loads(cli("evaluate", "design.csv", "--region", "sphere", "--json").stdout)
     cmp.json("evaluate design.csv", ref, page["results"]["evaluate"])

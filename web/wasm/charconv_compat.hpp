@@ -4,11 +4,13 @@
 //
 // Why this is safe to add to namespace std here: libc++ 14 declares no floating overloads at all (a double
 // argument falls to its deleted bool overload), so these exact-match overloads are the only candidates.
-// Semantics kept from the standard: from_chars takes no leading whitespace, '+' or hex prefix (strtod would);
+// Semantics kept from the standard: from_chars takes no leading whitespace, '+' or hex (strtod would);
 // to_chars gives the shortest text that reads back to the same double, fixed or scientific, whichever is
 // shorter, fixed on a tie. musl's strtod and printf are correctly rounded, so the digits are the host's.
 #pragma once
 #include <charconv>
+#include <cctype>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -21,18 +23,20 @@ namespace std {
 inline from_chars_result from_chars(const char* first, const char* last, double& value) {
   const char* p = first;
   if (p != last && *p == '-') ++p;
-  // Reject what strtod accepts but from_chars does not: whitespace, '+', hex.
-  if (p == last || *p == ' ' || *p == '+' || *p == '\t' || *p == '\n' ||
-      (last - p >= 2 && p[0] == '0' && (p[1] == 'x' || p[1] == 'X')))
-    return {first, errc::invalid_argument};
-  const string text(first, last);  // strtod needs a terminated string
+  // Reject what strtod accepts but from_chars does not: leading whitespace and '+'.
+  if (p == last || isspace(static_cast<unsigned char>(*p)) || *p == '+') return {first, errc::invalid_argument};
+  // A hex prefix is not read as hex: "0x10" is the number 0 followed by "x10", as libstdc++ reads it.
+  const bool hex = last - p >= 2 && p[0] == '0' && (p[1] == 'x' || p[1] == 'X');
+  const string text(first, hex ? p + 1 : last);  // strtod needs a terminated string
   char* end = nullptr;
   errno = 0;
   const double v = strtod(text.c_str(), &end);
   if (end == text.c_str()) return {first, errc::invalid_argument};
   const char* stop = first + (end - text.c_str());
-  if (errno == ERANGE) return {stop, errc::result_out_of_range};  // value left unchanged, as the standard says
-  value = v;
+  // Out of range is overflow or underflow to zero; musl also sets ERANGE for a subnormal, which from_chars
+  // returns as it is. The value is then left unchanged, as the standard says.
+  if (errno == ERANGE && (v == 0 || isinf(v))) return {stop, errc::result_out_of_range};
+  value = *first == '-' && isnan(v) ? copysign(v, -1.0) : v;  // musl's strtod drops the sign of "-nan"
   return {stop, errc()};
 }
 
@@ -75,8 +79,14 @@ inline to_chars_result to_chars(char* first, char* last, double value) {
         if (*c != '.') digits += *c;
       while (digits.size() > 1 && digits.back() == '0') digits.pop_back();
       const int exponent = atoi(e + 1);
-      const string f = scalcal_web_detail::fixed_text(digits, exponent);
+      string f = scalcal_web_detail::fixed_text(digits, exponent);
       const string s = scalcal_web_detail::scientific_text(digits, exponent);
+      // The length decides between the forms; a fixed integer is then printed exactly (%.0f), as the standard's
+      // "as if by printf" asks: 503608089097202944, not the shortest digits padded with zeros.
+      if (exponent >= static_cast<int>(digits.size()) - 1 && f.size() <= s.size()) {
+        snprintf(buf, sizeof buf, "%.0f", a);
+        f = buf;
+      }
       out += f.size() <= s.size() ? f : s;
     }
   }
