@@ -93,8 +93,10 @@ function showProgram(evaluation, cli) {
   rows.replaceChildren();
   for (const c of ['D', 'A', 'E', 'S']) {
     const limit = evaluation.limits[c];
-    rows.appendChild(row([c, g6(evaluation[c]), limit ? g6(limit.value) + ' (' + limit.exact + ')' : 'none',
-                          g6(evaluation.efficiency[c])], true));
+    const onRegion = evaluation.region !== 'sphere';
+    rows.appendChild(row([c, g6(evaluation[c]), limit ? g6(limit.value) + ' (' + limit.exact + ')'
+                          : onRegion ? 'on ' + evaluation.region + ': scalcal evaluate design.csv' : 'none',
+                          limit ? g6(evaluation.efficiency[c]) : '—'], true));
   }
   const positions = $('position-rows');
   positions.replaceChildren();
@@ -106,16 +108,19 @@ function showProgram(evaluation, cli) {
 }
 
 function design() {
+  const regions = $('region').value.trim().split(/\s+/).filter((x) => x);
   const q = { positions: Number($('positions').value), count: Number($('count').value),
-              seed: Number($('seed').value), criterion: $('criterion').value };
+              seed: Number($('seed').value), criterion: $('criterion').value, regions };
   const t0 = performance.now();
   const best = call({ op: 'random', ...q });
   const evaluation = call({ op: 'evaluate', csv: best.csv, name: 'design.csv' });
   page.timings.design = (performance.now() - t0) / 1000;
   page.results.random = best;
   page.design = best.csv;
+  const region = regions.map((r) => ` --region ${r}`).join('');
   showProgram(evaluation, `scalcal random --positions ${q.positions} --count ${q.count} --seed ${q.seed} ` +
-              `--criterion ${q.criterion} --out design.csv\nscalcal evaluate design.csv --region sphere`);
+              `--criterion ${q.criterion}${region} --out design.csv\nscalcal evaluate design.csv` +
+              (regions.length ? '' : ' --region sphere'));
 }
 
 function evaluateNamed() {

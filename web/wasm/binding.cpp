@@ -26,6 +26,8 @@
 #include "numeric/model/registry.hpp"
 #include "numeric/program/catalogue.hpp"
 #include "numeric/program/program_csv.hpp"
+#include "commands/region_request.hpp"
+#include "numeric/region/region_sampler.hpp"
 #include "numeric/synthesis/random_search.hpp"
 
 namespace scalcal::web {
@@ -69,17 +71,22 @@ Program program_of(const Json& in) {
 }
 
 // `scalcal evaluate PROGRAM --region sphere --json`: the criteria, and each one's efficiency against the
-// proven sphere limit (numeric/region/region_limit.cpp's efficiency(): limit / value, D as its 9th root).
+// proven sphere limit (numeric/region/region_limit.cpp's efficiency(): limit / value, D as its 9th root). A
+// program file whose region line is not the sphere gets its criteria only: the limits on a region need Ipopt
+// (and GiNaC for the closed forms on caps), so `scalcal evaluate design.csv` gives that efficiency.
 Json evaluate_op(const Json& in) {
   const Program program = program_of(in);
   const ModelEvaluation ev = scalcal::evaluate(ModelKind::paper9, program);
   if (!ev.full_rank()) throw std::runtime_error("rank-deficient program: rank " + std::to_string(ev.rank) + " of 9");
   Json j = commands::evaluation_json(ev, program);
-  j["region"] = "sphere";
+  commands::Warnings warnings;
+  const std::vector<std::string> specs = in.contains("csv") ? program_region(in.at("csv")).specs : std::vector<std::string>{};
+  const Region region = commands::resolve_region(specs, warnings);
+  j["region"] = region.text();
   Json e = Json::object(), l = Json::object();
   for (auto c : kCriteria) {
     const std::string name(criterion_name(c));
-    if (!has_limit(c)) {
+    if (!has_limit(c) || !region.is_sphere()) {
       e[name] = nullptr;
       l[name] = nullptr;
       continue;
@@ -88,29 +95,43 @@ Json evaluate_op(const Json& in) {
     const double ratio = limit.value / ev.value(c);
     const bool root = visit_criterion(c, [](auto C) { return kDeterminantOnly<decltype(C)>; });
     e[name] = root ? std::pow(ratio, 1.0 / ev.parameters) : ratio;
-    l[name] = {{"value", limit.value}, {"status", "proven"}, {"lower_bound", limit.value}, {"exact", std::string(limit.exact)},
-               {"theorem", std::string(limit.theorem)}};
+    l[name] = {{"value", limit.value}, {"status", "proven"}, {"lower_bound", limit.value},
+               {"exact", std::string(limit.exact)}, {"theorem", std::string(limit.theorem)}};
   }
   j["efficiency"] = e;
   j["limits"] = l;
   std::ostringstream csv;
-  write_program_csv(csv, program);
+  write_program_csv(csv, program, {}, {specs, {}});
   j["csv"] = csv.str();
   return j;
 }
 
-// `scalcal random --positions N --count R --seed S --criterion C --json`: the best of R uniform programs, one
-// thread (the search gives the same answer on any thread count: numeric/synthesis/random_search.hpp).
+// `scalcal random --positions N --count R --seed S --criterion C [--region SPEC]... --json`: the best of R
+// uniform programs (on the region: numeric/region/region_sampler), one thread (the search gives the same answer
+// on any thread count: numeric/synthesis/random_search.hpp); the CSV as `--out` writes it, region line included.
 Json random_op(const Json& in) {
   const auto criterion = parse_criterion(in.value("criterion", std::string("D")));
   if (!criterion) throw std::runtime_error("unknown criterion");
+  const std::vector<std::string> specs = in.value("regions", std::vector<std::string>{});
+  commands::Warnings warnings;
+  PositionSampler sampler;
+  std::string region;
+  if (!specs.empty()) {
+    const Region r = commands::resolve_region(specs, warnings);
+    if (!r.is_sphere()) {
+      sampler = region_sampler(r);
+      region = r.text();
+    }
+  }
   const RandomSearchResult r = random_search(in.at("positions").get<int>(), in.at("count").get<long long>(),
-                                             *criterion, in.value("seed", 1ULL), 1);
+                                             *criterion, in.value("seed", 1ULL), 1, sampler);
   if (!std::isfinite(r.best)) throw std::runtime_error("no random program with a finite value: draw more");
   std::ostringstream csv;
-  write_program_csv(csv, r.program);
-  return {{"best", r.best}, {"count", r.count}, {"program", commands::program_json(r.program)},
-          {"seconds", r.seconds}, {"csv", csv.str()}};
+  write_program_csv(csv, r.program, {}, {region.empty() ? std::vector<std::string>{} : specs, {}});
+  Json j{{"best", r.best}, {"count", r.count}, {"program", commands::program_json(r.program)}, {"seconds", r.seconds},
+         {"csv", csv.str()}, {"warnings", warnings_json(warnings)}};
+  if (!region.empty()) j["region"] = region;
+  return j;
 }
 
 // `scalcal calibrate --measurements NAME ARGS... --json --out cal.json`: the result's JSON and the calibration
