@@ -23,12 +23,12 @@ function call(request) {
   return reply;
 }
 
-// C's %g with 6 significant digits, as the CLI's text prints: 33123.9, 4.64e-05.
-function g6(x) {
+// C's %.Ng (6 digits: %g), as the CLI's text prints: 33123.9, 4.64e-05.
+function g6(x, digits = 6) {
   if (x === null || x === undefined || !isFinite(x)) return String(x);
   if (x === 0) return '0';
-  const e = Math.floor(Math.log10(Math.abs(Number(x.toPrecision(6)))));
-  let s = e < -4 || e >= 6 ? x.toExponential(5) : x.toPrecision(6);
+  const e = Math.floor(Math.log10(Math.abs(Number(x.toPrecision(digits)))));
+  let s = e < -4 || e >= digits ? x.toExponential(digits - 1) : x.toPrecision(digits);
   if (s.includes('e')) {
     let [m, p] = s.split('e');
     if (m.includes('.')) m = m.replace(/0+$/, '').replace(/\.$/, '');
@@ -102,8 +102,7 @@ function showProgram(evaluation, cli) {
   positions.replaceChildren();
   evaluation.csv.split('\n').filter((l) => /^[-0-9]/.test(l)).forEach((l, i) =>
     positions.appendChild(row([String(i + 1), ...l.split(',').map((v) => g6(Number(v)))], true)));
-  sphere.points = evaluation.program;
-  drawSphere();
+  drawSphere(designView, evaluation.program);
   $('design-out').hidden = false;
 }
 
@@ -130,32 +129,46 @@ function evaluateNamed() {
   showProgram(evaluation, `scalcal evaluate ${name} --region sphere`);
 }
 
-// A sphere turned by yaw and pitch, drawn orthographically: enough to see where the positions are.
-const sphere = { points: [], yaw: 0.6, pitch: 0.4 };
-function drawSphere() {
-  const cv = $('sphere'), ctx = cv.getContext('2d'), r = cv.width * 0.42, cx = cv.width / 2, cy = cv.height / 2;
+// A sphere turned by yaw and pitch, drawn orthographically: enough to see where the positions are. One view
+// for the design, one for the log's poses.
+const designView = { canvas: 'sphere', what: 'positions of the program', points: [], yaw: 0.6, pitch: 0.4 };
+const posesView = { canvas: 'poses', what: "poses found in the log", points: [], yaw: 0.6, pitch: 0.4 };
+function drawSphere(view, points) {
+  if (points) view.points = points;
+  const cv = $(view.canvas), ctx = cv.getContext('2d'), r = cv.width * 0.42, cx = cv.width / 2, cy = cv.height / 2;
   ctx.clearRect(0, 0, cv.width, cv.height);
   ctx.strokeStyle = '#666';
   ctx.beginPath(); ctx.arc(cx, cy, r, 0, 2 * Math.PI); ctx.stroke();
-  const [cy_, sy, cp, sp] = [Math.cos(sphere.yaw), Math.sin(sphere.yaw), Math.cos(sphere.pitch), Math.sin(sphere.pitch)];
-  const view = (p) => { const x = cy_ * p[0] - sy * p[1], y = sy * p[0] + cy_ * p[1];
-                        return [x, cp * p[2] - sp * y, sp * p[2] + cp * y]; };
-  for (const p of sphere.points) {
-    const [u, v, depth] = view(p);
+  const [c1, s1, c2, s2] = [Math.cos(view.yaw), Math.sin(view.yaw), Math.cos(view.pitch), Math.sin(view.pitch)];
+  const project = (p) => { const x = c1 * p[0] - s1 * p[1], y = s1 * p[0] + c1 * p[1];
+                           return [x, c2 * p[2] - s2 * y, s2 * p[2] + c2 * y]; };
+  for (const p of view.points) {
+    const [u, v, depth] = project(p);
     ctx.beginPath(); ctx.arc(cx + r * u, cy - r * v, 5, 0, 2 * Math.PI);
     ctx.fillStyle = '#0057b8'; ctx.strokeStyle = '#0057b8';
     depth >= 0 ? ctx.fill() : ctx.stroke();
   }
-  cv.setAttribute('aria-label', `${sphere.points.length} positions on the sphere, turned ` +
-                  `${Math.round(sphere.yaw * 57.3)} degrees about z and ${Math.round(sphere.pitch * 57.3)} about x; ` +
-                  'arrow keys turn it; the table of positions lists them');
+  cv.setAttribute('aria-label', `${view.points.length} ${view.what} on the sphere, turned ` +
+                  `${Math.round(view.yaw * 57.3)} degrees about z and ${Math.round(view.pitch * 57.3)} about x; ` +
+                  'arrow keys turn it');
 }
-function turnSphere(e) {
-  const step = { ArrowLeft: [-0.15, 0], ArrowRight: [0.15, 0], ArrowUp: [0, -0.15], ArrowDown: [0, 0.15] }[e.key];
-  if (!step) return;
-  e.preventDefault();
-  sphere.yaw += step[0]; sphere.pitch += step[1];
-  drawSphere();
+function turnable(view) {
+  const cv = $(view.canvas);
+  cv.addEventListener('keydown', (e) => {
+    const step = { ArrowLeft: [-0.15, 0], ArrowRight: [0.15, 0], ArrowUp: [0, -0.15], ArrowDown: [0, 0.15] }[e.key];
+    if (!step) return;
+    e.preventDefault();
+    view.yaw += step[0]; view.pitch += step[1];
+    drawSphere(view);
+  });
+  let drag = null;
+  cv.addEventListener('pointerdown', (e) => { drag = [e.clientX, e.clientY]; cv.setPointerCapture(e.pointerId); });
+  cv.addEventListener('pointermove', (e) => {
+    if (!drag) return;
+    view.yaw += (e.clientX - drag[0]) / 100; view.pitch += (e.clientY - drag[1]) / 100;
+    drag = [e.clientX, e.clientY]; drawSphere(view);
+  });
+  cv.addEventListener('pointerup', () => { drag = null; });
 }
 
 // ---- 2. Guide: the log ------------------------------------------------------------------------------------
@@ -194,15 +207,14 @@ function calibrate() {
     const [group, axis] = name.split('_');
     const stds = r[stdKeys[group]];
     const i = { x: 0, y: 1, z: 2, xy: 0, yz: 1, zx: 2 }[axis];
-    rows.appendChild(row([name, g6(value), stds && stds[i] !== null && i !== undefined ? g6(stds[i]) : '—'], true));
+    // Standard errors to 3 digits, as the CLI's text gives them.
+    rows.appendChild(row([name, g6(value), stds && stds[i] !== null && i !== undefined ? g6(stds[i], 3) : '—'], true));
   }
   const p = r.program;
   $('program-quality').textContent = `The poses as a program: N = ${p.positions}, D ${g6(p.D)}, A ${g6(p.A)}, ` +
     `E ${g6(p.E)}, S ${g6(p.S)}; efficiency on the ${p.region}: ` +
     ['D', 'A', 'E', 'S'].map((c) => `${c} ${g6(p.efficiency[c])}`).join(' ');
-  sphere.points = r.intervals.map((i) => i.direction);
-  drawSphere();
-  $('design-out').hidden = false;
+  drawSphere(posesView, r.intervals.map((i) => i.direction));
   drawResiduals(r.intervals);
   $('cal-out').hidden = false;
   $('export').disabled = false;
@@ -252,16 +264,8 @@ function wire() {
   const drop = $('drop');
   drop.addEventListener('dragover', (e) => e.preventDefault());
   drop.addEventListener('drop', (e) => { e.preventDefault(); if (e.dataTransfer.files[0]) readFile(e.dataTransfer.files[0]); });
-  const cv = $('sphere');
-  cv.addEventListener('keydown', turnSphere);
-  let drag = null;
-  cv.addEventListener('pointerdown', (e) => { drag = [e.clientX, e.clientY]; cv.setPointerCapture(e.pointerId); });
-  cv.addEventListener('pointermove', (e) => {
-    if (!drag) return;
-    sphere.yaw += (e.clientX - drag[0]) / 100; sphere.pitch += (e.clientY - drag[1]) / 100;
-    drag = [e.clientX, e.clientY]; drawSphere();
-  });
-  cv.addEventListener('pointerup', () => { drag = null; });
+  turnable(designView);
+  turnable(posesView);
 }
 
 function fill(select, items) {

@@ -32,10 +32,11 @@ void read(const char* text) {
   std::uint64_t bits;
   std::memcpy(&bits, &v, sizeof bits);
   // errc by name: its numeric values differ between glibc and musl (ERANGE 34 against 68).
-  const char* ec = r.ec == std::errc() ? "ok" : r.ec == std::errc::result_out_of_range ? "out of range"
-                   : r.ec == std::errc::invalid_argument ? "invalid" : "other";
-  std::printf("read '%s': %s, used %d, bits %016" PRIx64 "\n", text, ec,
-              static_cast<int>(r.ptr - text), bits);
+  const char* ec = r.ec == std::errc()                      ? "ok"
+                   : r.ec == std::errc::result_out_of_range ? "out of range"
+                   : r.ec == std::errc::invalid_argument    ? "invalid"
+                                                            : "other";
+  std::printf("read '%s': %s, used %d, bits %016" PRIx64 "\n", text, ec, static_cast<int>(r.ptr - text), bits);
 }
 
 }  // namespace
@@ -55,8 +56,28 @@ int main() {
   for (double v : {0.0, -0.0, 1.0, -1.0, 0.1, 1e21, 1e22, 1e-7, 123456789012345680.0, 5e-324, 1.7976931348623157e308,
                    0.5773502691896258, 100.0, 1e5, 1e16, 1e17, 12345678.0})
     write(v);
-  for (const char* t : {"0.1", "-2.5e-3", "1e400", "-1e400", "1e-400", "+1", " 1", "0x10", "inf", "-nan", "1.5abc", "",
-                        "-", ".5", "5.", "1e", "0.57735026918962584", "5e-324", "2.2250738585072011e-308", "-0x1p3", "infinity",
-                        "1e+308", "1.8e308"})
+  for (const char* t : {"0.1",
+                        "-2.5e-3",
+                        "1e400",
+                        "-1e400",
+                        "1e-400",
+                        "+1",
+                        " 1",
+                        "0x10",
+                        "inf",
+                        "-nan",
+                        "1.5abc",
+                        "",
+                        "-",
+                        ".5",
+                        "5.",
+                        "1e",
+                        "0.57735026918962584",
+                        "5e-324",
+                        "2.2250738585072011e-308",
+                        "-0x1p3",
+                        "infinity",
+                        "1e+308",
+                        "1.8e308"})
     read(t);
 }

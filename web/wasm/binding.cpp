@@ -6,27 +6,27 @@
 // is what `scalcal calibrate --json` / `export --json` print. evaluate and random are rebuilt from the numeric
 // calls commands/evaluate.cpp and commands/random.cpp make (those units also link region code that needs
 // Ipopt); the browser test compares every number with the CLI's, so a drift fails it.
+#include <sys/stat.h>
+#include <unistd.h>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <sstream>
 #include <string>
-#include <sys/stat.h>
-#include <unistd.h>
 
 #include "commands/calibrate.hpp"
 #include "commands/calibrate_json.hpp"
 #include "commands/evaluation_json.hpp"
 #include "commands/export.hpp"
 #include "commands/json.hpp"
+#include "commands/region_request.hpp"
 #include "commands/values.hpp"
 #include "numeric/criteria/registry.hpp"
 #include "numeric/export/export_format.hpp"
 #include "numeric/model/registry.hpp"
 #include "numeric/program/catalogue.hpp"
 #include "numeric/program/program_csv.hpp"
-#include "commands/region_request.hpp"
 #include "numeric/region/region_sampler.hpp"
 #include "numeric/synthesis/random_search.hpp"
 
@@ -80,7 +80,8 @@ Json evaluate_op(const Json& in) {
   if (!ev.full_rank()) throw std::runtime_error("rank-deficient program: rank " + std::to_string(ev.rank) + " of 9");
   Json j = commands::evaluation_json(ev, program);
   commands::Warnings warnings;
-  const std::vector<std::string> specs = in.contains("csv") ? program_region(in.at("csv")).specs : std::vector<std::string>{};
+  const std::vector<std::string> specs =
+      in.contains("csv") ? program_region(in.at("csv")).specs : std::vector<std::string>{};
   const Region region = commands::resolve_region(specs, warnings);
   j["region"] = region.text();
   Json e = Json::object(), l = Json::object();
@@ -95,8 +96,11 @@ Json evaluate_op(const Json& in) {
     const double ratio = limit.value / ev.value(c);
     const bool root = visit_criterion(c, [](auto C) { return kDeterminantOnly<decltype(C)>; });
     e[name] = root ? std::pow(ratio, 1.0 / ev.parameters) : ratio;
-    l[name] = {{"value", limit.value}, {"status", "proven"}, {"lower_bound", limit.value},
-               {"exact", std::string(limit.exact)}, {"theorem", std::string(limit.theorem)}};
+    l[name] = {{"value", limit.value},
+               {"status", "proven"},
+               {"lower_bound", limit.value},
+               {"exact", std::string(limit.exact)},
+               {"theorem", std::string(limit.theorem)}};
   }
   j["efficiency"] = e;
   j["limits"] = l;
@@ -123,13 +127,13 @@ Json random_op(const Json& in) {
       region = r.text();
     }
   }
-  const RandomSearchResult r = random_search(in.at("positions").get<int>(), in.at("count").get<long long>(),
-                                             *criterion, in.value("seed", 1ULL), 1, sampler);
+  const RandomSearchResult r = random_search(in.at("positions").get<int>(), in.at("count").get<long long>(), *criterion,
+                                             in.value("seed", 1ULL), 1, sampler);
   if (!std::isfinite(r.best)) throw std::runtime_error("no random program with a finite value: draw more");
   std::ostringstream csv;
   write_program_csv(csv, r.program, {}, {region.empty() ? std::vector<std::string>{} : specs, {}});
-  Json j{{"best", r.best}, {"count", r.count}, {"program", commands::program_json(r.program)}, {"seconds", r.seconds},
-         {"csv", csv.str()}, {"warnings", warnings_json(warnings)}};
+  Json j{{"best", r.best},       {"count", r.count}, {"program", commands::program_json(r.program)},
+         {"seconds", r.seconds}, {"csv", csv.str()}, {"warnings", warnings_json(warnings)}};
   if (!region.empty()) j["region"] = region;
   return j;
 }

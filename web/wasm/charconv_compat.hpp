@@ -8,9 +8,9 @@
 // to_chars gives the shortest text that reads back to the same double, fixed or scientific, whichever is
 // shorter, fixed on a tie. musl's strtod and printf are correctly rounded, so the digits are the host's.
 #pragma once
-#include <charconv>
 #include <cctype>
 #include <cerrno>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>

@@ -30,11 +30,13 @@ ProgramQuality program_quality(const CalibrateRequest& q, CalibrateResult& r, co
   if (!q.regions.empty())
     throw InputError("--region", 0,
                      "the web page judges a program on the sphere only: a region's limits need Ipopt; run `scalcal "
-                     "calibrate ... --region " + q.regions.front() + "` for the efficiency on it");
+                     "calibrate ... --region " +
+                         q.regions.front() + "` for the efficiency on it");
   if (q.suggest > 0)
     throw InputError("--suggest", 0,
                      "the web page suggests no positions (the augmentation runs Ipopt): use --suggest 0, or run "
-                     "`scalcal calibrate ... --suggest " + std::to_string(q.suggest) + "`");
+                     "`scalcal calibrate ... --suggest " +
+                         std::to_string(q.suggest) + "`");
   ProgramQuality out;
   const bool paper9 = r.model == ModelKind::paper9;
   out.region = "sphere";
