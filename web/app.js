@@ -93,11 +93,12 @@ function showProgram(evaluation, cli) {
   rows.replaceChildren();
   for (const c of ['D', 'A', 'E', 'S']) {
     const limit = evaluation.limits[c];
-    const onRegion = evaluation.region !== 'sphere';
-    rows.appendChild(row([c, g6(evaluation[c]), limit ? g6(limit.value) + ' (' + limit.exact + ')'
-                          : onRegion ? 'on ' + evaluation.region + ': scalcal evaluate design.csv' : 'none',
+    rows.appendChild(row([c, g6(evaluation[c]), limit ? g6(limit.value) + ' (' + limit.exact + ')' : '—',
                           limit ? g6(evaluation.efficiency[c]) : '—'], true));
   }
+  $('criteria-note').textContent = evaluation.region === 'sphere' ? '' :
+    `The program lies on ${evaluation.region}: the limits there need Ipopt, so the page gives no efficiency; ` +
+    '`scalcal evaluate design.csv` gives it.';
   const positions = $('position-rows');
   positions.replaceChildren();
   evaluation.csv.split('\n').filter((l) => /^[-0-9]/.test(l)).forEach((l, i) =>

@@ -10,9 +10,7 @@ done
 # Debian's emscripten runs its JS tools with `node` and finds acorn etc. in /usr/share/nodejs, which a node not
 # from Debian (nodesource's) does not search by itself.
 export NODE_PATH="/usr/share/nodejs${NODE_PATH:+:$NODE_PATH}"
-# Emscripten writes its cache of system libraries next to itself unless told: keep it in the build tree when
-# the system one is not writable.
-if [ ! -w /usr/share/emscripten/cache ]; then export EM_CACHE="$out/em-cache"; fi
+# (Debian ships emscripten's system libraries prebuilt, in a frozen cache: nothing is built into it.)
 mkdir -p "$out/cmake" "$out/page"
 emcmake cmake -S "$here" -B "$out/cmake" -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
 nice ninja -C "$out/cmake" -j "${WEB_JOBS:-2}"

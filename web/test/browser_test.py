@@ -181,6 +181,17 @@ def export_all(d, cmp):
     return outcomes
 
 
+def phone(d, cmp):
+    """The filled page on a phone's width (390 CSS pixels): nothing may stick out sideways."""
+    d.set_window_size(390, 844)
+    time.sleep(0.5)
+    wide = d.execute_script("return [document.documentElement.scrollWidth, window.innerWidth]")
+    cmp.texts += 1
+    if wide[0] > wide[1]:
+        cmp.fail(f"on a phone's width the page is {wide[0]} pixels wide in a {wide[1]}-pixel window")
+    d.save_screenshot(os.path.join(WORK, "phone.png"))
+
+
 def main():
     os.makedirs(WORK, exist_ok=True)
     for n in ("design.csv", "cal.json"):
@@ -191,14 +202,17 @@ def main():
     try:
         d.get("file://" + os.path.join(PAGE, "index.html"))
         WebDriverWait(d, 60).until(lambda d: d.execute_script("return window.scalcalPage && window.scalcalPage.ready"))
+        t_load = d.execute_script("return window.scalcalPage.timings.load")
         catalogue(d, cmp)
         design(d, cmp, [])
         t_design = design(d, cmp, CAP40)
         t_cal, _ = calibrate(d, cmp)
         n = export_all(d, cmp)
+        phone(d, cmp)
     finally:
         d.quit()
     print(cmp.report())
+    print(f"browser test: the core loaded and listed its programs and formats in {t_load:.2f} s")
     print(f"browser test: every registered format exported twice: {n['written']} written, the same bytes as the CLI's; "
           f"{n['refused']} refused with the CLI's message")
     size = sum(len(gzip.compress(open(os.path.join(PAGE, f), "rb").read(), 9)) for f in os.listdir(PAGE))
