@@ -176,7 +176,7 @@ function turnable(view) {
 function useLog(name, text) {
   page.log = { name, text };
   const rows = text.split('\n').filter((l) => l.trim() && !l.startsWith('#')).length;
-  $('log-info').textContent = `${name}: ${rows} rows read. Calibrate it below.`;
+  $('log-info').textContent = `${name}: ${rows} lines read. Calibrate it below.`;
 }
 function readFile(file) {
   const reader = new FileReader();
@@ -188,17 +188,17 @@ function readFile(file) {
 const stdKeys = { bias: 'bias_std', scale: 'scale_deviation_std', nonorth: 'nonorthogonality_std' };
 function calibrate() {
   if (!page.log) throw new Error('no log: choose, drop or paste one first');
-  const magnitude = $('magnitude').value.trim();
+  const magnitude = $('magnitude').value.trim(), rate = $('rate').value.trim();
+  const args = [['--magnitude', magnitude]].concat(rate ? [['--rate', rate]] : [], [['--suggest', '0']]);
   const t0 = performance.now();
-  const reply = call({ op: 'calibrate', name: page.log.name, log: page.log.text,
-                       args: [['--magnitude', magnitude], ['--suggest', '0']] });
+  const reply = call({ op: 'calibrate', name: page.log.name, log: page.log.text, args });
   page.timings.calibrate = (performance.now() - t0) / 1000;
   const r = reply.result;
   page.results.calibrate = r;
   showWarnings('calibrate', reply.warnings);
   page.calibrationFile = reply.calibration_file;
   $('cal-cli').textContent = `scalcal calibrate --measurements ${page.log.name} --magnitude ${magnitude} ` +
-                             '--suggest 0 --out cal.json';
+                             `${rate ? '--rate ' + rate + ' ' : ''}--suggest 0 --out cal.json`;
   $('cal-summary').textContent = `model ${r.model}: ${r.positions} positions, ${r.samples} samples, ` +
     `${r.dof} degrees of freedom, ${r.iterations} iterations, converged ${r.converged ? 'yes' : 'no'}; ` +
     `residual rms ${g6(r.residual_rms)}, noise ${g6(r.noise)}`;
@@ -215,8 +215,16 @@ function calibrate() {
   $('program-quality').textContent = `The poses as a program: N = ${p.positions}, D ${g6(p.D)}, A ${g6(p.A)}, ` +
     `E ${g6(p.E)}, S ${g6(p.S)}; efficiency on the ${p.region}: ` +
     ['D', 'A', 'E', 'S'].map((c) => `${c} ${g6(p.efficiency[c])}`).join(' ');
-  drawSphere(posesView, r.intervals.map((i) => i.direction));
-  drawResiduals(r.intervals);
+  // A tumbling log (a magnetometer turned by hand) has no still poses: every sample is fitted.
+  const poses = r.intervals.length > 0;
+  $('poses').hidden = $('residuals').hidden = !poses;
+  if (poses) {
+    drawSphere(posesView, r.intervals.map((i) => i.direction));
+    drawResiduals(r.intervals);
+  }
+  $('tumbling').textContent = r.tumbling ? `A log turned continuously: every sample fitted (${r.tumbling.samples_used} ` +
+    `used); the directions cover ${g6(100 * r.tumbling.covered_share, 3)} % of the sphere, the largest gap ` +
+    `${g6(r.tumbling.largest_gap_deg, 3)} degrees wide.` : '';
   $('cal-out').hidden = false;
   $('export').disabled = false;
 }
