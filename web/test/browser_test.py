@@ -14,6 +14,7 @@ import time
 from selenium import webdriver
 from selenium.webdriver.chrome.service import Service
 from selenium.webdriver.common.by import By
+from selenium.webdriver.common.keys import Keys
 from selenium.webdriver.support.ui import Select, WebDriverWait
 
 from compare import Comparison
@@ -190,6 +191,37 @@ def export_all(d, cmp):
     return outcomes
 
 
+def keyboard_and_labels(d, cmp):
+    """Every control has a name a screen reader reads (a label, aria-label or text; canvases role=img with a
+    label), and the keyboard alone designs a program and turns the sphere."""
+    unnamed = d.execute_script("""
+        const out = [];
+        for (const e of document.querySelectorAll('input, select, textarea, button, canvas')) {
+          const named = e.tagName === 'BUTTON' ? e.textContent.trim() !== ''
+            : e.tagName === 'CANVAS' ? e.getAttribute('role') === 'img' && !!e.getAttribute('aria-label')
+            : e.labels.length > 0 || !!e.getAttribute('aria-label');
+          if (!named) out.push(e.tagName + '#' + e.id);
+        }
+        return out;""")
+    cmp.texts += 1
+    if unnamed:
+        cmp.fail(f"controls without an accessible name: {unnamed}")
+    e = d.find_element(By.ID, "positions")
+    e.send_keys(Keys.CONTROL, "a")
+    e.send_keys("12", Keys.ENTER)  # Enter in a field submits its form, as in any form
+    wait_status(d, "Design")
+    n = d.execute_script("return window.scalcalPage.results.random.program.length")
+    cmp.texts += 1
+    if n != 12:
+        cmp.fail(f"the keyboard's design has {n} positions, not 12")
+    sphere = d.find_element(By.ID, "sphere")
+    before = sphere.get_attribute("aria-label")
+    sphere.send_keys(Keys.ARROW_RIGHT)
+    cmp.texts += 1
+    if sphere.get_attribute("aria-label") == before:
+        cmp.fail("the arrow keys do not turn the sphere")
+
+
 def phone(d, cmp):
     """The filled page on a phone's width (390 CSS pixels): nothing may stick out sideways."""
     d.set_window_size(390, 844)
@@ -212,6 +244,7 @@ def main():
         d.get("file://" + os.path.join(PAGE, "index.html"))
         WebDriverWait(d, 60).until(lambda d: d.execute_script("return window.scalcalPage && window.scalcalPage.ready"))
         t_load = d.execute_script("return window.scalcalPage.timings.load")
+        keyboard_and_labels(d, cmp)
         catalogue(d, cmp)
         design(d, cmp, [])
         t_design = design(d, cmp, CAP40)
