@@ -165,6 +165,7 @@ def export_all(d, cmp):
     its nominal gain 413.7 per m/s^2) and --force, so the firmware formats are written too."""
     formats = d.execute_script("return window.scalcalPage.formats")
     outcomes = {"written": 0, "refused": 0}
+    last = None  # the CLI's text of the last format written
     for scale, force in (("", False), ("1/4057g", True)):
         e = d.find_element(By.ID, "raw-scale")
         e.clear()
@@ -184,10 +185,15 @@ def export_all(d, cmp):
                 text = d.execute_script("return window.scalcalPage.results.export.text") if not error else error
                 cmp.same_text(what, ref.stdout, text)
                 outcomes["written"] += 1
+                last = ref.stdout
             else:
                 outcomes["refused"] += 1
                 message = ref.stderr.strip().splitlines()[-1].removeprefix("scalcal export: ")
                 cmp.same_text(what + " (refused)", message, error.removeprefix("Export failed: "))
+    # The last file as the page hands it over (a download), byte for byte the CLI's output.
+    name = d.execute_script("return window.scalcalPage.exportFile.name")
+    d.find_element(By.ID, "download-export").click()
+    cmp.same_text(f"downloaded {name}", last, downloaded(name))
     return outcomes
 
 
