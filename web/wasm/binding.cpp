@@ -4,7 +4,7 @@
 // Each op runs the CLI's own code where it builds without Ipopt: calibrate and export parse the CLI's options
 // with the CLI's option tables (commands/*_table) and run commands::calibrate / export_calibration, whose JSON
 // is what `scalcal calibrate --json` / `export --json` print. evaluate and random are rebuilt from the numeric
-// calls commands/evaluate.cpp and commands/random.cpp make (those units also link region code that needs
+// calls commands/design/evaluate.cpp and commands/design/random.cpp make (those units also link region code that needs
 // Ipopt); the browser test compares every number with the CLI's, so a drift fails it.
 #include <sys/stat.h>
 #include <unistd.h>
@@ -15,13 +15,13 @@
 #include <sstream>
 #include <string>
 
-#include "commands/calibrate.hpp"
-#include "commands/calibrate_json.hpp"
-#include "commands/evaluation_json.hpp"
-#include "commands/export.hpp"
-#include "commands/json.hpp"
-#include "commands/region_request.hpp"
-#include "commands/values.hpp"
+#include "commands/calibration/calibrate.hpp"
+#include "commands/calibration/calibrate_json.hpp"
+#include "commands/core/evaluation_json.hpp"
+#include "commands/bench/export.hpp"
+#include "commands/core/json.hpp"
+#include "commands/core/region_request.hpp"
+#include "commands/core/values.hpp"
 #include "numeric/criteria/registry.hpp"
 #include "numeric/export/export_format.hpp"
 #include "numeric/model/registry.hpp"

@@ -1,5 +1,5 @@
-// web/wasm/program_quality_sphere.cpp: the web build's program_quality() (declared in commands/calibrate.hpp),
-// standing in for commands/calibrate_program.cpp, which cannot be linked here: its region limits and the
+// web/wasm/program_quality_sphere.cpp: the web build's program_quality() (declared in commands/calibration/calibrate.hpp),
+// standing in for commands/calibration/calibrate_program.cpp, which cannot be linked here: its region limits and the
 // positions it suggests adding run Ipopt (numeric/region/augment, region_limit).
 //
 // What is kept, line for line with calibrate_program.cpp's sphere case: the measured program evaluated under
@@ -10,7 +10,7 @@
 #include <cmath>
 #include <string>
 
-#include "commands/calibrate.hpp"
+#include "commands/calibration/calibrate.hpp"
 #include "numeric/criteria/registry.hpp"
 #include "numeric/io/input_error.hpp"
 
