@@ -15,10 +15,10 @@
 #include <sstream>
 #include <string>
 
+#include "commands/bench/export.hpp"
 #include "commands/calibration/calibrate.hpp"
 #include "commands/calibration/calibrate_json.hpp"
 #include "commands/core/evaluation_json.hpp"
-#include "commands/bench/export.hpp"
 #include "commands/core/json.hpp"
 #include "commands/core/region_request.hpp"
 #include "commands/core/values.hpp"

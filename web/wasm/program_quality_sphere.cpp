@@ -1,6 +1,6 @@
-// web/wasm/program_quality_sphere.cpp: the web build's program_quality() (declared in commands/calibration/calibrate.hpp),
-// standing in for commands/calibration/calibrate_program.cpp, which cannot be linked here: its region limits and the
-// positions it suggests adding run Ipopt (numeric/region/augment, region_limit).
+// web/wasm/program_quality_sphere.cpp: the web build's program_quality() (declared in
+// commands/calibration/calibrate.hpp), standing in for commands/calibration/calibrate_program.cpp, which cannot be
+// linked here: its region limits and the positions it suggests adding run Ipopt (numeric/region/augment, region_limit).
 //
 // What is kept, line for line with calibrate_program.cpp's sphere case: the measured program evaluated under
 // the chosen model, and each criterion's efficiency against the proven sphere limit (paper9) or the model's
