@@ -134,6 +134,11 @@ TEST(ThermalCalibration, RampRehearsalsCalibrateToTheirTruth) {
       run_cli({"simulate", "--program", "dodecahedral-12", "--ramp", "1", "--log", scratch("x.csv"), "--noise", "1e-3"})
           .status,
       2);
+  // A ramp too slow for the rehearsal's 2e7 samples is the options' fault: exit 2 naming them, not an internal error.
+  const CliResult slow = run_cli({"simulate", "--program", "dodecahedral-12", "--model", "paper9+T2", "--temperature",
+                                  "-20..60", "--ramp", "0.0001", "--log", scratch("x.csv"), "--noise", "1e-3"});
+  EXPECT_EQ(slow.status, 2);
+  EXPECT_NE(slow.err.find("--ramp"), std::string::npos) << slow.err;
 }
 
 // plot --log draws a thermal calibration's poses: the raw log with the poses shaded, and each pose's residual
