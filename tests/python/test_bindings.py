@@ -278,3 +278,38 @@ def test_stubs_state_what_the_functions_take():
     assert "magnitude: str | float" in stubs
     assert "measurements: str | os.PathLike[str]" in stubs
     assert "= '0'" not in stubs
+
+
+def test_thermal_workflow_is_the_cli_s(tmp_path):
+    # Issue 53 end to end in both front ends: the product program, its plan with soaks, a rehearsal, the thermal
+    # calibration, its correction at each row's temperature and the autopilots' thermal parameters.
+    program = tmp_path / "thermal.csv"
+    cli("optimize", "--model", "paper9+bias:T3", "--temperature", "-20..60", "--criterion", "D", "--positions", "48",
+        "--seed", "1", "--out", str(program))
+    same(scalcal.plan(program=str(program), bench="gimbal:x,y", soak=20),
+         cli_json("plan", str(program), "--bench", "gimbal:x,y", "--soak", "20"))
+    log = tmp_path / "oven.csv"
+    cli("simulate", "--program", str(program), "--model", "paper9+bias:T3", "--temperature", "-20..60", "--log", str(log),
+        "--noise", "1e-3", "--size", "3e-3", "--seed", "7", "--rate", "50")
+    args = ("--measurements", str(log), "--model", "paper9+bias:T3", "--magnitude", "1", "--instrument", "accel",
+            "--temperature", "-20..60")
+    cal = cli_calibration(tmp_path, *args)
+    c = scalcal.calibrate(measurements=str(log), model="paper9+bias:T3", magnitude=1, instrument="accel",
+                          temperature="-20..60")
+    assert plain(c)["parameters"] == cal["parameters"]
+    cal_path = tmp_path / "cli_cal.json"
+    same(scalcal.correct(calibration=str(cal_path), measurements=str(log)),
+         cli_json_correct(cal_path, log))
+    for fmt in ("px4", "ardupilot"):
+        same(scalcal.export(str(cal_path), format=fmt), cli_json("export", str(cal_path), "--format", fmt))
+
+
+def cli_json_correct(cal, log):
+    """correct has no --json: its CSV read back as the module's columns."""
+    lines = cli("correct", "--calibration", str(cal), "--measurements", str(log)).stdout.splitlines()
+    head = lines[0].split(",")
+    cols = {h: [] for h in head}
+    for line in lines[1:]:
+        for h, v in zip(head, line.split(",")):
+            cols[h].append(float(v))
+    return cols
