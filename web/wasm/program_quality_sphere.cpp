@@ -38,7 +38,7 @@ ProgramQuality program_quality(const CalibrateRequest& q, CalibrateResult& r, co
                      "`scalcal calibrate ... --suggest " +
                          std::to_string(q.suggest) + "`");
   ProgramQuality out;
-  const bool paper9 = r.model == ModelKind::paper9;
+  const bool paper9 = model_supports(r.model, ModelCapability::criteria_native);
   out.region = "sphere";
   const Program measured{r.fit.directions};
   const int P = model_parameters(r.model);
