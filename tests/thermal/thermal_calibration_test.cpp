@@ -11,6 +11,7 @@
 
 #include "numeric/program/catalogue.hpp"
 #include "tests/common/run_cli.hpp"
+#include "tests/thermal/thermal_programs.hpp"
 
 namespace scalcal {
 namespace {
@@ -19,65 +20,24 @@ using testing::run_cli;
 
 std::string scratch(const std::string& name) { return ::testing::TempDir() + "thermal_" + name; }
 
-// The dodecahedron's 12 face normals at each of the given set-points, in the oven's order.
 std::string write_program(const std::vector<double>& setpoints, const std::string& name) {
-  const std::string path = scratch(name);
-  std::ofstream out(path);
-  out << "x,y,z,t_c\n";
-  const Program p = *named_program("dodecahedral-12");
-  for (double t : setpoints)
-    for (const auto& e : p.positions) out << e(0) << "," << e(1) << "," << e(2) << "," << t << "\n";
-  return path;
+  return testing::write_thermal_program(setpoints, scratch(name));
 }
 
 TEST(ThermalCalibration, RehearsalsCalibrateToTheirTruth) {
   const std::string program = write_program({-10, 20, 50}, "program.csv");
   std::vector<double> z;
-  for (int seed = 1; seed <= 20; ++seed) {
-    const std::string log = scratch("log.csv"), truth = scratch("truth.json");
-    const CliResult s = run_cli({"simulate",
-                                 "--program",
-                                 program,
-                                 "--model",
-                                 "paper9+T2",
-                                 "--temperature",
-                                 "-10..50",
-                                 "--log",
-                                 log,
-                                 "--truth",
-                                 truth,
-                                 "--noise",
-                                 "1e-3",
-                                 "--size",
-                                 "3e-3",
-                                 "--seed",
-                                 std::to_string(seed),
-                                 "--rate",
-                                 "50",
-                                 "--dwell",
-                                 "4"});
-    ASSERT_EQ(s.status, 0) << s.err;
-    const CliResult c = run_cli({"calibrate", "--measurements", log, "--model", "paper9+T2", "--magnitude", "1",
-                                 "--temperature", "-10..50", "--json"});
-    ASSERT_EQ(c.status, 0) << c.err;
-    const auto fit = nlohmann::json::parse(c.out);
-    std::ifstream in(truth);
-    const auto t = nlohmann::json::parse(in);
-    ASSERT_EQ(fit["poses"].size(), 36u) << "seed " << seed;
-    for (const auto& [name, p] : fit["parameters"].items()) {
-      const double est = p["value"].get<double>(), se = p["standard_error"].get<double>();
-      z.push_back((est - t["parameters"][name].get<double>()) / se);
-    }
-  }
-  double sum = 0;
+  for (int seed = 1; seed <= 20; ++seed)
+    EXPECT_EQ(
+        testing::standardised_errors({"simulate", "--program", program, "--model", "paper9+T2", "--temperature",
+                                      "-10..50", "--noise", "1e-3", "--size", "3e-3", "--rate", "50", "--dwell", "4"},
+                                     "paper9+T2", "-10..50", seed, scratch("setpoints"), z),
+        36u)
+        << "seed " << seed;
   int beyond = 0;
-  for (double v : z) {
-    sum += v * v;
-    beyond += std::abs(v) > 3;
-  }
-  const double rms = std::sqrt(sum / static_cast<double>(z.size()));
-  EXPECT_GT(rms, 0.7);
-  EXPECT_LT(rms, 1.3);
+  for (double v : z) beyond += std::abs(v) > 3;
+  EXPECT_GT(testing::rms(z), 0.7);
+  EXPECT_LT(testing::rms(z), 1.3);
   EXPECT_LE(beyond, static_cast<int>(0.01 * static_cast<double>(z.size())) + 1) << z.size() << " errors";
 }
 
@@ -85,45 +45,15 @@ TEST(ThermalCalibration, RehearsalsCalibrateToTheirTruth) {
 // and over (about 227 poses of 5 s at 20 Hz); 10 seeds, 270 standardised errors.
 TEST(ThermalCalibration, RampRehearsalsCalibrateToTheirTruth) {
   std::vector<double> z;
-  for (int seed = 1; seed <= 10; ++seed) {
-    const std::string log = scratch("ramp_log.csv"), truth = scratch("ramp_truth.json");
-    const CliResult s = run_cli({"simulate",
-                                 "--program",
-                                 "dodecahedral-12",
-                                 "--model",
-                                 "paper9+T2",
-                                 "--temperature",
-                                 "-10..50",
-                                 "--ramp",
-                                 "2",
-                                 "--log",
-                                 log,
-                                 "--truth",
-                                 truth,
-                                 "--noise",
-                                 "1e-3",
-                                 "--size",
-                                 "3e-3",
-                                 "--seed",
-                                 std::to_string(seed),
-                                 "--rate",
-                                 "20"});
-    ASSERT_EQ(s.status, 0) << s.err;
-    const CliResult c = run_cli({"calibrate", "--measurements", log, "--model", "paper9+T2", "--magnitude", "1",
-                                 "--temperature", "-10..50", "--json"});
-    ASSERT_EQ(c.status, 0) << c.err;
-    const auto fit = nlohmann::json::parse(c.out);
-    std::ifstream in(truth);
-    const auto t = nlohmann::json::parse(in);
-    EXPECT_GT(fit["poses"].size(), 200u) << "seed " << seed;
-    for (const auto& [name, p] : fit["parameters"].items())
-      z.push_back((p["value"].get<double>() - t["parameters"][name].get<double>()) / p["standard_error"].get<double>());
-  }
-  double sum = 0;
-  for (double v : z) sum += v * v;
-  const double rms = std::sqrt(sum / static_cast<double>(z.size()));
-  EXPECT_GT(rms, 0.7);
-  EXPECT_LT(rms, 1.3);
+  for (int seed = 1; seed <= 10; ++seed)
+    EXPECT_GT(testing::standardised_errors(
+                  {"simulate", "--program", "dodecahedral-12", "--model", "paper9+T2", "--temperature", "-10..50",
+                   "--ramp", "2", "--noise", "1e-3", "--size", "3e-3", "--rate", "20"},
+                  "paper9+T2", "-10..50", seed, scratch("ramp"), z),
+              200u)
+        << "seed " << seed;
+  EXPECT_GT(testing::rms(z), 0.7);
+  EXPECT_LT(testing::rms(z), 1.3);
   // The ramp sets the temperatures: a program with its own is refused, and so is a ramp without a thermal model.
   const std::string program = write_program({0, 40}, "ramp_program.csv");
   EXPECT_EQ(run_cli({"simulate", "--program", program, "--model", "paper9+T1", "--temperature", "0..40", "--ramp", "1",

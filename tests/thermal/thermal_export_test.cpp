@@ -18,6 +18,7 @@
 #include "numeric/program/catalogue.hpp"
 #include "tests/common/export_text.hpp"
 #include "tests/common/run_cli.hpp"
+#include "tests/thermal/thermal_programs.hpp"
 
 namespace scalcal {
 namespace {
@@ -29,13 +30,7 @@ constexpr double kStandardGravity = 9.80665;  // m/s^2 per g (CGPM 1901)
 std::string scratch(const std::string& name) { return ::testing::TempDir() + "thermal_export_" + name; }
 
 std::string write_program(const std::vector<double>& setpoints, const std::string& name) {
-  const std::string path = scratch(name);
-  std::ofstream out(path);
-  out << "x,y,z,t_c\n";
-  const Program p = *named_program("dodecahedral-12");
-  for (double t : setpoints)
-    for (const auto& e : p.positions) out << e(0) << "," << e(1) << "," << e(2) << "," << t << "\n";
-  return path;
+  return testing::write_thermal_program(setpoints, scratch(name));
 }
 
 // A rehearsal of `model` over the set-points, calibrated in g; returns the calibration file.
