@@ -330,10 +330,4 @@ LimitStatement limit_statement(CriterionKind c, const Region& region) {
 
 double limit_value(CriterionKind c, const Region& region) { return limit_statement(c, region).value; }
 
-double efficiency(CriterionKind c, double limit, double value, int parameters) {
-  const double e = limit / value;
-  return visit_criterion(
-      c, [e, parameters](auto C) { return kDeterminantOnly<decltype(C)> ? std::pow(e, 1.0 / parameters) : e; });
-}
-
 }  // namespace scalcal

@@ -6,6 +6,7 @@
 #include <optional>
 #include <string_view>
 #include <vector>
+#include "numeric/criteria/efficiency.hpp"
 
 #include "numeric/criteria/registry.hpp"
 #include "numeric/region/region.hpp"
@@ -62,8 +63,6 @@ struct LimitStatement {
 };
 LimitStatement limit_statement(CriterionKind c, const Region& region);
 double limit_value(CriterionKind c, const Region& region);
-// limit / value, D as (limit / value)^(1/P) so that every efficiency reads as the fraction of the
-// ideal measurement effort.
-double efficiency(CriterionKind c, double limit, double value, int parameters = Paper9Model::kParameters);
+// efficiency(): numeric/criteria/efficiency.hpp (included above).
 
 }  // namespace scalcal

@@ -22,6 +22,7 @@
 #include "commands/core/json.hpp"
 #include "commands/core/region_request.hpp"
 #include "commands/core/values.hpp"
+#include "numeric/criteria/efficiency.hpp"
 #include "numeric/criteria/registry.hpp"
 #include "numeric/export/export_format.hpp"
 #include "numeric/model/registry.hpp"
@@ -71,7 +72,7 @@ Program program_of(const Json& in) {
 }
 
 // `scalcal evaluate PROGRAM --region sphere --json`: the criteria, and each one's efficiency against the
-// proven sphere limit (numeric/region/region_limit.cpp's efficiency(): limit / value, D as its 9th root). A
+// proven sphere limit (numeric/criteria/efficiency.hpp: limit / value, D as its 9th root). A
 // program file whose region line is not the sphere gets its criteria only: the limits on a region need Ipopt
 // (and GiNaC for the closed forms on caps), so `scalcal evaluate design.csv` gives that efficiency.
 Json evaluate_op(const Json& in) {
@@ -93,9 +94,7 @@ Json evaluate_op(const Json& in) {
       continue;
     }
     const auto limit = criterion_limit(c);
-    const double ratio = limit.value / ev.value(c);
-    const bool root = visit_criterion(c, [](auto C) { return kDeterminantOnly<decltype(C)>; });
-    e[name] = root ? std::pow(ratio, 1.0 / ev.parameters) : ratio;
+    e[name] = efficiency(c, limit.value, ev.value(c), ev.parameters);
     l[name] = {{"value", limit.value},
                {"status", "proven"},
                {"lower_bound", limit.value},

@@ -11,21 +11,11 @@
 #include <string>
 
 #include "commands/calibration/calibrate.hpp"
+#include "numeric/criteria/efficiency.hpp"
 #include "numeric/criteria/registry.hpp"
 #include "numeric/io/input_error.hpp"
 
 namespace scalcal::commands {
-namespace {
-
-// numeric/region/region_limit.cpp's efficiency(): limit / value, D as its P-th root (that file needs Ipopt).
-double sphere_efficiency(CriterionKind c, double limit, double value, int parameters) {
-  const double e = limit / value;
-  return visit_criterion(
-      c, [e, parameters](auto C) { return kDeterminantOnly<decltype(C)> ? std::pow(e, 1.0 / parameters) : e; });
-}
-
-}  // namespace
-
 ProgramQuality program_quality(const CalibrateRequest& q, CalibrateResult& r, const Progress&) {
   if (!q.regions.empty())
     throw InputError("--region", 0,
@@ -51,7 +41,7 @@ ProgramQuality program_quality(const CalibrateRequest& q, CalibrateResult& r, co
     } else if (const auto stated = stated_limit(r.model, criterion_name(c))) {
       limit = stated->value;
     }
-    out.efficiency.push_back(std::isfinite(limit) && std::isfinite(v) ? sphere_efficiency(c, limit, v, P) : NAN);
+    out.efficiency.push_back(std::isfinite(limit) && std::isfinite(v) ? efficiency(c, limit, v, P) : NAN);
   }
   return out;
 }
