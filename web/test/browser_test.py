@@ -282,7 +282,7 @@ def guide(d, cmp, log, magnitude):
     field = d.find_element(By.ID, "guide-magnitude")
     field.clear()
     field.send_keys(magnitude)
-    summary = None
+    summary, compared, times = None, 0, []
     for criterion, speed in ((0, "1"), (1, "60"), (2, "10"), (3, "60")):
         Select(d.find_element(By.ID, "guide-criterion")).select_by_value(str(criterion))
         Select(d.find_element(By.ID, "guide-speed")).select_by_value(speed)
@@ -296,12 +296,15 @@ def guide(d, cmp, log, magnitude):
             continue
         mine = page["results"]["guide"]
         frames = page["guideFrames"]
+        times.append(f"{len(frames)} frames of {speed} s in {page['timings']['guide']:.2f} s")
         if criterion == 0:
             live(cmp, ref, frames)
         want = dict(expected)
         if criterion in nexts:
             want["next"], want["after"] = nexts[criterion]
-        cmp.json(f"guide {'DAES'[criterion]} at {speed} s per frame", want, mine)
+        before = cmp.numbers
+        cmp.json(f"guide {'DAES'[criterion]} at {speed} s per frame", want, mine, source="host_run")
+        compared += cmp.numbers - before
         if criterion in nexts:
             said = d.find_element(By.ID, "guide-next").text
             xyz = ", ".join("%.3g" % v for v in mine["next_direction"])
@@ -310,7 +313,7 @@ def guide(d, cmp, log, magnitude):
             d.save_screenshot(os.path.join(WORK, "guide.png"))
             summary = (mine["poses"], (mine["efficiency"] or [None])[0], mine["next"], page["timings"]["guide"],
                        len(frames))
-    return summary
+    return summary + (compared, times) if summary else None
 
 
 def main():
@@ -349,7 +352,7 @@ def main():
           f"{n['refused']} refused with the CLI's message")
     if g:
         print(f"browser test: the Guide on {os.path.basename(LOG)}: {g[0]} poses, D-efficiency {g[1]:.6g}, next pose "
-              f"{g[2]} of the 26, as embedded/'s host_run; {g[4]} frames of 1 s of samples in {g[3]:.2f} s")
+              f"{g[2]} of the 26, as embedded/'s host_run ({g[5]} numbers over four runs; {', '.join(g[6])})")
     size = sum(len(gzip.compress(open(os.path.join(PAGE, f), "rb").read(), 9)) for f in os.listdir(PAGE))
     print(f"page {size} bytes compressed, design {t_design:.2f} s, calibrate {t_cal:.2f} s")
     return 1 if cmp.failures else 0
