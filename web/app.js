@@ -149,9 +149,15 @@ function drawSphere(view, points) {
     ctx.fillStyle = '#0057b8'; ctx.strokeStyle = '#0057b8';
     depth >= 0 ? ctx.fill() : ctx.stroke();
   }
+  if (view.next) {  // the Guide's next pose: a red ring, dashed when behind
+    const [u, v, depth] = project(view.next);
+    ctx.strokeStyle = '#c00000'; ctx.lineWidth = 3; ctx.setLineDash(depth >= 0 ? [] : [4, 3]);
+    ctx.beginPath(); ctx.arc(cx + r * u, cy - r * v, 10, 0, 2 * Math.PI); ctx.stroke();
+    ctx.lineWidth = 1; ctx.setLineDash([]);
+  }
   cv.setAttribute('aria-label', `${view.points.length} ${view.what} on the sphere, turned ` +
                   `${Math.round(view.yaw * 57.3)} degrees about z and ${Math.round(view.pitch * 57.3)} about x; ` +
-                  'arrow keys turn it');
+                  'arrow keys turn it' + (view.next ? '; the ring is the next pose' : ''));
 }
 function turnable(view) {
   const cv = $(view.canvas);
@@ -182,6 +188,123 @@ function readFile(file) {
   const reader = new FileReader();
   reader.onload = () => useLog(file.name, reader.result);
   reader.readAsText(file);
+}
+
+// ---- 2b. Guide: embedded/'s streaming detector, fit and guidance (web/wasm/guide.c) ----------------------
+const guideView = { canvas: 'guide-sphere', what: 'poses found so far', points: [], next: null, yaw: 0.6, pitch: 0.4 };
+const guide = { running: false, stop: false };
+const streamStates = ['no noise floor yet', 'moving', 'still: a pose is being summed'];
+// Rows "t ix iy iz" (spaces, commas or semicolons); a header or a short line is skipped.
+function samplesOf(text) {
+  const t = [], x = [];
+  for (const line of text.split('\n')) {
+    if (!line.trim() || line.startsWith('#')) continue;
+    const f = line.trim().split(/[\s,;]+/).map(Number);
+    if (f.length < 4 || isNaN(f[0])) continue;
+    t.push(f[0]); x.push(f[1], f[2], f[3]);
+  }
+  return { t, x };
+}
+function guideStart(t) {
+  const m = $('guide-magnitude').value.trim(), given = Number($('guide-rate').value);
+  const magnitude = m === 'auto' ? 0 : Number(m);
+  if (!(magnitude > 0) && m !== 'auto') throw new Error(`|I| must be a positive number or auto, not "${m}"`);
+  // The log's mean rate, as embedded/tests/host_run.c takes it.
+  const rate = given > 0 ? given : 1 / ((t[t.length - 1] - t[0]) / (t.length - 1));
+  if (!(rate > 0) || !isFinite(rate)) throw new Error('no sample rate: give one, or at least two rows with times');
+  if (core._scalcal_guide_start(rate, magnitude) !== 0) throw new Error('the detector refused the rate ' + rate);
+  guide.rate = rate;
+  return rate;
+}
+function guidePush(x, from, to) {  // samples from..to-1 of the interleaved array x
+  const n = to - from;
+  if (n <= 0) return;
+  const p = core._malloc(24 * n);
+  core.HEAPF64.set(x.slice(3 * from, 3 * to), p >> 3);
+  core._scalcal_guide_push(p, n);
+  core._free(p);
+}
+const fixedFields = 16;
+function guideShow() {
+  const criterion = Number($('guide-criterion').value), p = core._scalcal_guide_report(criterion) >> 3;
+  const h = core.HEAPF64, n = h[p];
+  const r = { poses: n, state: h[p + 1], samples: h[p + 2], fit_status: h[p + 3], model: h[p + 4],
+              efficiency: Array.from(h.subarray(p + 5, p + 9)), next: h[p + 9],
+              next_direction: Array.from(h.subarray(p + 10, p + 13)), after: h[p + 13], floor: h[p + 14],
+              directions: [] };
+  for (let i = 0; i < n; ++i) r.directions.push(Array.from(h.subarray(p + fixedFields + 3 * i, p + fixedFields + 3 * i + 3)));
+  guideView.next = r.next >= 0 ? r.next_direction : null;
+  drawSphere(guideView, r.directions);
+  const name = 'DAES'[criterion], fitted = r.fit_status === 0;
+  $('guide-state').textContent = `${r.samples} samples, ${n} poses; the stream: ${streamStates[r.state]}; ` +
+    (fitted ? `fitted (model with ${r.model} parameters).` : 'not fitted yet: directions through a rough offset.');
+  $('guide-efficiency').textContent = isFinite(r.efficiency[criterion])
+    ? `Efficiency against the sphere's proven limit: ${name} ${g6(r.efficiency[criterion], 3)} ` +
+      `(D ${g6(r.efficiency[0], 3)}, A ${g6(r.efficiency[1], 3)}, E ${g6(r.efficiency[2], 3)}, S ${g6(r.efficiency[3], 3)}; 1 is the limit).`
+    : 'Efficiency: not yet (the poses cannot identify the model).';
+  const next = r.next >= 0 ? `Turn to (${r.next_direction.map((v) => g6(v, 3)).join(', ')}) next.` : 'No next pose yet.';
+  if ($('guide-next').textContent !== next) $('guide-next').textContent = next;  // read out only when it changes
+  page.results.guide = r;
+  return r;
+}
+// The chosen log, fed in chunks of `speed` seconds of samples, one chunk per animation frame.
+function guideLog() {
+  if (!page.log) throw new Error('no log: choose, drop or paste one first');
+  if (guide.running) throw new Error('the Guide is running: stop it first');
+  const { t, x } = samplesOf(page.log.text);
+  const rate = guideStart(t), chunk = Math.max(1, Math.round(rate * Number($('guide-speed').value)));
+  const start = performance.now();
+  let at = 0;
+  guide.running = true; guide.stop = false; page.results.guide = null; page.guideDone = false;
+  page.guideFrames = [];  // [samples pushed, poses shown] after each frame, for the browser test
+  const step = () => {
+    const to = Math.min(t.length, at + chunk);
+    guidePush(x, at, to);
+    at = to;
+    if (at >= t.length || guide.stop) core._scalcal_guide_finish();
+    const r = guideShow();
+    page.guideFrames.push([r.samples, r.poses]);
+    if (at < t.length && !guide.stop) return requestAnimationFrame(step);
+    guide.running = false;
+    page.timings.guide = (performance.now() - start) / 1000;
+    page.guideDone = true;
+    $('status').textContent = `Guide: ${guide.stop ? 'stopped' : 'done'}.`;
+  };
+  $('status').textContent = 'Guide: reading the log…';
+  requestAnimationFrame(step);
+}
+// A board on a serial port (Chromium's Web Serial: only where navigator.serial exists; not tested in CI).
+async function guideSerial() {
+  const port = await navigator.serial.requestPort();
+  await port.open({ baudRate: 115200 });
+  const reader = port.readable.pipeThrough(new TextDecoderStream()).getReader();
+  let rest = '', head = null, shown = 0;
+  guide.running = true; guide.stop = false;
+  $('status').textContent = 'Guide: reading the board…';
+  try {
+    while (!guide.stop) {
+      const { value, done } = await reader.read();
+      if (done) break;
+      const lines = (rest + value).split('\n');
+      rest = lines.pop();
+      const { t, x } = samplesOf(lines.join('\n'));
+      if (!head) { head = { t: [], x: [] }; }
+      if (head.t !== null) {  // the first 100 rows give the rate when none is given
+        head.t.push(...t); head.x.push(...x);
+        if (head.t.length < 100) continue;
+        guideStart(head.t);
+        guidePush(head.x, 0, head.t.length);
+        head.t = null;
+      } else guidePush(x, 0, t.length);
+      if (performance.now() - shown > 250) { guideShow(); shown = performance.now(); }
+    }
+  } finally {
+    reader.cancel().catch(() => {});
+    await port.close().catch(() => {});
+    if (head && head.t === null) { core._scalcal_guide_finish(); guideShow(); }
+    guide.running = false;
+    $('status').textContent = 'Guide: the board is disconnected.';
+  }
 }
 
 // ---- 3. Calibrate -----------------------------------------------------------------------------------------
@@ -273,6 +396,13 @@ function wire() {
   const drop = $('drop');
   drop.addEventListener('dragover', (e) => e.preventDefault());
   drop.addEventListener('drop', (e) => { e.preventDefault(); if (e.dataTransfer.files[0]) readFile(e.dataTransfer.files[0]); });
+  $('guide-form').addEventListener('submit', (e) => { e.preventDefault(); run('Guide start', guideLog); });
+  $('guide-stop').addEventListener('click', () => { guide.stop = true; });
+  if ('serial' in navigator) {
+    $('guide-connect').hidden = false;
+    $('guide-connect').addEventListener('click', () => guideSerial().catch((e) => { $('error').textContent = String(e); }));
+  }
+  turnable(guideView);
   turnable(designView);
   turnable(posesView);
 }

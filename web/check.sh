@@ -10,7 +10,7 @@ log="${SCALCAL_WEB_LOG:-$root/../shared/data/xsens_acc.txt}"
 missing=()
 [ -x "$cli" ] || missing+=("the CLI at $cli (bash scripts/build.sh, or SCALCAL_CLI=...)")
 [ -f "$log" ] || missing+=("the log $log (../shared/data, or SCALCAL_WEB_LOG=...)")
-for p in /usr/bin/chromium /usr/bin/chromedriver /usr/bin/em++ /usr/bin/g++; do [ -x "$p" ] || missing+=("$p"); done
+for p in /usr/bin/chromium /usr/bin/chromedriver /usr/bin/em++ /usr/bin/g++ /usr/bin/gcc; do [ -x "$p" ] || missing+=("$p"); done
 /usr/bin/python3 -c "import selenium" 2>/dev/null || missing+=("python3-selenium")
 if [ ${#missing[@]} -gt 0 ]; then
   printf 'web/check.sh: missing: %s\n' "${missing[@]}" >&2
@@ -35,5 +35,10 @@ if ! cmp -s "$work/charconv_host.txt" "$work/charconv_wasm.txt"; then
   exit 1
 fi
 echo "web/check.sh: charconv shim: $(wc -l <"$work/charconv_host.txt") lines equal to libstdc++'s"
+# The Guide's reference: embedded/'s own host driver (tests/host_run.c) built in double as embedded/check.sh's
+# host_run_double (the page's build of the library is double too, web/CMakeLists.txt).
+emb="$root/embedded"
+gcc -std=c99 -O2 -ffp-contract=off -DSCALCAL_DOUBLE -I"$emb/include" -I"$emb/src" "$emb"/src/*.c \
+  "$emb/tests/log_reader.c" "$emb/tests/host_run.c" -lm -o "$work/host_run_double"
 # The Xsens log's gravity, from its publishers (../shared/data/README.md).
-cd "$here/test" && exec /usr/bin/python3 browser_test.py "$here/build/page" "$cli" "$log" 9.81744 "$work"
+cd "$here/test" && exec /usr/bin/python3 browser_test.py "$here/build/page" "$cli" "$log" 9.81744 "$work" "$work/host_run_double"

@@ -3,7 +3,8 @@
 # design, a real log, calibration and every export format, and compares every number with the CLI's for the same
 # inputs and seed. Exit 1 on any difference; the last line is check.sh's summary.
 #
-# usage: browser_test.py PAGE_DIR SCALCAL_CLI LOG MAGNITUDE WORK_DIR
+# usage: browser_test.py PAGE_DIR SCALCAL_CLI LOG MAGNITUDE WORK_DIR HOST_RUN
+# (HOST_RUN: embedded/tests/host_run.c built in double with gcc, the Guide's reference; check.sh builds it.)
 import gzip
 import json
 import os
@@ -19,7 +20,7 @@ from selenium.webdriver.support.ui import Select, WebDriverWait
 
 from compare import Comparison
 
-PAGE, CLI, LOG, MAGNITUDE, WORK = sys.argv[1:6]
+PAGE, CLI, LOG, MAGNITUDE, WORK, HOST_RUN = sys.argv[1:7]
 DESIGN = {"positions": "18", "criterion": "D", "count": "20000", "seed": "7"}
 # The issue's bench: a tilt table of 40 degrees on which the meter may be turned over (docs/bench.md).
 CAP40 = ["cap:40", "cap:40:0,0,-1"]
@@ -239,6 +240,82 @@ def phone(d, cmp):
     d.save_screenshot(os.path.join(WORK, "phone.png"))
 
 
+def host_run(log, magnitude):
+    """embedded/'s own host driver on the log (its streaming detector, fit and guidance): `key value...` lines."""
+    p = subprocess.run([HOST_RUN, log, "--detect", "--magnitude", magnitude], capture_output=True, text=True)
+    if p.returncode != 0:
+        sys.exit(f"browser test: host_run {log} failed ({p.returncode}): {p.stderr}")
+    out = {}
+    for line in p.stdout.splitlines():
+        key, *rest = line.split()
+        out.setdefault(key, []).append(rest)
+    return out
+
+
+def live(cmp, ref, frames):
+    """Poses appear as the samples arrive: after each frame, the poses shown are the host's poses that ended
+    before the samples pushed and no more, give or take the two windows the detector needs to close one."""
+    ends = sorted(int(p[2]) for p in ref["pose"])
+    window = int(ref["detector_window"][0][0])
+    for samples, poses in frames[:-1]:  # (the last frame also closes the pose being summed)
+        low = sum(e + 2 * window < samples for e in ends)
+        high = sum(e < samples for e in ends)
+        cmp.texts += 1
+        if not low <= poses <= high:
+            cmp.fail(f"guide: {poses} poses shown after {samples} samples, the host's end between {low} and {high}")
+            return
+
+
+def guide(d, cmp, log, magnitude):
+    """The chosen log through the Guide (the detector fed chunk by chunk, one chunk per animation frame), once
+    per criterion and at two speeds, against embedded/tests/host_run.c --detect on the same log (the whole log
+    pushed at once, then fitted): the poses, the fit's status and model, the four efficiencies against the
+    sphere's limit, and the next pose among the 26 with its criterion once added. Returns (poses, efficiency D,
+    the next pose by D, seconds, frames) of the run at 1 s per frame."""
+    ref = host_run(log, magnitude)
+    status = int(ref["status"][0][0])
+    expected = {"poses": int(ref["poses"][0][0]), "fit_status": status}
+    if status == 0:
+        expected["model"] = int(ref["model"][0][0])
+        expected["efficiency"] = [float(v) for v in ref["program_efficiency"][0]]
+    nexts = {int(c): (int(b), float(a)) for c, b, a in ref.get("next_pose", [])}
+    field = d.find_element(By.ID, "guide-magnitude")
+    field.clear()
+    field.send_keys(magnitude)
+    summary, compared, times = None, 0, []
+    for criterion, speed in ((0, "1"), (1, "60"), (2, "10"), (3, "60")):
+        Select(d.find_element(By.ID, "guide-criterion")).select_by_value(str(criterion))
+        Select(d.find_element(By.ID, "guide-speed")).select_by_value(speed)
+        d.execute_script("window.scalcalPage.guideDone = false")
+        d.find_element(By.ID, "guide-run").send_keys(Keys.ENTER)  # the keyboard alone starts it
+        WebDriverWait(d, 300).until(lambda d: d.execute_script("return window.scalcalPage.guideDone === true"))
+        page = d.execute_script("return window.scalcalPage")
+        err = d.find_element(By.ID, "error").text
+        if err:
+            cmp.fail(f"guide: the page says {err}")
+            continue
+        mine = page["results"]["guide"]
+        frames = page["guideFrames"]
+        times.append(f"{len(frames)} frames of {speed} s in {page['timings']['guide']:.2f} s")
+        if criterion == 0:
+            live(cmp, ref, frames)
+        want = dict(expected)
+        if criterion in nexts:
+            want["next"], want["after"] = nexts[criterion]
+        before = cmp.numbers
+        cmp.json(f"guide {'DAES'[criterion]} at {speed} s per frame", want, mine, source="host_run")
+        compared += cmp.numbers - before
+        if criterion in nexts:
+            said = d.find_element(By.ID, "guide-next").text
+            xyz = ", ".join("%.3g" % v for v in mine["next_direction"])
+            cmp.same_text("guide's spoken next pose", f"Turn to ({xyz}) next.", said)
+        if criterion == 0:
+            d.save_screenshot(os.path.join(WORK, "guide.png"))
+            summary = (mine["poses"], (mine["efficiency"] or [None])[0], mine["next"], page["timings"]["guide"],
+                       len(frames))
+    return summary + (compared, times) if summary else None
+
+
 def main():
     os.makedirs(WORK, exist_ok=True)
     for n in ("design.csv", "cal.json"):
@@ -264,6 +341,7 @@ def main():
             else:
                 print(f"browser test: {other} is not beside {LOG}: not calibrated")
         t_cal = calibrate(d, cmp, LOG, MAGNITUDE)
+        g = guide(d, cmp, LOG, MAGNITUDE)
         n = export_all(d, cmp)
         phone(d, cmp)
     finally:
@@ -272,6 +350,9 @@ def main():
     print(f"browser test: the core loaded and listed its programs and formats in {t_load:.2f} s")
     print(f"browser test: every registered format exported twice: {n['written']} written, the same bytes as the CLI's; "
           f"{n['refused']} refused with the CLI's message")
+    if g:
+        print(f"browser test: the Guide on {os.path.basename(LOG)}: {g[0]} poses, D-efficiency {g[1]:.6g}, next pose "
+              f"{g[2]} of the 26, as embedded/'s host_run ({g[5]} numbers over four runs; {', '.join(g[6])})")
     size = sum(len(gzip.compress(open(os.path.join(PAGE, f), "rb").read(), 9)) for f in os.listdir(PAGE))
     print(f"page {size} bytes compressed, design {t_design:.2f} s, calibrate {t_cal:.2f} s")
     return 1 if cmp.failures else 0

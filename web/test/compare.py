@@ -34,30 +34,30 @@ class Comparison:
         self.failures.append(what)
         print("DIFFERS:", what)
 
-    def json(self, what, ref, mine, skip=(), strings=False):
+    def json(self, what, ref, mine, skip=(), strings=False, source="CLI"):
         """Every number of the CLI's document `ref` must be in `mine` at the same path and agree; with strings,
-        every string too. Keys only the page has are allowed (its CSV text)."""
+        every string too. Keys only the page has are allowed (its CSV text). `source` names the reference."""
         got = dict(leaves(mine))
         for path, v in leaves(ref):
             if path in skip:
                 continue
             if path not in got:
-                self.fail(f"{what}{path}: the page has no value (CLI: {v!r})")
+                self.fail(f"{what}{path}: the page has no value ({source}: {v!r})")
             elif number(v):
                 self.numbers += 1
                 w = got[path]
                 if not number(w):
-                    self.fail(f"{what}{path}: CLI {v!r}, page {w!r}")
+                    self.fail(f"{what}{path}: {source} {v!r}, page {w!r}")
                 elif v == w:
                     self.exact += 1
                 elif abs(v - w) > self.relative * max(abs(v), abs(w)):
-                    self.fail(f"{what}{path}: CLI {v!r}, page {w!r}")
+                    self.fail(f"{what}{path}: {source} {v!r}, page {w!r}")
                 else:
                     self.close += 1
             elif strings or v is None or isinstance(v, bool):
                 self.texts += 1
                 if got[path] != v:
-                    self.fail(f"{what}{path}: CLI {v!r}, page {got[path]!r}")
+                    self.fail(f"{what}{path}: {source} {v!r}, page {got[path]!r}")
 
     def same_text(self, what, ref, mine):
         self.texts += 1
@@ -81,6 +81,6 @@ class Comparison:
                     self.fail(f"{tbody} {ref[0]} column {k}: shown {text}, CLI {g6(v)}")
 
     def report(self):
-        return (f"browser test: {self.numbers} numbers compared with the CLI, {self.exact} equal to the last bit, "
+        return (f"browser test: {self.numbers} numbers compared with the CLI (the Guide's with host_run), {self.exact} equal to the last bit, "
                 f"{self.close} within {self.relative:g} "
                 f"relative; {self.texts} strings, texts and shown cells; {len(self.failures)} differences")
