@@ -16,7 +16,8 @@ using testing::CliResult;
 using testing::run_cli;
 
 std::string circle_log() {
-  const std::string program = ::testing::TempDir() + "planar_circle.csv", log = ::testing::TempDir() + "planar_log.csv";
+  const std::string program = (testing::scratch_dir() / "planar_circle.csv").string(),
+                    log = (testing::scratch_dir() / "planar_log.csv").string();
   // The circle n . eta = 1/2 about n = (0.3, 0.4, sqrt(0.75)) normalised.
   const double n0[3] = {0.3, 0.4, std::sqrt(0.75)};
   const double nn = std::sqrt(n0[0] * n0[0] + n0[1] * n0[1] + n0[2] * n0[2]);

@@ -18,7 +18,7 @@ namespace {
 using testing::CliResult;
 using testing::run_cli;
 
-std::string scratch(const std::string& name) { return ::testing::TempDir() + "thermal_" + name; }
+std::string scratch(const std::string& name) { return (testing::scratch_dir() / ("thermal_" + name)).string(); }
 
 std::string write_program(const std::vector<double>& setpoints, const std::string& name) {
   return testing::write_thermal_program(setpoints, scratch(name));

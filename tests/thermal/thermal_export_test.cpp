@@ -27,7 +27,7 @@ using testing::run_cli;
 
 constexpr double kStandardGravity = 9.80665;  // m/s^2 per g (CGPM 1901)
 
-std::string scratch(const std::string& name) { return ::testing::TempDir() + "thermal_export_" + name; }
+std::string scratch(const std::string& name) { return (testing::scratch_dir() / ("thermal_export_" + name)).string(); }
 
 std::string write_program(const std::vector<double>& setpoints, const std::string& name) {
   return testing::write_thermal_program(setpoints, scratch(name));

@@ -19,7 +19,7 @@ namespace {
 using testing::CliResult;
 using testing::run_cli;
 
-std::string scratch(const std::string& name) { return ::testing::TempDir() + "thermal_plan_" + name; }
+std::string scratch(const std::string& name) { return (testing::scratch_dir() / ("thermal_plan_" + name)).string(); }
 
 // The dodecahedron's 12 normals at 60, -20 and 20 degC, the set-points interleaved row by row (not oven order).
 std::string interleaved_program() {

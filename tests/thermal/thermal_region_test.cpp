@@ -46,7 +46,7 @@ TEST(ThermalRegion, BiasOnlyModelsHaveNoRegionLimit) {
 }
 
 TEST(ThermalRegion, AProductProgramOnTheCapIsJudgedOnTheCap) {
-  const std::string program = ::testing::TempDir() + "thermal_region_cap.csv";
+  const std::string program = (testing::scratch_dir() / "thermal_region_cap.csv").string();
   const CliResult o = run_cli({"optimize", "--model", "paper9+T2", "--temperature", "-20..60", "--criterion", "D",
                                "--positions", "36", "--region", "cap:60", "--seed", "1", "--out", program});
   ASSERT_EQ(o.status, 0) << o.err;
