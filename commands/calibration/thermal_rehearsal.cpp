@@ -53,11 +53,8 @@ std::optional<ThermalRehearsalRequest> thermal_rehearsal_request(const Values& v
   q.size = q.drift = v.number("--size");
   q.seed = static_cast<std::uint64_t>(v.integer("--seed"));
   if (q.noise >= 1) throw UsageError("option --noise: must be below 1 |I| (noise as large as the measured vector)");
-  // The rehearsal's own bound (2e7 samples; numeric/thermal/thermal_rehearsal.cpp), said in the options' words.
-  const double per_row = q.dwell_s + 2 + 180.0 / 45;
-  const double seconds = q.ramp_c_per_min > 0 ? 60 * (q.range.high - q.range.low) / q.ramp_c_per_min + per_row
-                                              : static_cast<double>(q.program.size()) * per_row;
-  if (seconds * q.rate_hz > 2e7)
+  // The rehearsal's own bound (numeric/thermal/thermal_rehearsal.hpp), said in the options' words.
+  if (thermal_rehearsal_samples(q) > kMaxThermalRehearsalSamples)
     throw UsageError(q.ramp_c_per_min > 0 ? "--ramp, --temperature and --rate ask for more than 2e7 samples: a faster "
                                             "ramp, a narrower range or a lower rate"
                                           : "--rate x --dwell x rows asks for more than 2e7 samples");

@@ -128,14 +128,9 @@ std::optional<std::vector<Vec3>> layout_directions(const std::vector<PositionSam
     for (const auto& p : data) out.push_back(p.nominal->normalized());
     return out;
   }
-  std::vector<double> ratio;
   std::vector<Vec3> means;
-  for (const auto& p : data) {
-    means.push_back(p.mean());
-    ratio.push_back(means.back().norm() / magnitude);
-  }
-  std::nth_element(ratio.begin(), ratio.begin() + static_cast<std::ptrdiff_t>(ratio.size() / 2), ratio.end());
-  if (!magnitude_auto && std::abs(ratio[ratio.size() / 2] - 1) <= 0.1) {
+  for (const auto& p : data) means.push_back(p.mean());
+  if (!gain_estimated(data, magnitude, magnitude_auto, modulus)) {  // the data are in the field's units
     for (const Vec3& m : means) out.push_back(m.normalized());
     return out;
   }

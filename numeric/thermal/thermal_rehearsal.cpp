@@ -29,16 +29,20 @@ Eigen::Vector3d aside(const Eigen::Vector3d& a) {
 
 }  // namespace
 
+double thermal_rehearsal_samples(const ThermalRehearsalRequest& q) {
+  const double per_row = q.dwell_s + 2 + 180.0 / 45;  // a rest and the longest move, with a swing
+  const double seconds = q.ramp_c_per_min > 0 ? 60 * (q.range.high - q.range.low) / q.ramp_c_per_min + per_row
+                                              : static_cast<double>(q.program.size()) * per_row;
+  return seconds * q.rate_hz;
+}
+
 ThermalRehearsal rehearse_thermal(const ThermalRehearsalRequest& q) {
   if (!model_supports(q.model.base, ModelCapability::thermal_base))
     throw std::invalid_argument("a thermal rehearsal simulates paper9+Tk or paper9+bias:Tk (got " + q.model.name() +
                                 ")");
   if (!(q.rate_hz >= 1e-3 && q.rate_hz <= 1e6)) throw std::invalid_argument("the rate must be within 1e-3..1e6 Hz");
-  const double per_row = q.dwell_s + 2 + 180.0 / 45;  // a rest and the longest move, with a swing
   const bool ramp = q.ramp_c_per_min > 0;
-  const double seconds = ramp ? 60 * (q.range.high - q.range.low) / q.ramp_c_per_min + per_row
-                              : static_cast<double>(q.program.size()) * per_row;
-  if (seconds * q.rate_hz > 2e7)
+  if (thermal_rehearsal_samples(q) > kMaxThermalRehearsalSamples)
     throw std::invalid_argument(ramp ? "the ramp's log would have more than 2e7 samples: a faster ramp or a lower rate"
                                      : "the log would have more than 2e7 samples: lower --rate or --dwell");
   ThermalRehearsal r;

@@ -36,6 +36,11 @@ struct ThermalRehearsal {
   std::vector<int> row;  // 1-based program row of each sample, 0 while moving
 };
 
+// The most samples the rehearsal of `request` can write (a rest and the longest move per row, or the ramp's
+// duration and one more row), the bound rehearse_thermal() holds to 2e7.
+inline constexpr double kMaxThermalRehearsalSamples = 2e7;
+double thermal_rehearsal_samples(const ThermalRehearsalRequest& request);
+
 // Throws std::invalid_argument for a base other than paper9, a rate outside 1e-3..1e6 Hz or more than
 // 2e7 samples.
 ThermalRehearsal rehearse_thermal(const ThermalRehearsalRequest& request);
