@@ -245,7 +245,21 @@ void check_decimal_exponents(const std::string& key, const std::string& text) {
   }
 }
 
+// GiNaC's parser matches a call without arguments, sqrt(), to the function of any arity (its prototype
+// order treats 0 arguments as "unspecified") and then reads the missing first argument: a null pointer
+// (the fuzzer found it; GiNaC 1.8). An empty pair of parentheses is never an expression, so it is refused
+// before the parser sees it.
+void check_empty_calls(const std::string& key, const std::string& text) {
+  for (std::size_t at = text.find('('); at != std::string::npos; at = text.find('(', at + 1)) {
+    std::size_t next = at + 1;
+    while (next < text.size() && std::isspace(static_cast<unsigned char>(text[next]))) ++next;
+    if (next < text.size() && text[next] == ')')
+      throw InputError("--param", 0, key + "=" + display_name(text) + ": empty parentheses (a function needs its argument)");
+  }
+}
+
 void check_exponents(const std::string& key, const std::string& text) {
+  check_empty_calls(key, text);
   check_decimal_exponents(key, text);
   for (std::size_t at = text.find('^'); at != std::string::npos; at = text.find('^', at + 1)) {
     std::size_t b = text.find_first_not_of(" \t", at + 1);

@@ -188,6 +188,12 @@ std::vector<Case> files_written() {
                  [] { return std::string("family octahedral --param 'axes=factorial(100000)'"); },
                  E::error,
                  {"--param", "axes=factorial(100000)", "not an expression"}});
+  // GiNaC's parser matched sqrt() to sqrt of one argument and read the missing one: a null pointer
+  // (the CI's fuzzer found it in fuzz_family_params).
+  out.push_back({"FamilyEmptyCall",
+                 [] { return std::string("evaluate 'jig:cube@orientation=aa:1,2,3,sqrt( )'"); },
+                 E::error,
+                 {"orientation=aa:1,2,3,sqrt( )", "empty parentheses"}});
   // Rehearsal rates: a subnormal rate gave -nan time stamps, a tiny one 300-digit stamps that
   // overflowed the line buffer; a magnitude near the largest double, infinite outputs.
   const auto rehearsal = [](const std::string& options) {
