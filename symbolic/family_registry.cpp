@@ -254,7 +254,8 @@ void check_empty_calls(const std::string& key, const std::string& text) {
     std::size_t next = at + 1;
     while (next < text.size() && std::isspace(static_cast<unsigned char>(text[next]))) ++next;
     if (next < text.size() && text[next] == ')')
-      throw InputError("--param", 0, key + "=" + display_name(text) + ": empty parentheses (a function needs its argument)");
+      throw InputError("--param", 0,
+                       key + "=" + display_name(text) + ": empty parentheses (a function needs its argument)");
   }
 }
 

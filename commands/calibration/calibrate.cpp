@@ -218,6 +218,13 @@ void fit_every_sample(const CalibrateRequest& q, CalibrationInput& in, const Any
       t.disturbed.push_back(s);
     }
   }
+  // The final fit takes off the bias the single samples' noise gives it (noise_bias.hpp), estimated
+  // with the log's second-difference noise on every axis.
+  if (in.motion.noise.allFinite() && (in.motion.noise.array() > 0).all()) {
+    AnyUnitsOptions debiased = ao;
+    debiased.sample_noise = in.motion.noise.cwiseProduct(in.motion.noise).asDiagonal();
+    out.fit = calibrate_any_units(q.file, in.data, debiased);
+  }
   // Later rounds see the earlier stretches' neighbours as one run across the gap: overlapping
   // stretches are one.
   std::sort(t.disturbed.begin(), t.disturbed.end(),

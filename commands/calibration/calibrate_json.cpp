@@ -145,7 +145,10 @@ Json tumbling_json(const CalibrateResult& r) {
               {"gap_centre", triple(t.coverage.gap_centre)},
               {"noise", number_or_null(t.noise)},
               {"correlation_factor", number_or_null(t.correlation_factor)},
-              {"newey_west_lag", t.lag}};
+              {"newey_west_lag", t.lag},
+              {"noise_bias", Json{{"replicates", r.fit.noise_bias_replicates},
+                                  {"offset", triple(r.fit.offset_noise_bias)},
+                                  {"gain", triple(r.fit.gain_noise_bias)}}}};
 }
 
 void add_log(const CalibrateResult& r, Json& j) {

@@ -28,8 +28,9 @@ cells, every sample in one) is compared with the CLI's tumbling fit on the QMC58
 rehearsal of docs/magnetometer.md (seeded), without and with its two disturbances (three passes, each
 gated by the last): every parameter within one of the library's own standard errors of the CLI's
 (1.5 with the disturbances; it keeps 64 cells, not 6000-22743 samples: on the rehearsals the
-differences are the decimation's; on the QMC5883L log, 3.3 of the CLI's standard errors, mostly the
-CLI's bias under noise that is anisotropic once corrected: tests/anisotropic_noise.py), the noise-based standard errors within 12 % of the CLI's, float within
+differences are the decimation's; on the QMC5883L log, 3.2 of the CLI's standard errors: the CLI takes off
+the noise's bias, which is anisotropic once corrected, and the library's cells keep part of it:
+tests/anisotropic_noise.py), the noise-based standard errors within 12 % of the CLI's, float within
 0.01 of the CLI's standard errors of double.
 Usage: compare_cli.py SCALCAL HOST_RUN_DOUBLE HOST_RUN_FLOAT HOST_RUN_LONG DATA_DIR... ; prints a
 table and exits 1 when a check fails."""

@@ -104,6 +104,12 @@ void parameters(const CalibrateResult& r, std::ostream& t) {
   if (r.tumbling)
     t << " (the residuals' widened " << or_na(r.tumbling->correlation_factor, 3)
       << " times for their correlation in time: Newey-West over " << r.tumbling->lag << " samples)";
+  if (a.noise_bias_replicates > 0)
+    t << "\nnoise bias taken off (single samples' noise biases the fit by its square; estimated from "
+      << a.noise_bias_replicates << " simulated copies with the log's noise): offsets (file units) "
+      << or_na(a.offset_noise_bias(0), 3) << " " << or_na(a.offset_noise_bias(1), 3) << " "
+      << or_na(a.offset_noise_bias(2), 3) << ", gains " << or_na(a.gain_noise_bias(0), 3) << " "
+      << or_na(a.gain_noise_bias(1), 3) << " " << or_na(a.gain_noise_bias(2), 3) << " (in the gains' units)";
   if (a.chi_square)
     t << "; chi-square " << or_na(*a.chi_square, 4) << " for " << a.dof << " degrees of freedom (residuals "
       << or_na(std::sqrt(*a.chi_square / a.dof), 3) << " x the noise)";

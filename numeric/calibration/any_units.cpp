@@ -9,6 +9,7 @@
 #include <boost/math/distributions/chi_squared.hpp>
 
 #include "numeric/calibration/between_poses.hpp"
+#include "numeric/calibration/noise_bias.hpp"
 #include "numeric/criteria/identifiability.hpp"
 #include "numeric/criteria/model_evaluation.hpp"
 #include "numeric/io/input_error.hpp"
@@ -218,6 +219,19 @@ AnyUnitsCalibration calibrate_any_units(const std::string& file, const std::vect
   const ModelCalibration& r = out.estimate;
   out.linear = r.meter.cubic.isZero() && !has_meter_parameter(index, 9);
   compose(file, out);
+  if (!options.sample_noise.isZero()) {
+    const Mat3 S = out.started ? Mat3(out.start.matrix * options.sample_noise * out.start.matrix.transpose())
+                               : options.sample_noise;
+    const NoiseBias b = estimate_noise_bias(options.model, y, co, out.estimate, S, options.noise_bias_seed);
+    if (b.replicates > 0) {
+      const Vec3 offset = out.correction.offset, gain = out.gain;
+      remove_noise_bias(out.estimate, b, M);
+      compose(file, out);
+      out.noise_bias_replicates = b.replicates;
+      out.offset_noise_bias = offset - out.correction.offset;
+      out.gain_noise_bias = gain - out.gain;
+    }
+  }
 
   // The program measured, each position's residual, and the information at the estimate.
   const RowFunction row = visit_model(options.model, [](auto m) -> RowFunction { return &dynamic_row<decltype(m)>; });
@@ -238,6 +252,12 @@ AnyUnitsCalibration calibrate_any_units(const std::string& file, const std::vect
       const double z = J.back() * M * std::sqrt(static_cast<double>(p.samples.size())) / r.noise;
       chi += z * z;
     }
+  }
+  // With the noise bias taken off, the residuals are those of the estimate as it now stands.
+  if (out.noise_bias_replicates > 0) {
+    double ss = 0;
+    for (double j : J) ss += j * j;
+    out.estimate.residual_rms = std::sqrt(ss / n) * M;
   }
   const Eigen::MatrixXd K = info.ldlt().solve(Eigen::MatrixXd::Identity(P, P));
   out.dof = n - P;

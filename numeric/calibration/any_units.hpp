@@ -7,6 +7,7 @@
 // field's magnitude skip the start. Every standard error is given twice: predicted from the noise
 // within positions, and achieved from the residuals between positions; the larger is the one to use.
 #pragma once
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -26,6 +27,11 @@ struct AnyUnitsOptions {
   bool magnitude_auto = false;    // unknown field strength: the correction maps to unit modulus
   bool weight_by_samples = true;  // CalibrationOptions::weight_by_samples
   ModelKind model = ModelKind::paper9;
+  // One sample's noise covariance in file units (zero: none). Given, the fit's noise bias is
+  // estimated from simulated copies and taken off (noise_bias.hpp): for single-sample positions
+  // (a tumbling log), whose noise is not averaged away.
+  Mat3 sample_noise = Mat3::Zero();
+  std::uint64_t noise_bias_seed = 1;
 };
 
 struct PositionResidual {
@@ -47,6 +53,10 @@ struct AnyUnitsCalibration {
   Vec3 scale_deviation = Vec3::Zero();  // correction.scale / nominal_gain - 1
   Vec3 gain = Vec3::Ones();             // correction.scale: file units per physical unit (per field strength with auto)
   Vec3 gain_std = Vec3::Constant(NAN);  // its standard error (the larger of predicted and achieved); NaN for bias3
+  // The noise bias taken off (sample_noise given): the refits that estimated it (0: none taken off),
+  // and what it moved the offsets and the gains by, in file units (estimate before - after).
+  int noise_bias_replicates = 0;
+  Vec3 offset_noise_bias = Vec3::Zero(), gain_noise_bias = Vec3::Zero();
 
   // Standard errors of the model's parameters (model order) in the reported units: bias in file
   // units, scale deviation relative to the nominal gain, non-orthogonality in rad, cubic as c |I|.
