@@ -7,6 +7,7 @@
 
 #include "commands/core/region_request.hpp"
 #include "commands/core/usage_error.hpp"
+#include "commands/research/sweep_shards.hpp"
 #include "numeric/region/region_limit.hpp"
 #include "numeric/region/region_synthesis.hpp"
 
@@ -43,6 +44,28 @@ std::vector<CriterionKind> read_criteria_list(const std::string& s) {
   return out;
 }
 
+// The CLI's way of spreading a sweep over processes and time (a job array's tasks); Python's sweep
+// runs in one process and takes neither.
+Option shard_option() {
+  Option o = text_option("--shard", "I/N",
+                         "run only the tasks k with k mod N = I (tasks: criteria outer, N inner), from 0/N to "
+                         "N-1/N; needs --results");
+  o.why_bad = [](const std::string& s) -> std::string {
+    return read_shard(s) ? "" : "must be I/N with 0 <= I < N <= " + std::to_string(kMaxShards) + ", got '" + s + "'";
+  };
+  o.cli_only = true;
+  return o;
+}
+
+Option results_option() {
+  Option o = text_option("--results", "FILE",
+                         "keep each finished task as a line of FILE (its request on the first line); a run with "
+                         "the same FILE resumes where the last one stopped; `scalcal merge` joins the shards' files",
+                         "file path");
+  o.cli_only = true;
+  return o;
+}
+
 const CommandTable& sweep_table() {
   Option positions = text_option("--positions", "A..B", "N or a range A..B of N", "positions", "9..40");
   positions.why_bad = [](const std::string& s) -> std::string {
@@ -65,7 +88,8 @@ const CommandTable& sweep_table() {
       {positions, criteria, model_option(), region_option(), starts_option(), seed_option(), threads_option(),
        out_option("also write the results as CSV, one row per N and criterion"),
        json_option("print a JSON array, one object per N and criterion, instead of the table"),
-       flag_option("--no-timing", "leave out the seconds (output identical between runs)")}};
+       flag_option("--no-timing", "leave out the seconds (output identical between runs)"), shard_option(),
+       results_option()}};
   return table;
 }
 

@@ -63,7 +63,7 @@ class Sweep {
 };
 
 // --positions A..B --criteria LIST [--model NAME] [--region SPEC]... [--starts K] [--seed S] [--threads T]
-// [--out FILE] [--json] [--no-timing]
+// [--out FILE] [--json] [--no-timing] [--shard I/N] [--results FILE]
 const CommandTable& sweep_table();
 SweepRequest sweep_request(const Values& values);
 

@@ -6,14 +6,17 @@
 #include <cstdlib>
 #include <iostream>
 #include <optional>
+#include <sstream>
 
 #include <fmt/format.h>
 
 #include "commands/research/sweep.hpp"
+#include "commands/research/sweep_shards.hpp"
 #include "experiments/cli/command.hpp"
 #include "experiments/cli/json_output.hpp"
 #include "experiments/cli/mpi_ranks.hpp"
-#include "experiments/cli/output_file.hpp"
+#include "experiments/cli/result_appender.hpp"
+#include "experiments/cli/sweep_rows.hpp"
 
 namespace scalcal::cli {
 namespace {
@@ -21,86 +24,6 @@ namespace {
 using commands::Sweep;
 using commands::SweepRow;
 using commands::SweepTask;
-
-std::string program_cell(const Program& p) {
-  std::string s;
-  for (std::size_t i = 0; i < p.positions.size(); ++i)
-    s += fmt::format("{}{} {} {}", i ? ";" : "", p.positions[i](0), p.positions[i](1), p.positions[i](2));
-  return s;
-}
-
-// One task's result as JSON between ranks (doubles print with 17 digits, so rank 0 reads back the same bits).
-Json encode(std::size_t task, const SynthesisResult& r) {
-  return Json{{"task", task},   {"value", r.value},       {"starts", r.starts},   {"stopping", r.stopping},
-              {"hits", r.hits}, {"distinct", r.distinct}, {"seconds", r.seconds}, {"program", program_json(r.program)}};
-}
-
-SynthesisResult decode(const Json& j) {
-  SynthesisResult r;
-  r.value = j.at("value").get<double>();
-  r.starts = j.at("starts").get<int>();
-  r.stopping = j.at("stopping").get<std::string>();
-  r.hits = j.at("hits").get<int>();
-  r.distinct = j.at("distinct").get<int>();
-  r.seconds = j.at("seconds").get<double>();
-  for (const auto& p : j.at("program"))
-    r.program.positions.emplace_back(p.at(0).get<double>(), p.at(1).get<double>(), p.at(2).get<double>());
-  return r;
-}
-
-std::string number_or(const std::optional<double>& v, double scale, const char* format) {
-  return v ? fmt::format(fmt::runtime(format), scale / *v) : std::string("n/a");
-}
-
-// Shows and saves each row as it comes.
-class RowSink {
- public:
-  RowSink(const Sweep& sweep, const commands::Values& v)
-      : sweep_(sweep), json_(v.flag("--json")), timing_(!v.flag("--no-timing")) {
-    if (v.given("--out")) {
-      file_.emplace(v.text("--out"));
-      file_->stream() << "criterion,positions,value,limit,ratio,starts,hits,distinct," << (timing_ ? "seconds," : "")
-                      << "program\n";
-      file_->flush();  // an unwritable file fails now, not after hours of work
-    }
-    if (!json_)
-      std::cout << "crit   N            value        ratio   hits/starts  distinct" << (timing_ ? "  seconds" : "")
-                << "\n";
-  }
-
-  void add(const SweepRow& row) {
-    const SynthesisResult& r = row.result;
-    const std::string name(criterion_name(row.task.criterion));
-    if (sweep_.restricted() && progress_enabled() && announced_ != row.task.criterion)
-      std::cerr << "the " << name << " limit on " << sweep_.region()->text() << "\n";
-    announced_ = row.task.criterion;
-    if (json_)
-      all_.push_back(commands::to_json(sweep_, row, timing_));
-    else
-      std::cout << fmt::format("{:>4}{:>4}{:>17.10g}{:>13}{:>7}/{:<6}{:>9}", name, row.task.positions, r.value,
-                               number_or(row.limit, r.value, "{:.8g}"), r.hits, r.starts, r.distinct)
-                << (timing_ ? fmt::format("{:>9.3g}", r.seconds) : "") << std::endl;
-    if (file_) {
-      file_->stream() << fmt::format("{},{},{},{},{},{},{},{},", name, row.task.positions, r.value,
-                                     row.limit ? fmt::format("{}", *row.limit) : "",
-                                     number_or(row.limit, r.value, "{}"), r.starts, r.hits, r.distinct)
-                      << (timing_ ? fmt::format("{},", r.seconds) : "") << '"' << program_cell(r.program) << "\"\n";
-      file_->flush();
-    }
-  }
-
-  void close() {
-    if (file_) file_->close();
-    if (json_) print_json(all_);
-  }
-
- private:
-  const Sweep& sweep_;
-  bool json_, timing_;
-  std::optional<OutputFile> file_;
-  std::optional<CriterionKind> announced_;
-  Json all_ = Json::array();
-};
 
 SynthesisResult compute(const Sweep& sweep, const SweepTask& t, int threads) {
   // Fault injection for the test that a failing rank is reported (tests/mpi/sweep_ranks.sh).
@@ -111,51 +34,86 @@ SynthesisResult compute(const Sweep& sweep, const SweepTask& t, int threads) {
 }
 
 // Task k runs on rank k mod size; rank 0 gathers and shows them in task order, so the output is the
-// single-process run's. A task that throws is reported with its rank, never dropped silently.
+// single-process run's. A task that throws is reported with its rank, never dropped silently. Results
+// travel as the result file's lines (doubles with 17 digits: rank 0 reads back the same bits).
 int run_ranks(const Sweep& sweep, const Ranks& ranks, std::optional<RowSink>& sink) {
   const auto& tasks = sweep.tasks();
   const int threads = sweep.request().threads == 0 ? 1 : sweep.request().threads;  // ranks share the cores
-  Json mine = Json::array();
+  std::string mine;
   for (std::size_t k = ranks.rank(); k < tasks.size(); k += ranks.size()) {
     try {
-      mine.push_back(encode(k, compute(sweep, tasks[k], threads)));
+      mine += commands::result_line(sweep, k, compute(sweep, tasks[k], threads)) + "\n";
     } catch (const std::exception& e) {
-      mine.push_back(Json{{"task", k}, {"error", e.what()}});
+      mine += commands::error_line(sweep, k, e.what()) + "\n";
     }
     if (ranks.rank() == 0 && progress_enabled())
       std::cerr << "sweep: rank 0 finished " << criterion_name(tasks[k].criterion) << " N = " << tasks[k].positions
                 << "\n";
   }
-  const std::vector<std::string> texts = ranks.gather(json_text(mine));
+  const std::vector<std::string> texts = ranks.gather(mine);
   if (ranks.rank() != 0) return 0;
   std::vector<std::optional<SynthesisResult>> results(tasks.size());
   std::vector<std::string> failures;
-  for (std::size_t r = 0; r < texts.size(); ++r)
-    for (const Json& j : Json::parse(texts[r])) {
-      const std::size_t k = j.at("task").get<std::size_t>();
-      if (j.contains("error"))
-        failures.push_back(fmt::format("rank {} failed on {} N = {}: {}", r, criterion_name(tasks[k].criterion),
-                                       tasks[k].positions, j.at("error").get<std::string>()));
+  for (std::size_t r = 0; r < texts.size(); ++r) {
+    std::istringstream lines(texts[r]);
+    for (std::string line; std::getline(lines, line);) {
+      const commands::TaskLine t = commands::read_task_line(sweep, line);
+      if (t.result)
+        results[t.task] = t.result;
       else
-        results[k] = decode(j);
+        failures.push_back(fmt::format("rank {} failed on {} N = {}: {}", r, criterion_name(tasks[t.task].criterion),
+                                       tasks[t.task].positions, t.error));
     }
+  }
   for (std::size_t k = 0; k < tasks.size(); ++k)
     if (results[k]) sink->add(sweep.row(tasks[k], *results[k]));
   for (const auto& f : failures) std::cerr << "scalcal sweep: " << f << "\n";
   return failures.empty() ? 0 : 1;
 }
 
+// The tasks of one shard (all of them without --shard), each appended to the --results file as it
+// finishes; those the file already holds are shown from it, not run again (a killed run resumes).
+int run_shard(const Sweep& sweep, const commands::Values& v, RowSink& sink) {
+  const commands::Shard shard = v.given("--shard") ? *commands::read_shard(v.text("--shard")) : commands::Shard{};
+  std::optional<ResultAppender> results;
+  if (v.given("--results")) results.emplace(v.text("--results"), sweep);
+  int status = 0;
+  for (const std::size_t k : commands::shard_tasks(sweep, shard)) {
+    const SweepTask& t = sweep.tasks()[k];
+    if (results) {
+      if (const auto done = results->find(k)) {
+        sink.add(sweep.row(t, *done));
+        continue;
+      }
+    }
+    SynthesisResult r;
+    try {
+      r = compute(sweep, t, sweep.request().threads);
+    } catch (const std::runtime_error& e) {
+      if (!results) throw;
+      // A shard keeps what it finished; the failure is said and the next run of the shard retries it.
+      std::cerr << "scalcal sweep: " << criterion_name(t.criterion) << " N = " << t.positions << ": " << e.what()
+                << " (the results so far are in " << v.text("--results") << "; run again to resume)\n";
+      status = 1;
+      break;
+    }
+    if (results) results->append(commands::result_line(sweep, k, r));
+    sink.add(sweep.row(t, std::move(r)));
+  }
+  return status;
+}
+
 int run(const commands::Values& v) {
   const Sweep sweep(commands::sweep_request(v));
+  if (v.given("--shard") && !v.given("--results"))
+    throw UsageError("sweep: --shard needs --results FILE (the shard's results, for `scalcal merge`)");
   print_warnings("sweep", sweep.warnings());
   const Ranks& ranks = Ranks::world();
+  if (ranks.size() > 1 && (v.given("--shard") || v.given("--results")))
+    throw UsageError("sweep: --shard and --results are for single processes (an MPI run gathers on rank 0)");
   std::optional<RowSink> sink;
   if (ranks.rank() == 0) sink.emplace(sweep, v);
-  int status = 0;
-  if (ranks.size() == 1)
-    for (const SweepTask& t : sweep.tasks()) sink->add(sweep.row(t, compute(sweep, t, sweep.request().threads)));
-  else
-    status = run_ranks(sweep, ranks, sink);
+  const int status = ranks.size() == 1 ? run_shard(sweep, v, *sink) : run_ranks(sweep, ranks, sink);
   if (sink) sink->close();
   return status;
 }
