@@ -4,6 +4,7 @@
 # alternatives): single-threaded, as the multistart already runs one worker per core. groff-base checks the
 # man pages (ctest); clang-format checks the layout (ctest -L rules); pip, venv, setuptools and wheel are for `pip install .` (scripts/pip_check.sh). dpkg-dev (dpkg-shlibdeps) is for `cpack`'s Debian package (tests/package/deb_and_wheel.sh). emscripten, chromium,
 # chromium-driver and python3-selenium build the page at the bench and test it in a real browser (web/check.sh).
+# python3-jsonschema checks the requests' JSON Schemas (docs/schema/) independently of scalcal.
 set -euo pipefail
 packages=(cmake ninja-build g++ make pkg-config libeigen3-dev libboost-dev libginac-dev libcln-dev coinor-libipopt-dev
   gnuplot-nox libgtest-dev libbenchmark-dev libmpfr-dev libmpfi-dev libgmp-dev
@@ -12,7 +13,7 @@ packages=(cmake ninja-build g++ make pkg-config libeigen3-dev libboost-dev libgi
   clang libclang-rt-dev clang-format
   python3-numpy python3-scipy python3-dev python3-pytest pybind11-dev python3-pybind11
   groff-base python3-setuptools python3-wheel python3-pip python3-venv dpkg-dev
-  emscripten chromium chromium-driver python3-selenium)
+  emscripten chromium chromium-driver python3-selenium python3-jsonschema)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

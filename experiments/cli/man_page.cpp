@@ -99,6 +99,7 @@ std::string man_page(const commands::CommandTable& table, const std::string& ver
   page += ".SH DESCRIPTION\n" + roff("scalcal " + table.name + ": " + table.summary + ".") + "\n";
   page += ".SH OPTIONS\n";
   for (const Option& o : table.options) page += option_entry(o);
+  page += ".TP\n.BI \"" + roff("--request") + " \" \"FILE\"\n" + roff(request_help(table)) + ".\n";
   page += ".TP\n.BR \\-h \", \" \\-\\-help\nprint the options with their units and defaults, and exit\n";
   page += kExitStatus;
   page += ".SH SEE ALSO\n.BR scalcal (1)\n";

@@ -1,12 +1,18 @@
 // CLI11 options from an option table (table_options.hpp).
 #include "experiments/cli/table_options.hpp"
 
+#include <fstream>
 #include <map>
 #include <memory>
+#include <sstream>
 #include <string>
 #include <vector>
 
 #include <CLI/CLI.hpp>
+
+#include "commands/core/request_json.hpp"
+#include "commands/core/usage_error.hpp"
+#include "numeric/io/input_error.hpp"
 
 namespace scalcal::cli {
 namespace {
@@ -26,6 +32,24 @@ CLI::Validator table_check(const Option& o) {
   return CLI::Validator([o](std::string& s) { return o.check(s); }, "");
 }
 
+// The values of a --request file (commands/core/request_json.hpp); InputError for a file that cannot
+// be read or is not JSON.
+commands::Values read_request(const commands::CommandTable& table, const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, 0, "cannot be read");
+  std::stringstream text;
+  text << in.rdbuf();
+  commands::Json j;
+  try {
+    j = commands::Json::parse(text.str());
+  } catch (const std::exception& e) {
+    throw InputError(path, 0, "not JSON (" + std::string(e.what()) + ")");
+  }
+  commands::Values v(table);
+  commands::set_from_request(v, j, path);
+  return v;
+}
+
 }  // namespace
 
 std::string type_name(const Option& o) {
@@ -38,6 +62,11 @@ std::string type_name(const Option& o) {
     return names;
   }
   return "TEXT";
+}
+
+std::string request_help(const commands::CommandTable& table) {
+  return "read the request from FILE: a JSON object, keys the Python names (`scalcal schema " + table.name +
+         "`); options given on the command line too are refused (unit: file path; default: none)";
 }
 
 std::function<commands::Values()> add_table_options(CLI::App& app, const commands::CommandTable& table) {
@@ -55,16 +84,22 @@ std::function<commands::Values()> add_table_options(CLI::App& app, const command
                   ->check(table_check(o));
         break;
       default:
+        // Required is checked once the values are gathered: --request may give it.
         opt = app.add_option(o.name, store->text[o.name], o.help())->type_name(type_name(o))->transform(table_check(o));
-        if (o.required()) opt->required();
     }
     store->bound[o.name] = opt;
   }
+  auto request = std::make_shared<std::string>();
+  CLI::Option* request_option = app.add_option("--request", *request, request_help(table))->type_name("FILE");
   const commands::CommandTable* t = &table;
-  return [store, t] {
+  return [store, t, request, request_option] {
     commands::Values v(*t);
+    if (request_option->count() > 0) v = read_request(*t, *request);
     for (const Option& o : t->options) {
       if (store->bound[o.name]->count() == 0) continue;
+      if (v.given(o.name))
+        throw UsageError((o.kind == OptionKind::positional ? o.name : "option " + o.name) +
+                         " is given both on the command line and in " + *request);
       if (o.kind == OptionKind::flag)
         v.set_flag(o.name, store->flags[o.name]);
       else if (o.kind == OptionKind::repeated)
@@ -72,6 +107,12 @@ std::function<commands::Values()> add_table_options(CLI::App& app, const command
       else
         v.set(o.name, store->text[o.name]);
     }
+    for (const Option& o : t->options)
+      if (o.required() && !v.given(o.name))
+        throw UsageError((o.kind == OptionKind::positional ? o.name : "option " + o.name) + " is required" +
+                         (request_option->count() > 0
+                              ? " (on the command line, or as key '" + o.python_name() + "' in " + *request + ")"
+                              : ""));
     return v;
   };
 }

@@ -20,4 +20,7 @@ std::string type_name(const commands::Option& option);
 
 std::function<commands::Values()> add_table_options(CLI::App& app, const commands::CommandTable& table);
 
+// The help line of --request FILE, which every table command takes (the man page shows it too).
+std::string request_help(const commands::CommandTable& table);
+
 }  // namespace scalcal::cli
