@@ -33,14 +33,16 @@ SynthesisResult compute(const Sweep& sweep, const SweepTask& t, int threads) {
   return sweep.compute(t, threads);
 }
 
-// Task k runs on rank k mod size; rank 0 gathers and shows them in task order, so the output is the
+// Each rank takes the next task as it frees up (a shared counter: a slow synthesis no longer holds up
+// the tasks dealt after it); rank 0 gathers and shows them in task order, so the output is the
 // single-process run's. A task that throws is reported with its rank, never dropped silently. Results
 // travel as the result file's lines (doubles with 17 digits: rank 0 reads back the same bits).
-int run_ranks(const Sweep& sweep, const Ranks& ranks, std::optional<RowSink>& sink) {
+int run_ranks(const Sweep& sweep, Ranks& ranks, std::optional<RowSink>& sink) {
   const auto& tasks = sweep.tasks();
   const int threads = sweep.request().threads == 0 ? 1 : sweep.request().threads;  // ranks share the cores
   std::string mine;
-  for (std::size_t k = ranks.rank(); k < tasks.size(); k += ranks.size()) {
+  ranks.open_counter();
+  for (auto k = static_cast<std::size_t>(ranks.next()); k < tasks.size(); k = static_cast<std::size_t>(ranks.next())) {
     try {
       mine += commands::result_line(sweep, k, compute(sweep, tasks[k], threads)) + "\n";
     } catch (const std::exception& e) {
@@ -50,6 +52,7 @@ int run_ranks(const Sweep& sweep, const Ranks& ranks, std::optional<RowSink>& si
       std::cerr << "sweep: rank 0 finished " << criterion_name(tasks[k].criterion) << " N = " << tasks[k].positions
                 << "\n";
   }
+  ranks.close_counter();
   const std::vector<std::string> texts = ranks.gather(mine);
   if (ranks.rank() != 0) return 0;
   std::vector<std::optional<SynthesisResult>> results(tasks.size());
@@ -108,7 +111,7 @@ int run(const commands::Values& v) {
   if (v.given("--shard") && !v.given("--results"))
     throw UsageError("sweep: --shard needs --results FILE (the shard's results, for `scalcal merge`)");
   print_warnings("sweep", sweep.warnings());
-  const Ranks& ranks = Ranks::world();
+  Ranks& ranks = Ranks::world();
   if (ranks.size() > 1 && (v.given("--shard") || v.given("--results")))
     throw UsageError("sweep: --shard and --results are for single processes (an MPI run gathers on rank 0)");
   std::optional<RowSink> sink;

@@ -66,4 +66,47 @@ std::vector<std::string> Ranks::gather(const std::string& text) const {
 #endif
 }
 
+void Ranks::open_counter() {
+  local_next_ = 0;
+#ifdef SCALCAL_HAVE_MPI
+  if (size_ == 1) return;
+  MPI_Win* win = new MPI_Win;
+  PMPI_Win_allocate(rank_ == 0 ? static_cast<MPI_Aint>(sizeof(long long)) : 0, sizeof(long long), MPI_INFO_NULL,
+                    MPI_COMM_WORLD, &counter_, win);
+  if (rank_ == 0) {
+    PMPI_Win_lock(MPI_LOCK_EXCLUSIVE, 0, 0, *win);
+    *counter_ = 0;
+    PMPI_Win_unlock(0, *win);
+  }
+  window_ = win;
+  PMPI_Barrier(MPI_COMM_WORLD);  // no rank takes a value before rank 0 set the counter
+#endif
+}
+
+long long Ranks::next() const {
+#ifdef SCALCAL_HAVE_MPI
+  if (window_) {
+    const MPI_Win win = *static_cast<MPI_Win*>(window_);
+    const long long one = 1;
+    long long value = 0;
+    PMPI_Win_lock(MPI_LOCK_SHARED, 0, 0, win);
+    PMPI_Fetch_and_op(&one, &value, MPI_LONG_LONG, 0, 0, MPI_SUM, win);
+    PMPI_Win_unlock(0, win);
+    return value;
+  }
+#endif
+  return local_next_++;
+}
+
+void Ranks::close_counter() {
+#ifdef SCALCAL_HAVE_MPI
+  if (!window_) return;
+  MPI_Win* win = static_cast<MPI_Win*>(window_);
+  PMPI_Win_free(win);
+  delete win;
+  window_ = nullptr;
+  counter_ = nullptr;
+#endif
+}
+
 }  // namespace scalcal::cli
