@@ -76,10 +76,8 @@ int run_ranks(const Sweep& sweep, Ranks& ranks, std::optional<RowSink>& sink) {
 
 // The tasks of one shard (all of them without --shard), each appended to the --results file as it
 // finishes; those the file already holds are shown from it, not run again (a killed run resumes).
-int run_shard(const Sweep& sweep, const commands::Values& v, RowSink& sink) {
+int run_shard(const Sweep& sweep, const commands::Values& v, std::optional<ResultAppender>& results, RowSink& sink) {
   const commands::Shard shard = v.given("--shard") ? *commands::read_shard(v.text("--shard")) : commands::Shard{};
-  std::optional<ResultAppender> results;
-  if (v.given("--results")) results.emplace(v.text("--results"), sweep);
   int status = 0;
   for (const std::size_t k : commands::shard_tasks(sweep, shard)) {
     const SweepTask& t = sweep.tasks()[k];
@@ -115,8 +113,11 @@ int run(const commands::Values& v) {
   if (ranks.size() > 1 && (v.given("--shard") || v.given("--results")))
     throw UsageError("sweep: --shard and --results are for single processes (an MPI run gathers on rank 0)");
   std::optional<RowSink> sink;
+  // The result file first: one of another sweep, or unwritable, is said before any row is shown.
+  std::optional<ResultAppender> results;
+  if (v.given("--results")) results.emplace(v.text("--results"), sweep);
   if (ranks.rank() == 0) sink.emplace(sweep, v);
-  const int status = ranks.size() == 1 ? run_shard(sweep, v, *sink) : run_ranks(sweep, ranks, sink);
+  const int status = ranks.size() == 1 ? run_shard(sweep, v, results, *sink) : run_ranks(sweep, ranks, sink);
   if (sink) sink->close();
   return status;
 }
