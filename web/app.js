@@ -105,6 +105,9 @@ function showProgram(evaluation, cli) {
     positions.appendChild(row([String(i + 1), ...l.split(',').map((v) => g6(Number(v)))], true)));
   drawSphere(designView, evaluation.program);
   $('design-out').hidden = false;
+  $('plan-part').hidden = false;
+  $('plan-out').hidden = true;  // a plan of the program before is gone with it
+  page.results.plan = null;
 }
 
 function design() {
@@ -117,6 +120,7 @@ function design() {
   page.timings.design = (performance.now() - t0) / 1000;
   page.results.random = best;
   page.design = best.csv;
+  page.planSource = { name: 'design.csv', request: { csv: best.csv, name: 'design.csv' } };
   const region = regions.map((r) => ` --region ${r}`).join('');
   showProgram(evaluation, `scalcal random --positions ${q.positions} --count ${q.count} --seed ${q.seed} ` +
               `--criterion ${q.criterion}${region} --out design.csv\nscalcal evaluate design.csv` +
@@ -127,6 +131,7 @@ function evaluateNamed() {
   const name = $('program').value;
   const evaluation = call({ op: 'evaluate', program: name });
   page.design = evaluation.csv;
+  page.planSource = { name, request: { program: name } };
   showProgram(evaluation, `scalcal evaluate ${name} --region sphere`);
 }
 
@@ -176,6 +181,76 @@ function turnable(view) {
     drag = [e.clientX, e.clientY]; drawSphere(view);
   });
   cv.addEventListener('pointerup', () => { drag = null; });
+}
+
+// ---- 1b. Plan on a bench: `scalcal plan`, its sheet as the CLI's text prints it -----------------------------
+// C's %.*f as the CLI's sheet prints: toFixed, but an exact half goes to the even digit as glibc rounds it.
+function fixed(x, places) {
+  if (x === null || x === undefined) return '—';  // an angle that does not matter (NaN in the CLI's JSON)
+  const v = x === 0 ? 0 : x, s = v.toFixed(places);
+  const exact = Math.abs(v).toFixed(Math.min(100, places + 40)), point = exact.indexOf('.');
+  if (!/^50*$/.test(exact.slice(point + places + 1))) return s;
+  const kept = exact.slice(0, places ? point + places + 1 : point);
+  return Number(kept.slice(-1)) % 2 ? s : (v < 0 ? '-' : '') + kept;
+}
+// The decimals that show a resolution (0.1: one, 0.05: two), four for exact angles (experiments/cli/cmd_plan.cpp).
+const resolutionDecimals = (r) => r <= 0 ? 4 : Math.min(6, Math.max(0, Math.ceil(-Math.log10(r) - 1e-9)));
+// A share of efficiency; below 1e-12 it is the criteria's rounding and says so.
+const percent = (share) => share === null ? 'nan %' : Math.abs(share) < 1e-12 ? '< 1e-10 %' : g6(100 * share, 3) + ' %';
+
+function showPlan(reply, cli) {
+  const r = reply.result, b = reply.bench, several = b.mountings.length > 1;
+  page.results.plan = reply;
+  $('plan-cli').textContent = cli;
+  const places = resolutionDecimals(r.resolution_deg);
+  $('plan-caption').textContent = `plan of ${r.program} on the bench ${r.bench} (order ${r.order}, resolution ` +
+    (r.resolution_deg > 0 ? fixed(r.resolution_deg, places) + ' deg' : 'exact') +
+    (r.region ? `, region ${r.region}` : '') + ')';
+  const given = r.given_order, less = given.total_travel_deg > 0 && r.total_travel_deg < given.total_travel_deg;
+  $('plan-totals').textContent = `${r.steps.length} steps, ${r.remounts} ${r.remounts === 1 ? 'remount' : 'remounts'}, ` +
+    `the axes travel ${fixed(r.total_travel_deg, 1)} deg (the program's own order: ${given.remounts} remounts, ` +
+    `${fixed(given.total_travel_deg, 1)} deg` +
+    (less ? `; ${percent(1 - r.total_travel_deg / given.total_travel_deg)} less travel` : '') + ')';
+  $('plan-lost').textContent = `as run (each position within ${fixed(r.max_rounding_deg, 4)} deg of the design):` +
+    ['D', 'A', 'E', 'S'].map((c) => ` ${c} ${g6(r.criteria[c], 8)} (efficiency lost ${percent(r.efficiency_lost[c])})`)
+      .join(',');
+  const head = $('plan-head');
+  head.replaceChildren();
+  for (const name of ['step', 'position', ...(several ? [b.mounting_key] : []), ...b.axes, 'x', 'y', 'z',
+                      'rounding (deg)']) {
+    const th = document.createElement('th');
+    th.scope = 'col';
+    th.textContent = name;
+    head.appendChild(th);
+  }
+  const rows = $('plan-rows'), label = (v) => (b.mountings.find((m) => m.value === v) || { label: v }).label;
+  rows.replaceChildren();
+  r.steps.forEach((s, k) => {
+    const angles = s.angles_deg || b.axes.map((a) => s[a]);
+    const tr = rows.appendChild(row([String(s.step), String(s.position), ...(several ? [label(s[b.mounting_key])] : []),
+                                     ...angles.map((a) => fixed(a, places)), ...s.eta.map((e) => fixed(e, 4)),
+                                     fixed(s.rounding_deg, 4)], true));
+    if (several && k > 0 && s[b.mounting_key] !== r.steps[k - 1][b.mounting_key]) tr.className = 'remount';
+  });
+  $('plan-out').hidden = false;
+}
+
+function plan() {
+  if (!page.planSource) throw new Error('design or evaluate a program first');
+  const bench = $('bench').value.trim(), resolution = $('resolution').value.trim();
+  const args = [['--bench', bench]].concat(resolution ? [['--resolution', resolution]] : []);
+  $('plan-out').hidden = true;  // a refused plan leaves no sheet of another bench behind
+  const reply = call({ op: 'plan', ...page.planSource.request, args });
+  showWarnings('plan', reply.warnings);
+  page.planFile = reply.csv;
+  showPlan(reply, `scalcal plan ${page.planSource.name} --bench ${bench}` +
+                  `${resolution ? ' --resolution ' + resolution : ''} --out plan.csv`);
+}
+
+// The sheet alone on paper (index.html's print stylesheet), for as long as the print dialog is open.
+function printPlan() {
+  document.body.classList.add('print-plan');
+  window.print();
 }
 
 // ---- 2. Guide: the log ------------------------------------------------------------------------------------
@@ -389,6 +464,10 @@ function wire() {
   $('cal-form').addEventListener('submit', (e) => { e.preventDefault(); run('Calibration', calibrate); });
   $('export-form').addEventListener('submit', (e) => { e.preventDefault(); run('Export', exportCalibration); });
   $('download-design').addEventListener('click', () => download('design.csv', page.design));
+  $('plan-form').addEventListener('submit', (e) => { e.preventDefault(); run('Plan', plan); });
+  $('print-plan').addEventListener('click', printPlan);
+  window.addEventListener('afterprint', () => document.body.classList.remove('print-plan'));
+  $('download-plan').addEventListener('click', () => download('plan.csv', page.planFile));
   $('download-cal').addEventListener('click', () => download('cal.json', page.calibrationFile));
   $('download-export').addEventListener('click', () => download(page.exportFile.name, page.exportFile.text));
   $('log-file').addEventListener('change', (e) => e.target.files[0] && readFile(e.target.files[0]));
@@ -423,6 +502,7 @@ ScalcalCore().then((m) => {
   fill($('program'), about.programs.map((p) => ({ name: p.name, label: `${p.name} (N = ${p.positions})` })));
   fill($('format'), about.formats.map((f) => ({ name: f.name, label: `${f.name}: ${f.what}` })));
   page.formats = about.formats.map((f) => f.name);
+  $('bench-syntaxes').textContent = about.benches;
   page.timings.load = (performance.now() - loadStart) / 1000;
   page.ready = true;
   $('status').textContent = 'Ready.';

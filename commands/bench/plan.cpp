@@ -10,8 +10,8 @@
 #include "commands/core/usage_error.hpp"
 #include "commands/core/work_bound.hpp"
 #include "numeric/bench/rounding.hpp"
+#include "numeric/criteria/efficiency.hpp"
 #include "numeric/io/input_error.hpp"
-#include "numeric/region/region_limit.hpp"
 
 namespace scalcal::commands {
 namespace {

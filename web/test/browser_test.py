@@ -114,6 +114,103 @@ def design(d, cmp, regions):
     return page["timings"]["design"]
 
 
+def sheet(text, axes):
+    """The CLI's text of a plan, split as the page shows it: the caption (its first line), the totals (the second),
+    the as-run line, and each step's cells (step, position, the mounting's label when the bench has several, the
+    angles, x, y, z as printed); the label comes from the mounting's own column or the last "(re)mount" heading."""
+    lines = text.splitlines()
+    rows, heading = [], None
+    for line in lines[2:]:
+        if line.startswith(("mount the meter: ", "remount the meter: ")):
+            heading = line.split(": ", 1)[1]
+        f = line.split("(")
+        if len(f) == 2 and line.startswith("  ") and line.split()[0].isdigit():
+            words = f[0].split()
+            label = " ".join(words[2:len(words) - axes]) or heading
+            rows.append([words[0], words[1], label, *words[len(words) - axes:], *f[1].rstrip(")").split(", ")])
+    return lines[0], lines[1], next(x for x in lines if x.startswith("as run (")), rows
+
+
+def plan(d, cmp, source, bench, resolution, keyboard=False):
+    """The plan part after a design: the bench and resolution typed, Plan pressed (or Enter in the resolution
+    field), against `scalcal plan` run as the page's CLI line says, on the page's own design file: the JSON
+    (--json), the plan file (--out plan.csv), the warnings, the sheet (caption, totals, every cell of the table
+    against the CLI's text), and the print stylesheet (only the table on paper). Returns how many numbers, of them
+    equal to the last bit, and strings, texts and cells it compared."""
+    before = (cmp.numbers, cmp.exact, cmp.texts)
+    for field, value in (("bench", bench), ("resolution", resolution)):
+        e = d.find_element(By.ID, field)
+        e.clear()
+        e.send_keys(value)
+    if keyboard:
+        d.find_element(By.ID, "resolution").send_keys(Keys.ENTER)
+    else:
+        d.find_element(By.ID, "plan").click()
+    wait_status(d, "Plan")
+    page = d.execute_script("return window.scalcalPage.results.plan")
+    line = d.find_element(By.ID, "plan-cli").text
+    want = f"scalcal plan {source} --bench {bench}{' --resolution ' + resolution if resolution else ''} --out plan.csv"
+    cmp.same_text("plan's CLI line", want, line)
+    if os.path.exists(os.path.join(WORK, "plan.csv")):
+        os.remove(os.path.join(WORK, "plan.csv"))
+    d.find_element(By.ID, "download-plan").click()
+    mine = downloaded("plan.csv")
+    os.replace(os.path.join(WORK, "plan.csv"), os.path.join(WORK, "page_plan.csv"))
+    run = cli(*line.split()[1:], "--json")  # the page's line as it is, with --json: writes plan.csv
+    ref = json.loads(run.stdout)
+    what = f"plan {source} --bench {bench}" + (f" --resolution {resolution}" if resolution else "")
+    cmp.json(what, ref, page["result"], strings=True)
+    with open(os.path.join(WORK, "plan.csv")) as f:
+        theirs = f.read()
+    cmp.json(f"{what}: plan.csv", csv_numbers(theirs), csv_numbers(mine))
+    cmp.same_text(f"{what}: plan.csv's header", csv_header(theirs), csv_header(mine))
+    shown = [li.text for li in d.find_elements(By.CSS_SELECTOR, "#warnings li")]
+    cmp.same_text(f"{what}'s warnings", run.stderr, "".join(w + "\n" for w in shown))
+    # The sheet: the CLI's text lines and cells, as printed (fixed decimals), the step's rounding as %.4f.
+    caption, totals, lost, rows = sheet(cli(*line.split()[1:-2]).stdout, len(page["bench"]["axes"]))
+    cmp.same_text(f"{what}: caption", caption, d.find_element(By.ID, "plan-caption").text)
+    cmp.same_text(f"{what}: totals", totals, d.find_element(By.ID, "plan-totals").text)
+    cmp.same_text(f"{what}: as run", lost, d.find_element(By.ID, "plan-lost").text)
+    several = len(page["bench"]["mountings"]) > 1
+    cells = [[c.text for c in tr.find_elements(By.CSS_SELECTOR, "th, td")]
+             for tr in d.find_elements(By.CSS_SELECTOR, "#plan-rows tr")]
+    if len(cells) != len(rows) or len(rows) != len(ref["steps"]):
+        cmp.fail(f"{what}: {len(cells)} steps shown, the CLI's sheet has {len(rows)}")
+    for got, want, step in zip(cells, rows, ref["steps"]):
+        expected = want[:2] + (want[2:3] if several else []) + want[3:] + ["%.4f" % step["rounding_deg"]]
+        cmp.texts += len(expected)
+        if got != expected:
+            cmp.fail(f"{what}: step {want[0]} shown {got}, the CLI's {expected}")
+    headers = [th.get_attribute("scope") for th in d.find_elements(By.CSS_SELECTOR, "#plan-table th")]
+    cmp.texts += 1
+    if set(headers) != {"col", "row"} or not d.find_element(By.ID, "plan-caption").text:
+        cmp.fail(f"{what}: the plan's table needs a caption and scoped headers, has {set(headers)}")
+    printed(d, cmp)
+    return [cmp.numbers - before[0], cmp.exact - before[1], cmp.texts - before[2]]
+
+
+def printed(d, cmp):
+    """Print the plan: window.print called with the print stylesheet's class set, and in print media only the
+    plan's table (with its caption) is laid out; the class goes when the print dialog closes (afterprint)."""
+    d.execute_script("window.print = () => { window.scalcalPage.printClass = document.body.className; }")
+    d.find_element(By.ID, "print-plan").click()
+    d.execute_cdp_cmd("Emulation.setEmulatedMedia", {"media": "print"})
+    seen = d.execute_script("""
+        const shown = (id) => { const e = document.getElementById(id); return !!e && e.getClientRects().length > 0; };
+        return ['plan-table', 'plan-caption', 'plan-rows', 'design-form', 'plan-form', 'plan-cli', 'plan-totals',
+                'download-plan', 'criteria-rows', 'cal-form', 'status'].filter(shown);""")
+    d.execute_cdp_cmd("Emulation.setEmulatedMedia", {"media": ""})
+    d.execute_script("window.dispatchEvent(new Event('afterprint'))")
+    after = d.execute_script("return document.body.className")
+    cmp.texts += 3
+    if d.execute_script("return window.scalcalPage.printClass") != "print-plan":
+        cmp.fail("print the plan: window.print was not called with the print-plan stylesheet")
+    if seen != ["plan-table", "plan-caption", "plan-rows"]:
+        cmp.fail(f"print the plan: on paper {seen}, not the plan's table alone")
+    if after:
+        cmp.fail(f"print the plan: the body keeps the class '{after}' after printing")
+
+
 def catalogue(d, cmp):
     """Named programs (one from the paper's Table 1, read from the embedded data) against `scalcal evaluate`."""
     for name in ("icosahedral-20", "table1-A"):
@@ -330,7 +427,12 @@ def main():
         keyboard_and_labels(d, cmp)
         catalogue(d, cmp)
         design(d, cmp, [])
+        planned = plan(d, cmp, "design.csv", "gimbal:x,y", "0.5", keyboard=True)
         t_design = design(d, cmp, CAP40)
+        planned = [a + b for a, b in zip(planned, plan(d, cmp, "design.csv", "tilt:40:flip", "0.1"))]
+        part = d.find_element(By.ID, "plan-part")
+        d.execute_script("arguments[0].scrollIntoView(true)", part)
+        part.screenshot(os.path.join(WORK, "plan.png"))
         # Three real logs of ../shared/data (README there): a magnetometer turned by hand (every sample fitted,
         # the field's strength unknown), an MPU-6050 accelerometer in g without a time column, and last the
         # Xsens accelerometer (51,175 rows, timed, exported below).
@@ -350,6 +452,9 @@ def main():
     print(f"browser test: the core loaded and listed its programs and formats in {t_load:.2f} s")
     print(f"browser test: every registered format exported twice: {n['written']} written, the same bytes as the CLI's; "
           f"{n['refused']} refused with the CLI's message")
+    print(f"browser test: two plans (gimbal:x,y at 0.5 deg on the sphere's design, tilt:40:flip at 0.1 deg on the "
+          f"caps'): {planned[0]} numbers ({planned[1]} equal to the last bit) and {planned[2]} strings, texts and "
+          f"cells against scalcal plan --json, --out plan.csv and its sheet")
     if g:
         print(f"browser test: the Guide on {os.path.basename(LOG)}: {g[0]} poses, D-efficiency {g[1]:.6g}, next pose "
               f"{g[2]} of the 26, as embedded/'s host_run ({g[5]} numbers over four runs; {', '.join(g[6])})")

@@ -1,11 +1,11 @@
 // web/wasm/binding.cpp: the page's one entry into scalcal's numeric core, a C function taking and returning
 // JSON (nlohmann-json, as the CLI's --json): {"op": ..., ...} in, {"ok": true, ...} or {"ok": false, "error"} out.
 //
-// Each op runs the CLI's own code where it builds without Ipopt: calibrate and export parse the CLI's options
-// with the CLI's option tables (commands/*_table) and run commands::calibrate / export_calibration, whose JSON
-// is what `scalcal calibrate --json` / `export --json` print. evaluate and random are rebuilt from the numeric
-// calls commands/design/evaluate.cpp and commands/design/random.cpp make (those units also link region code that needs
-// Ipopt); the browser test compares every number with the CLI's, so a drift fails it.
+// Each op runs the CLI's own code where it builds without Ipopt: calibrate, export and plan parse the CLI's
+// options with the CLI's option tables (commands/*_table) and run commands::calibrate / export_calibration /
+// plan, whose JSON is what `scalcal calibrate --json` / `export --json` / `plan --json` print. evaluate and random are
+// rebuilt from the numeric calls commands/design/evaluate.cpp and commands/design/random.cpp make (those units also
+// link region code that needs Ipopt); the browser test compares every number with the CLI's, so a drift fails it.
 #include <sys/stat.h>
 #include <unistd.h>
 #include <cmath>
@@ -16,12 +16,14 @@
 #include <string>
 
 #include "commands/bench/export.hpp"
+#include "commands/bench/plan.hpp"
 #include "commands/calibration/calibrate.hpp"
 #include "commands/calibration/calibrate_json.hpp"
 #include "commands/core/evaluation_json.hpp"
 #include "commands/core/json.hpp"
 #include "commands/core/region_request.hpp"
 #include "commands/core/values.hpp"
+#include "numeric/bench/registry.hpp"
 #include "numeric/criteria/efficiency.hpp"
 #include "numeric/criteria/registry.hpp"
 #include "numeric/export/export_format.hpp"
@@ -159,6 +161,28 @@ Json export_op(const Json& in) {
   return {{"text", r.output.text}, {"result", commands::to_json(r)}, {"warnings", warnings_json(r.warnings)}};
 }
 
+// `scalcal plan PROGRAM --bench SPEC ARGS... --json --out plan.csv`: the plan's JSON as the CLI prints it, the
+// plan file as `--out plan.csv` writes it, and the bench's own names the page's sheet shows (its axes, its
+// mountings' labels as the CLI's text prints them beside the values the JSON gives).
+Json plan_op(const Json& in) {
+  commands::Values v(commands::plan_table());
+  v.set("PROGRAM", in.contains("csv") ? put_file(in.value("name", "design.csv"), in.at("csv"))
+                                      : in.at("program").get<std::string>());
+  set_args(v, in.value("args", Json::array()));
+  const commands::PlanResult r = commands::plan(commands::plan_request(v));
+  commands::PlanFile f = commands::plan_file(r);
+  f.notes.region = commands::specs_written_to(f.notes.region, "plan.csv");
+  std::ostringstream csv;
+  write_program_csv(csv, f.program, f.columns, f.notes);
+  Json axes = Json::array(), mountings = Json::array();
+  for (const auto& a : r.bench.axes()) axes.push_back(a.name);
+  for (const auto& m : r.bench.mountings()) mountings.push_back({{"value", m.value}, {"label", m.label}});
+  return {{"result", commands::to_json(r)},
+          {"csv", csv.str()},
+          {"bench", {{"axes", axes}, {"mounting_key", std::string(r.bench.mounting_key())}, {"mountings", mountings}}},
+          {"warnings", warnings_json(r.warnings)}};
+}
+
 // What the page offers: the catalogue's programs, the criteria and their limits, the export formats.
 Json about_op() {
   Json programs = Json::array();
@@ -167,7 +191,7 @@ Json about_op() {
   for (const auto& f : export_formats()) formats.push_back({{"name", f.name}, {"what", f.what}});
   Json criteria = Json::array();
   for (auto c : kCriteria) criteria.push_back(std::string(criterion_name(c)));
-  return {{"programs", programs}, {"formats", formats}, {"criteria", criteria}};
+  return {{"programs", programs}, {"formats", formats}, {"criteria", criteria}, {"benches", bench_syntaxes()}};
 }
 
 Json dispatch(const Json& in) {
@@ -176,6 +200,7 @@ Json dispatch(const Json& in) {
   if (op == "random") return random_op(in);
   if (op == "calibrate") return calibrate_op(in);
   if (op == "export") return export_op(in);
+  if (op == "plan") return plan_op(in);
   if (op == "about") return about_op();
   throw std::runtime_error("unknown op '" + op + "'");
 }
