@@ -25,6 +25,7 @@
 #include "commands/research/family.hpp"
 #include "commands/research/polish.hpp"
 #include "commands/research/sweep.hpp"
+#include "commands/research/sweep_shards.hpp"
 #include "numeric/io/input_error.hpp"
 #ifdef SCALCAL_PYTHON_REPRODUCE
 #include "experiments/reproduce/command.hpp"
@@ -59,15 +60,19 @@ Binding polish_binding() {
           }};
 }
 
-// A sweep's rows, in task order, as a list.
+// A sweep's rows (of one shard with shard=), in task order, as a list.
 Binding sweep_binding() {
   return {&commands::sweep_table(), [](const Values& v, const Progress& p) {
             const commands::Sweep sweep(commands::sweep_request(v));
+            const commands::Shard shard =
+                v.given("--shard") ? *commands::read_shard(v.text("--shard")) : commands::Shard{};
+            const std::vector<std::size_t> tasks = commands::shard_tasks(sweep, shard);
             commands::Json rows = commands::Json::array();
             int done = 0;
-            for (const auto& t : sweep.tasks()) {
+            for (const std::size_t k : tasks) {
+              const commands::SweepTask& t = sweep.tasks()[k];
               rows.push_back(commands::to_json(sweep, sweep.row(t, sweep.compute(t, sweep.request().threads)), true));
-              if (p) p("tasks", ++done, static_cast<int>(sweep.tasks().size()));
+              if (p) p("tasks", ++done, static_cast<int>(tasks.size()));
             }
             return Output{rows, sweep.warnings(), 0};
           }};

@@ -50,6 +50,8 @@ def stub(table):
     if keywords:
         params.append("*")
         params += [f"{o['name']}: {annotation(o)}" for o in keywords]
+    if table["name"] == "sweep":  # the Python layer's own keyword (scalcal/__init__.py)
+        params.append("map: Any | None = None")
     doc = table["summary"].replace('"', "'")
     return f'def {table["name"]}({", ".join(params)}) -> Any:\n    """{doc}."""\n'
 

@@ -19,6 +19,7 @@
 #include <pybind11/stl.h>
 
 #include "commands/core/usage_error.hpp"
+#include "commands/research/sweep.hpp"
 #include "numeric/calibration/measurements_csv.hpp"
 #include "numeric/io/blas_kernel.hpp"
 #include "numeric/io/input_error.hpp"
@@ -177,6 +178,16 @@ py::tuple run(const std::string& name, const py::tuple& args, const py::dict& kw
   return py::make_tuple(to_python(out->json), warnings, out->status);
 }
 
+// sweep_tasks(args, kwargs) -> [(criterion, N), ...]: the tasks of sweep(*args, **kwargs) in their order,
+// for sweep(map=...) to run one shard per task.
+py::list sweep_tasks(const py::tuple& args, const py::dict& kwargs) {
+  const LibraryLock lock;
+  const commands::Sweep sweep(commands::sweep_request(arguments(commands::sweep_table(), args, kwargs)));
+  py::list out;
+  for (const auto& t : sweep.tasks()) out.append(py::make_tuple(std::string(criterion_name(t.criterion)), t.positions));
+  return out;
+}
+
 py::object program(const std::string& name) {
   const LibraryLock lock;
   return to_python(commands::program_json(resolve_program(name)));
@@ -207,4 +218,5 @@ PYBIND11_MODULE(_scalcal, m) {
   m.def("tables", &sp::tables);
   m.def("run", &sp::run, py::arg("name"), py::arg("args"), py::arg("kwargs"));
   m.def("program", &sp::program, py::arg("name"));
+  m.def("sweep_tasks", &sp::sweep_tasks, py::arg("args"), py::arg("kwargs"));
 }

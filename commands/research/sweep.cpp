@@ -44,16 +44,15 @@ std::vector<CriterionKind> read_criteria_list(const std::string& s) {
   return out;
 }
 
-// The CLI's way of spreading a sweep over processes and time (a job array's tasks); Python's sweep
-// runs in one process and takes neither.
+// A sweep spread over processes and time: the CLI keeps a shard's rows in a --results file for `merge`
+// (a job array's tasks); Python's sweep(map=...) runs one shard per task through the caller's map.
 Option shard_option() {
   Option o = text_option("--shard", "I/N",
                          "run only the tasks k with k mod N = I (tasks: criteria outer, N inner), from 0/N to "
-                         "N-1/N; needs --results");
+                         "N-1/N; the CLI needs --results with it");
   o.why_bad = [](const std::string& s) -> std::string {
     return read_shard(s) ? "" : "must be I/N with 0 <= I < N <= " + std::to_string(kMaxShards) + ", got '" + s + "'";
   };
-  o.cli_only = true;
   return o;
 }
 

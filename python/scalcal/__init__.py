@@ -181,6 +181,41 @@ calibrate.__doc__ = (_calibrate_command.__doc__.replace("returns its --json obje
                      if _calibrate_command.__doc__ else None)
 
 
+_sweep_command = sweep  # noqa: F821 (made from its table above)
+
+
+def _sweep_shard(job):
+    """One task of sweep(map=...): shard k of n, n the number of tasks (module level: a process pool pickles it)."""
+    k, n, args, kwargs = job
+    return _sweep_command(*args, shard=f"{k}/{n}", **kwargs)
+
+
+def sweep(*args, map=None, **kwargs):
+    if map is None:
+        return _sweep_command(*args, **kwargs)
+    if kwargs.get("shard") is not None:
+        raise UsageError("sweep: map= runs every task as its own shard; give no shard with it")
+    try:
+        n = len(_scalcal.sweep_tasks(args, kwargs))
+    except _scalcal.InputError as e:
+        raise InputError(str(e)) from None
+    except _scalcal.UsageError as e:
+        raise UsageError(str(e)) from None
+    rows = []
+    for part in map(_sweep_shard, [(k, n, args, kwargs) for k in range(n)]):
+        rows.extend(part)
+    return rows
+
+
+sweep.__signature__ = _sweep_command.__signature__.replace(
+    parameters=list(_sweep_command.__signature__.parameters.values()) +
+    [inspect.Parameter("map", inspect.Parameter.KEYWORD_ONLY, default=None)])
+sweep.__doc__ = (_sweep_command.__doc__ or "") + (
+    "\n    map: a map function (builtins.map, a process pool's or mpi4py's executor's map): each (criterion, N)"
+    "\n        task runs as its own call through it, and the rows come back in task order, the same as one call's"
+    "\n        (seconds aside). A thread pool gains nothing: calls into scalcal take turns.")
+
+
 def program(name):
     """The (N, 3) positions of a catalogue program (``scalcal catalogue``), a family member or a CSV file."""
     try:

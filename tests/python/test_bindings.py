@@ -313,3 +313,22 @@ def cli_json_correct(cal, log):
         for h, v in zip(head, line.split(",")):
             cols[h].append(float(v))
     return cols
+
+
+def test_sweep_through_a_map_is_one_sweep():
+    # sweep(map=...) runs each (criterion, N) task as a shard of its own through the caller's map (issue 51):
+    # builtins.map and a process pool give the rows one call gives, and one process's shards the CLI's.
+    from concurrent.futures import ProcessPoolExecutor
+    kw = dict(positions="9..12", criteria="D,A", starts=3, seed=4, threads=1)
+    one = plain(scalcal.sweep(**kw))
+    assert len(one) == 8
+    drop = lambda rows: [{k: v for k, v in r.items() if k != "seconds"} for r in rows]  # noqa: E731
+    assert drop(plain(scalcal.sweep(**kw, map=map))) == drop(one)
+    with ProcessPoolExecutor(2) as pool:
+        assert drop(plain(scalcal.sweep(**kw, map=pool.map))) == drop(one)
+    # A shard is the CLI's shard: the tasks k with k mod 3 = 1.
+    assert drop(plain(scalcal.sweep(**kw, shard="1/3"))) == [drop(one)[k] for k in (1, 4, 7)]
+    assert drop(one) == drop(cli_json("sweep", "--positions", "9..12", "--criteria", "D,A", "--starts", "3",
+                                      "--seed", "4", "--threads", "1"))
+    with pytest.raises(scalcal.UsageError, match="give no shard"):
+        scalcal.sweep(**kw, shard="0/2", map=map)
