@@ -62,6 +62,8 @@ const char* scalcal_status_text(scalcal_status status) {
     case SCALCAL_E_MOVING:
       return "the poses are not still: the stream moves most of the time; a magnetometer turned continuously "
              "needs the tumbling mode (scalcal/tumble.h)";
+    case SCALCAL_E_NO_RESTS:
+      return "a rate table's log without two rests (table stopped): the bias is not observed";
   }
   return "unknown status";
 }

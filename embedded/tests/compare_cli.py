@@ -31,7 +31,10 @@ gated by the last): every parameter within one of the library's own standard err
 differences are the decimation's; on the QMC5883L log, 3.2 of the CLI's standard errors: the CLI takes off
 the noise's bias, which is anisotropic once corrected, and the library's cells keep part of it:
 tests/anisotropic_noise.py), the noise-based standard errors within 12 % of the CLI's, float within
-0.01 of the CLI's standard errors of double.
+0.01 of the CLI's standard errors of double. A gyro on a rate table (scalcal/rate_table.h) is compared on
+seeded rehearsals (RATE_TABLES): on the CLI's segments and rests, double within 1e-6 relative and float within
+a tenth of a standard error; through the detector within RATE_TABLE_DETECTOR standard errors; its logs cut to
+one rest and to none refused.
 Usage: compare_cli.py SCALCAL HOST_RUN_DOUBLE HOST_RUN_FLOAT HOST_RUN_LONG DATA_DIR... ; prints a
 table and exits 1 when a check fails."""
 import concurrent.futures
@@ -66,6 +69,17 @@ TUMBLING_FITS = [
     ("rehearsal tumbling", REHEARSAL, [], "50", 1, 1.0),
     ("rehearsal, 2 disturbances", REHEARSAL + ["--disturbances", "2"], [], "50", 3, 1.5),
 ]
+# A gyro on a rate table (scalcal/rate_table.h): name, `scalcal simulate --instrument gyro` arguments
+# (seeded), the table's rate. The CLI's own segments and rests given to the library (double within 1e-6
+# relative of the CLI, float within a tenth of its standard errors); then the library's detector on
+# the same log (within RATE_TABLE_DETECTOR of the CLI's standard errors: its 1 s window closes
+# slightly different segments than the CLI's adaptive one); then the log with one rest left (a rest
+# the host fits as a segment of the table's rate) and with none: the library refuses both.
+RATE_TABLES = [
+    ("gyro table dodecahedral-12", ["--program", "dodecahedral-12", "--magnitude", "3.14159", "--seed", "1"], "3.14159"),
+    ("gyro table classic18", ["--program", "classic18", "--magnitude", "1", "--seed", "2"], "1"),
+]
+RATE_TABLE_DETECTOR = 1.0
 # The streaming detector's parameters (scalcal_detector_options_default), given to the CLI for the
 # detector's check.
 DETECTOR = ["--window", "1", "--threshold-factor", "6", "--min-interval", "1"]
@@ -434,6 +448,68 @@ def check_tumbling_fit(hosts, path, name, cli_args, magnitude, passes, bound, ta
         failures.append(f"{name}: float is {float_apart:.3g} of the CLI's standard errors from double (> 0.01)")
 
 
+def check_rate_table(hosts, tmp, name, simulate, rate, table, notes):
+    scalcal = hosts[0]
+    path = os.path.join(tmp, "table.csv")
+    code, _, err = run([scalcal, "simulate", "--instrument", "gyro", "--noise", "1e-3", "--dwell", "10"] + simulate +
+                       ["--log", path, "--truth", os.path.join(tmp, "truth.json")])
+    if code != 0:
+        failures.append(f"{name}: scalcal simulate exit {code}: {err.strip()}")
+        return
+    code, out, err = run([scalcal, "calibrate", "--instrument", "gyro", "--measurements", path, "--magnitude", rate,
+                          "--json"])
+    if code != 0:
+        failures.append(f"{name}: scalcal calibrate exit {code}: {err.strip()}")
+        return
+    cli = json.loads(out)
+    spans = sorted((x["start"], x["end"]) for x in cli["segments"] + cli["rests"])
+    given = os.path.join(tmp, "intervals.txt")
+    with open(given, "w") as f:
+        f.writelines("%.17g %.17g\n" % s for s in spans)
+    se = [cli["standard_error"][n] for n in NAMES]
+    want = cli["offset"] + cli["gain"] + cli["nonorthogonality"]
+    for binary, precision, how in ((hosts[1], "double", ["--intervals", given]), (hosts[2], "float", ["--intervals", given]),
+                                   (hosts[1], "double, detector", ["--detect"]),
+                                   (hosts[2], "float, detector", ["--detect"])):
+        r = host_result(binary, [path, "--rate-table", rate] + how)
+        label = f"{name} ({precision})"
+        if r["status"][0][0] != "0":
+            failures.append(f"{label}: the library refused: {' '.join(r['status'][0][1:])}")
+            continue
+        if (int(r["segments"][0]), int(r["rests"][0])) != (len(cli["segments"]), len(cli["rests"])):
+            failures.append(f"{label}: {int(r['segments'][0])} segments and {int(r['rests'][0])} rests, the CLI "
+                            f"{len(cli['segments'])} and {len(cli['rests'])}")
+        if int(r["model"][0]) != MODELS[cli["model"]]:
+            failures.append(f"{label}: model {int(r['model'][0])}, the CLI {cli['model']}")
+            continue
+        ours = r["offset"] + r["gain"] + r["nonorthogonality"]
+        apart = max(abs(a - b) / s for a, b, s in zip(ours, want, se))
+        if precision == "double":
+            compare_exact(name, "rate table: o, k, gamma (given intervals)", ours, want, table, tol=1e-6)
+            compare_exact(name, "rate table: standard errors", r["standard_error"], se, table, tol=1e-6)
+            compare_exact(name, "rate table: matrix", r["matrix"], sum(cli["matrix"], []), table, tol=1e-6)
+            compare_exact(name, "rate table: noise", r["noise"], [cli["noise"]], table, tol=1e-6)
+        bound = 0.1 if precision == "float" else RATE_TABLE_DETECTOR
+        table.append((name, f"rate table {precision}: |lib - CLI| / CLI's std", apart, None, None))
+        if precision != "double" and apart > bound:
+            failures.append(f"{label}: {apart:.3g} of the CLI's standard errors from it (> {bound})")
+    # The rests taken out but the first (the host fits that one as a segment of the table's rate), then all.
+    with open(path) as f:
+        head, *rows = f.read().splitlines()
+    first_rest_end = cli["rests"][0]["end"] + 0.5
+    for label, keep in (("one rest", lambda t, w: w != 0 or t <= first_rest_end), ("no rest", lambda t, w: w != 0)):
+        cut = os.path.join(tmp, "cut.csv")
+        with open(cut, "w") as f:
+            f.write("\n".join([head] + [x for x in rows if keep(float(x.split(",")[0]), float(x.split(",")[4]))]) + "\n")
+        for binary in hosts[1:3]:
+            r = host_result(binary, [cut, "--rate-table", rate, "--detect"])
+            if r["status"][0][0] == "0":
+                failures.append(f"{name}, {label}: the library calibrated a table log without two rests")
+            else:
+                notes.append(f"{name}, {label} ({'double' if binary == hosts[1] else 'float'}): refused, "
+                             f"{' '.join(r['status'][0][1:])}")
+
+
 def main():
     if len(sys.argv) < 6:
         raise SystemExit(__doc__)
@@ -472,6 +548,9 @@ def main():
                     notes.append(f"{name}: {source} not found in {', '.join(dirs)}: skipped")
                     continue
             check_tumbling_fit(hosts, path, name, args, magnitude, passes, bound, table, notes)
+    with tempfile.TemporaryDirectory() as tmp:
+        for name, simulate, rate in RATE_TABLES:
+            check_rate_table(hosts, tmp, name, simulate, rate, table, notes)
     print("%-16s %-50s %12s %14s %14s" % ("log", "quantity", "lib - CLI", "CLI - ref.", "lib - ref."))
     for log, what, worst, cli_off, ours_off in table:
         print("%-16s %-50s %12.3g %14s %14s" % (log, what, worst, "" if cli_off is None else "%.3g" % cli_off,

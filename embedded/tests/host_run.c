@@ -18,6 +18,7 @@
 #include "scalcal/detector.h"
 #include "scalcal/fit.h"
 #include "scalcal/guidance.h"
+#include "scalcal/rate_table.h"
 #include "scalcal/tumble.h"
 
 #define MAX_INTERVALS 4096
@@ -177,6 +178,41 @@ static void print_result(const scalcal_pose_set* set, const scalcal_calibration*
   }
 }
 
+/* A gyro's rate table (scalcal/rate_table.h): the fit and its report. */
+static int run_rate_table(const scalcal_pose_set* set, scalcal_model model, double table_rate) {
+  static scalcal_rate_table_report rr;
+  scalcal_rate_table_options ro;
+  scalcal_calibration c;
+  scalcal_status s;
+  uint32_t i;
+  scalcal_rate_table_options_default(&ro);
+  ro.model = model;
+  ro.rate = (scalcal_real)table_rate;
+  s = scalcal_fit_rate_table(set, &ro, &c, &rr);
+  printf("status %d %s\n", (int)s, scalcal_status_text(s));
+  printf("model %d\nsegments %u\nrests %u\niterations %d\ntermination %d\n", (int)rr.model, (unsigned)rr.segments,
+         (unsigned)rr.rests, rr.iterations, (int)rr.termination);
+  printf("rest_flags");
+  for (i = 0; i < set->count; ++i) printf(" %d", rr.rest[i]);
+  printf("\n");
+  print_vec("condition", &rr.condition, 1);
+  print_vec("parameters", rr.parameters, 9);
+  print_vec("standard_error", rr.standard_error, 9);
+  print_vec("predicted_std", rr.predicted_std, 9);
+  print_vec("scales", &rr.segment_scale, 2);
+  if (s != SCALCAL_OK) return 0;
+  print_vec("offset", c.offset, 3);
+  print_vec("matrix", &c.matrix[0][0], 9);
+  print_vec("scale_deviation", c.scale_deviation, 3);
+  print_vec("nonorthogonality", c.nonorthogonality, 3);
+  print_vec("gain", c.gain, 3);
+  print_vec("bias_std", c.bias_std, 3);
+  print_vec("scale_deviation_std", c.scale_deviation_std, 3);
+  print_vec("nonorthogonality_std", c.nonorthogonality_std, 3);
+  print_vec("noise", &c.noise, 1);
+  return 0;
+}
+
 int main(int argc, char** argv) {
   static scalcal_pose storage[MAX_INTERVALS];
   static given_intervals given;
@@ -189,7 +225,7 @@ int main(int argc, char** argv) {
   const char *path = 0, *intervals = 0;
   double rate = 0;
   int k, detect = 0, tumble = 0, capacity = SCALCAL_MAX_POSES;
-  double gate = 0;
+  double gate = 0, table_rate = 0;
   int passes = 2;
   static scalcal_tumble tumbler;
   scalcal_fit_options_default(&o);
@@ -222,6 +258,8 @@ int main(int argc, char** argv) {
       gate = atof(argv[++k]);
     else if (!strcmp(argv[k], "--passes") && k + 1 < argc)
       passes = atoi(argv[++k]);
+    else if (!strcmp(argv[k], "--rate-table") && k + 1 < argc)
+      table_rate = atof(argv[++k]);
     else if (!strcmp(argv[k], "--weights-samples"))
       o.weight_by_samples = 1;
     else
@@ -249,6 +287,11 @@ int main(int argc, char** argv) {
   }
   printf("precision %s\n", sizeof(scalcal_real) == 8 ? "double" : "float");
   printf("poses %u\n", (unsigned)set.count);
+  if (table_rate > 0) {
+    k = run_rate_table(&set, o.model, table_rate);
+    test_log_free(&log);
+    return k;
+  }
   s = scalcal_fit(&set, &o, &cal, &report);
   for (k = 2; tumble && gate > 0 && k <= passes && s == SCALCAL_OK; ++k) { /* a pass gated by the last */
     static scalcal_calibration previous;

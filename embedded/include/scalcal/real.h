@@ -46,7 +46,8 @@ typedef enum {
   SCALCAL_E_DEGENERATE,       /* the correction is singular, two axes nearly parallel, or its condition > 100 */
   SCALCAL_E_FULL,             /* the pose set is full: a still pose was not stored */
   SCALCAL_E_RECORD,           /* a flash record with a wrong magic, version, size or checksum */
-  SCALCAL_E_MOVING            /* the detector's stream moved most of the time: its "poses" are slow motion */
+  SCALCAL_E_MOVING,           /* the detector's stream moved most of the time: its "poses" are slow motion */
+  SCALCAL_E_NO_RESTS          /* a rate table's log without two rests: its bias is not observed */
 } scalcal_status;
 
 /* One line describing a status (a string literal). */
