@@ -13,6 +13,7 @@
 #include "scalcal/detector.h"
 #include "scalcal/fit.h"
 #include "scalcal/guidance.h"
+#include "scalcal/rate_table.h"
 #include "scalcal/record.h"
 
 /* A seeded generator (xorshift64*) and Gaussian deviates (Box-Muller). */
@@ -475,6 +476,81 @@ static void test_moving(void) {
   CHECK(s == SCALCAL_OK, "hand-held: %s", scalcal_status_text(s));
 }
 
+/* A gyro on a rate table through the detector: rests of 3 s (the bias alone) between segments of 10 s
+ * at 2 rad/s about 14 axes (the faces' and the corners' of a cube), ramps of 1 s between. The rate-table
+ * fit finds 14 segments and 15 rests and the truth within 5 standard errors; the still-pose fit on the
+ * same poses does not calibrate (half of them are rests, not of the rate's modulus); a log with only its
+ * first rest is refused (SCALCAL_E_NO_RESTS), as is a rate of 0. */
+static void rate_table_session(const meter* m, int rests_between, scalcal_pose_set* set) {
+  static const double zero[3] = {0, 0, 0};
+  double axes[14][3], from[3] = {0, 0, 0};
+  int a, s, k;
+  const double r3 = 1 / sqrt(3.0);
+  for (a = 0; a < 6; ++a) axes[a][0] = axes[a][1] = axes[a][2] = 0, axes[a][a / 2] = a % 2 ? -1 : 1;
+  for (a = 0; a < 8; ++a) axes[6 + a][0] = a & 1 ? -r3 : r3, axes[6 + a][1] = a & 2 ? -r3 : r3, axes[6 + a][2] = a & 4 ? -r3 : r3;
+  init_stream(set, SCALCAL_MAX_POSES);
+  for (a = 0; a <= 14; ++a) {
+    scalcal_real x[3];
+    if (a == 0 || rests_between) { /* to rest, rest */
+      for (s = 1; s <= 100; ++s) {
+        double d[3];
+        for (k = 0; k < 3; ++k) d[k] = from[k] * (1 - s / 100.0);
+        measure(m, d, x), scalcal_detector_push(&det, set, x);
+      }
+      for (s = 0; s < 300; ++s) measure(m, zero, x), scalcal_detector_push(&det, set, x);
+      memcpy(from, zero, sizeof from);
+    }
+    if (a == 14) break;
+    for (s = 1; s <= 100; ++s) { /* to the next rate, then turn at it */
+      double d[3];
+      for (k = 0; k < 3; ++k) d[k] = from[k] + (axes[a][k] - from[k]) * s / 100.0;
+      measure(m, d, x), scalcal_detector_push(&det, set, x);
+    }
+    for (s = 0; s < 1000; ++s) measure(m, axes[a], x), scalcal_detector_push(&det, set, x);
+    memcpy(from, axes[a], sizeof from);
+  }
+  scalcal_detector_finish(&det, set);
+}
+
+static void test_rate_table(void) {
+  meter m;
+  scalcal_pose_set set;
+  scalcal_rate_table_options o;
+  scalcal_rate_table_report r;
+  scalcal_fit_options fo;
+  scalcal_calibration c;
+  scalcal_status s;
+  int k;
+  make_meter(&m, 2.0, 938.7, 2.0); /* counts per rad/s: 16.4 LSB per deg/s */
+  rate_table_session(&m, 1, &set);
+  scalcal_rate_table_options_default(&o);
+  o.rate = 2.0;
+  s = scalcal_fit_rate_table(&set, &o, &c, &r);
+  CHECK(s == SCALCAL_OK && r.segments == 14 && r.rests == 15 && r.model == SCALCAL_MODEL_PAPER9,
+        "rate table: %s, %u segments, %u rests, model %d", scalcal_status_text(s), (unsigned)r.segments,
+        (unsigned)r.rests, (int)r.model);
+  for (k = 0; s == SCALCAL_OK && k < 3; ++k) {
+    CHECK(fabs(c.offset[k] - m.offset[k]) < 5 * c.bias_std[k], "rate table: offset %d %g, true %g (std %g)", k,
+          (double)c.offset[k], m.offset[k], (double)c.bias_std[k]);
+    CHECK(fabs(c.gain[k] - m.k[k]) < 5 * c.gain_std[k], "rate table: gain %d %g, true %g (std %g)", k,
+          (double)c.gain[k], m.k[k], (double)c.gain_std[k]);
+    CHECK(fabs(c.nonorthogonality[k] - m.gamma[k]) < 5 * c.nonorthogonality_std[k],
+          "rate table: gamma %d %g, true %g (std %g)", k, (double)c.nonorthogonality[k], m.gamma[k],
+          (double)c.nonorthogonality_std[k]);
+  }
+  scalcal_fit_options_default(&fo);
+  fo.magnitude = 2.0;
+  s = scalcal_fit(&set, &fo, &c, 0);
+  CHECK(s != SCALCAL_OK, "rate table fitted as still poses: calibrated");
+  o.rate = 0;
+  s = scalcal_fit_rate_table(&set, &o, &c, &r);
+  CHECK(s == SCALCAL_E_ARGUMENT, "rate table, rate 0: %s", scalcal_status_text(s));
+  o.rate = 2.0;
+  rate_table_session(&m, 0, &set);
+  s = scalcal_fit_rate_table(&set, &o, &c, &r);
+  CHECK(s == SCALCAL_E_NO_RESTS, "rate table, one rest: %s (%u poses)", scalcal_status_text(s), (unsigned)set.count);
+}
+
 int main(void) {
   test_truth(9.80665, 0, "accelerometer in counts");
   test_truth(48.0, 1, "magnetometer, field unknown");
@@ -485,6 +561,7 @@ int main(void) {
   test_record();
   test_guidance();
   test_moving(); /* last: the random stream of the tests above stays as it was */
+  test_rate_table();
   printf("%s unit tests (%s): %d failures\n", failures ? "FAILED" : "passed",
          sizeof(scalcal_real) == 8 ? "double" : "float", failures);
   return failures ? 1 : 0;
