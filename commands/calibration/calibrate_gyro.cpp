@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <map>
 
 #include <Eigen/SVD>
@@ -106,6 +107,33 @@ void fit_items(const GyroCalibrateRequest& q, GyroCalibrateResult& r) {
   }
 }
 
+// Rests are the largest group of two or more equal outputs (gyro::segment_rate_log): a lone rest is left
+// among the segments, where it reads as a turn at the table's rate and pulls every parameter (a
+// rehearsal with one rest: offsets of 0.21 rad/s against a true 0.005, exit 0). A segment whose output
+// per unit of its rate is under half the segments' median is such a rest, and the log is refused.
+void refuse_lone_rests(const GyroCalibrateRequest& q, const gyro::RateLogSegments& s,
+                       const std::vector<double>& rates) {
+  std::vector<double> ratio;
+  for (std::size_t i = 0; i < s.segments.size(); ++i) ratio.push_back(s.segments[i].mean.norm() / rates[i]);
+  if (ratio.size() < 3) return;
+  std::vector<double> sorted = ratio;
+  std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2), sorted.end());
+  const double median = sorted[sorted.size() / 2];
+  for (std::size_t i = 0; i < ratio.size(); ++i) {
+    if (ratio[i] >= 0.5 * median) continue;
+    char what[160];
+    std::snprintf(what, sizeof what,
+                  "the output from %.4g to %.4g s is %.3g %% of the other segments' per unit of rate",
+                  s.segments[i].span.start, s.segments[i].span.stop, 100 * ratio[i] / median);
+    throw InputError(q.file, s.segments[i].line,
+                     std::string(what) +
+                         ": the table at rest, not turning. Rests are found as two or more equal outputs and this log "
+                         "has " +
+                         std::to_string(s.rests.size()) +
+                         ": record a rest between segments (at least two in all), or cut this one out");
+  }
+}
+
 void rate_table(const GyroCalibrateRequest& q, const RawLog& log, GyroCalibrateResult& r) {
   const gyro::RateLogSegments s = gyro::segment_rate_log(log, q.intervals);
   r.detection = s.detection;
@@ -141,6 +169,7 @@ void rate_table(const GyroCalibrateRequest& q, const RawLog& log, GyroCalibrateR
         gyro::kEarthRate * q.table_axis.dot(Vec3(0, std::cos(phi), std::sin(phi))) * per_rad_per_s(q.physical_units);
     for (std::size_t i = 0; i < rates.size(); ++i) rates[i] = std::abs(rates[i] + senses[i] * axial);
   }
+  refuse_lone_rests(q, s, rates);
   r.items = gyro::segment_items(s.segments, rates);
   fit_items(q, r);
 }

@@ -73,8 +73,8 @@ TUMBLING_FITS = [
 # (seeded), the table's rate. The CLI's own segments and rests given to the library (double within 1e-6
 # relative of the CLI, float within a tenth of its standard errors); then the library's detector on
 # the same log (within RATE_TABLE_DETECTOR of the CLI's standard errors: its 1 s window closes
-# slightly different segments than the CLI's adaptive one); then the log with one rest left (a rest
-# the host fits as a segment of the table's rate) and with none: the library refuses both.
+# slightly different segments than the CLI's adaptive one); then the log with one rest left (which the
+# CLI refuses too: a lone rest is no segment) and with none: the library refuses both.
 RATE_TABLES = [
     ("gyro table dodecahedral-12", ["--program", "dodecahedral-12", "--magnitude", "3.14159", "--seed", "1"], "3.14159"),
     ("gyro table classic18", ["--program", "classic18", "--magnitude", "1", "--seed", "2"], "1"),
@@ -493,7 +493,7 @@ def check_rate_table(hosts, tmp, name, simulate, rate, table, notes):
         table.append((name, f"rate table {precision}: |lib - CLI| / CLI's std", apart, None, None))
         if precision != "double" and apart > bound:
             failures.append(f"{label}: {apart:.3g} of the CLI's standard errors from it (> {bound})")
-    # The rests taken out but the first (the host fits that one as a segment of the table's rate), then all.
+    # The rests taken out but the first (a lone rest: the CLI refuses it too), then all.
     with open(path) as f:
         head, *rows = f.read().splitlines()
     first_rest_end = cli["rests"][0]["end"] + 0.5
