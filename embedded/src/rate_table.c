@@ -268,18 +268,11 @@ static void sort(scalcal_real* v, uint32_t n) {
     }
 }
 
-scalcal_status scalcal_fit_rate_table(const scalcal_pose_set* set, const scalcal_rate_table_options* options,
-                                      scalcal_calibration* cal, scalcal_rate_table_report* report) {
-  static const int kModels[3] = {9, 6, 4};
-  scalcal_rate_table_report local;
-  scalcal_rate_table_report* r = report ? report : &local;
-  scalcal_real o[3] = {0, 0, 0}, values[SCALCAL_MAX_POSES], p[SC_P], x[9], N[SC_P * SC_P], cov[SC_P * SC_P];
-  scalcal_real scale[2] = {1, 1}, chi[2], dof[2], top;
-  scalcal_calibration out;
-  rt_problem q;
-  uint32_t i, segments = 0, rests = 0, total = 0;
-  int k, pass, P = 0;
-  memset(r, 0, sizeof *r);
+/* The inputs' checks: arguments, finite sums, a stream that moves most of the time. */
+static scalcal_status check_inputs(const scalcal_pose_set* set, const scalcal_rate_table_options* options,
+                                   const scalcal_calibration* cal) {
+  uint32_t i;
+  int k;
   if (!set || !options || !cal || !set->poses || set->count > SCALCAL_MAX_POSES) return SCALCAL_E_ARGUMENT;
   if (options->model != SCALCAL_MODEL_AUTO && options->model != SCALCAL_MODEL_BIAS3 &&
       options->model != SCALCAL_MODEL_AXIS6 && options->model != SCALCAL_MODEL_PAPER9)
@@ -292,10 +285,20 @@ scalcal_status scalcal_fit_rate_table(const scalcal_pose_set* set, const scalcal
         return SCALCAL_E_NOT_FINITE;
   }
   if ((uint64_t)set->windows_moving * 4 > (uint64_t)set->windows_judged * 3) return SCALCAL_E_MOVING;
+  return SCALCAL_OK;
+}
+
+/* The split into segments and rests, and the start: o the rests' mean, one gain, the median over segments of
+ * |mean - o| / rate. `values` is scratch of SCALCAL_MAX_POSES. */
+static scalcal_status start_of(const scalcal_pose_set* set, const scalcal_rate_table_options* options,
+                               scalcal_rate_table_report* r, scalcal_real o[3], rt_problem* q, scalcal_real* values,
+                               uint32_t* total) {
+  uint32_t i, n = 0, segments = 0, rests = 0;
+  int k;
   split(set, r->rest);
   for (i = 0; i < set->count; ++i) {
     scalcal_real m[3], sd[3];
-    total += set->poses[i].count;
+    *total += set->poses[i].count;
     if (!r->rest[i]) {
       ++segments;
       continue;
@@ -308,138 +311,172 @@ scalcal_status scalcal_fit_rate_table(const scalcal_pose_set* set, const scalcal
   if (rests < 2) return SCALCAL_E_NO_RESTS;
   if (segments == 0) return SCALCAL_E_TOO_FEW_POSES;
   for (k = 0; k < 3; ++k) o[k] /= (scalcal_real)rests;
-  /* The start: o the rests' mean, one gain, the median over segments of |mean - o| / rate. */
-  memset(&q, 0, sizeof q);
-  q.set = set, q.rest = r->rest, q.rate = options->rate, q.rows = segments + 3 * rests;
-  q.weight[0] = q.weight[1] = 1;
-  {
-    uint32_t n = 0;
-    for (i = 0; i < set->count; ++i) {
-      scalcal_real m[3], sd[3];
-      if (r->rest[i]) continue;
-      pose_stats(set, i, m, sd);
-      m[0] -= o[0], m[1] -= o[1], m[2] -= o[2];
-      values[n++] = sc_norm3(m) / options->rate;
-    }
-    sort(values, n);
-    q.gain0 = values[n / 2];
-    /* A segment under half the rate at that gain is a rest the split did not link (or the rate is wrong). */
-    if (!(values[0] >= (scalcal_real)0.5 * q.gain0) || !(q.gain0 > 0)) return SCALCAL_E_MAGNITUDE;
+  memset(q, 0, sizeof *q);
+  q->set = set, q->rest = r->rest, q->rate = options->rate, q->rows = segments + 3 * rests;
+  q->weight[0] = q->weight[1] = 1;
+  for (i = 0; i < set->count; ++i) {
+    scalcal_real m[3], sd[3];
+    if (r->rest[i]) continue;
+    pose_stats(set, i, m, sd);
+    m[0] -= o[0], m[1] -= o[1], m[2] -= o[2];
+    values[n++] = sc_norm3(m) / options->rate;
   }
+  sort(values, n);
+  q->gain0 = values[n / 2];
+  /* A segment under half the rate at that gain is a rest the split did not link (or the rate is wrong). */
+  if (!(values[0] >= (scalcal_real)0.5 * q->gain0) || !(q->gain0 > 0)) return SCALCAL_E_MAGNITUDE;
+  return SCALCAL_OK;
+}
+
+/* The model: the one asked for, or the richest of paper9, axis6, bias3 the directions carry; 0 for none. */
+static int model_of(const scalcal_pose_set* set, const scalcal_rate_table_options* options,
+                    scalcal_rate_table_report* r, const scalcal_real o[3]) {
+  static const int kModels[3] = {9, 6, 4};
+  int k;
   for (k = 0; k < 3; ++k) {
     const int want = kModels[k];
     if (options->model != SCALCAL_MODEL_AUTO &&
         want != (options->model == SCALCAL_MODEL_BIAS3 ? 4 : (int)options->model))
       continue;
-    P = want;
     r->model = want == 4 ? SCALCAL_MODEL_BIAS3 : (scalcal_model)want;
-    r->condition = carried(set, r->rest, o, P, segments);
-    if (r->condition <= RT_CARRY) break;
-    P = 0;
+    r->condition = carried(set, r->rest, o, want, r->segments);
+    if (r->condition <= RT_CARRY) return want;
   }
-  if (P == 0) return SCALCAL_E_NOT_IDENTIFIABLE;
-  if (segments + 3 < (uint32_t)P) return SCALCAL_E_TOO_FEW_POSES;
-  q.free = P;
-  top = options->rate;
+  return 0;
+}
+
+/* The fit with its variance components: refit until each group's scale settles (at most 8 passes). */
+static scalcal_status fit_groups(rt_problem* q, scalcal_real* p, int P, const scalcal_rate_table_options* options,
+                                 scalcal_rate_table_report* r) {
+  scalcal_real scale[2] = {1, 1}, chi[2], dof[2], N[SC_P * SC_P], cov[SC_P * SC_P];
+  int k, pass;
+  for (pass = 0; pass < 8; ++pass) {
+    int settled = 1;
+    r->iterations += minimise(q, p, options->max_iterations, &r->termination);
+    accumulate(q, p, N, cov);
+    if (!sc_spd_inverse(P, N, N)) return SCALCAL_E_NOT_IDENTIFIABLE;
+    groups_at(q, p, N, chi, dof);
+    for (k = 0; k < 2; ++k) {
+      scalcal_real s = scale[k];
+      if (dof[k] > (scalcal_real)0.5) s = chi[k] / dof[k] > 1 ? chi[k] / dof[k] : 1;
+      settled = settled && SC_FABS(s / scale[k] - 1) < (scalcal_real)1e-3;
+      scale[k] = s;
+      q->weight[k] = 1 / SC_SQRT(s);
+    }
+    if (settled) break;
+  }
+  r->segment_scale = scale[0], r->rest_scale = scale[1], r->segment_dof = dof[0], r->rest_dof = dof[1];
+  return r->termination == SCALCAL_FIT_CONVERGED ? SCALCAL_OK : SCALCAL_E_NOT_CONVERGED;
+}
+
+/* The standard errors, achieved (with the groups' scales) and predicted (without), and the scaled condition
+ * of the normal matrix; x the nine parameters at p. */
+static scalcal_status errors_of(rt_problem* q, const scalcal_real* p, int P, scalcal_rate_table_report* r,
+                                scalcal_real x[9]) {
+  scalcal_real N[SC_P * SC_P], cov[SC_P * SC_P], D[SC_P], S[SC_P * SC_P], ev[SC_P];
+  int k, a, b;
+  accumulate(q, p, N, cov);
+  if (!sc_spd_inverse(P, N, cov)) return SCALCAL_E_NOT_IDENTIFIABLE;
+  expand(q, p, x);
+  for (k = 0; k < 9; ++k) {
+    const int j = k < 3 ? k : k < 6 ? (P == 4 ? 3 : k) : (P == 9 ? k : -1);
+    r->parameters[k] = j >= 0 ? x[k] : (scalcal_real)NAN;
+    r->standard_error[k] = j >= 0 ? SC_SQRT(cov[j * P + j] > 0 ? cov[j * P + j] : 0) : (scalcal_real)NAN;
+  }
+  q->weight[0] = q->weight[1] = 1;
+  accumulate(q, p, N, cov);
+  for (a = 0; a < P; ++a) D[a] = 1 / SC_SQRT(N[a * P + a] > RT_TINY ? N[a * P + a] : RT_TINY);
+  for (a = 0; a < P; ++a)
+    for (b = 0; b < P; ++b) S[a * P + b] = D[a] * N[a * P + b] * D[b];
+  sc_eigen_symmetric(P, S, ev, 0);
+  r->normal_condition = ev[P - 1] / (ev[0] > RT_TINY ? ev[0] : RT_TINY);
+  if (!sc_spd_inverse(P, N, cov)) return SCALCAL_E_NOT_IDENTIFIABLE;
+  for (k = 0; k < 9; ++k) {
+    const int j = k < 3 ? k : k < 6 ? (P == 4 ? 3 : k) : (P == 9 ? k : -1);
+    r->predicted_std[k] = j >= 0 ? SC_SQRT(cov[j * P + j] > 0 ? cov[j * P + j] : 0) : (scalcal_real)NAN;
+  }
+  return SCALCAL_OK;
+}
+
+/* The calibration: physical = G^-1 (raw - o), nominal gain 1 as the host writes it; the host's noise (the
+ * rests' median |sd| / sqrt(3) through the matrix's Frobenius norm / sqrt(3)). `values` is scratch. */
+static scalcal_status calibration_of(const scalcal_pose_set* set, const scalcal_rate_table_options* options,
+                                     const scalcal_rate_table_report* r, const scalcal_real x[9], uint32_t total,
+                                     scalcal_real* values, scalcal_calibration* out) {
+  scalcal_real Ginv[9], frob = 0, MtM[9], ev[3], rms = 0;
+  uint32_t i, n = 0;
+  int k, a, b;
+  memset(out, 0, sizeof *out);
+  if (!inverse_meter(x, Ginv)) return SCALCAL_E_DEGENERATE;
+  out->model = r->model;
+  out->magnitude = options->rate;
+  out->nominal_gain = 1;
+  out->nominal_gain_std = (scalcal_real)NAN;
+  out->positions = r->segments;
+  out->samples = total;
   for (k = 0; k < 3; ++k) {
-    q.step[k] = (scalcal_real)1e-6 * q.gain0 * top;
+    out->offset[k] = x[k] + set->origin[k];
+    out->gain[k] = x[3 + k];
+    out->scale_deviation[k] = x[3 + k] - 1;
+    out->nonorthogonality[k] = x[6 + k];
+    out->bias_std[k] = r->standard_error[k];
+    out->gain_std[k] = out->scale_deviation_std[k] = r->standard_error[3 + k];
+    out->nonorthogonality_std[k] = r->standard_error[6 + k];
+  }
+  for (k = 0; k < 9; ++k) out->matrix[k / 3][k % 3] = Ginv[k], frob += Ginv[k] * Ginv[k];
+  for (i = 0; i < set->count; ++i) {
+    scalcal_real m[3], sd[3], c[3];
+    pose_stats(set, i, m, sd);
+    if (r->rest[i]) {
+      values[n++] = sc_norm3(sd) / SC_SQRT(3);
+    } else {
+      m[0] -= x[0], m[1] -= x[1], m[2] -= x[2];
+      sc_mul3v(Ginv, m, c);
+      rms += (sc_norm3(c) - options->rate) * (sc_norm3(c) - options->rate);
+    }
+  }
+  sort(values, n);
+  out->noise = values[n / 2] * SC_SQRT(frob) / SC_SQRT(3);
+  out->residual_rms = SC_SQRT(rms / (scalcal_real)r->segments);
+  for (a = 0; a < 3; ++a)
+    for (b = 0; b < 3; ++b) MtM[a * 3 + b] = Ginv[a] * Ginv[b] + Ginv[3 + a] * Ginv[3 + b] + Ginv[6 + a] * Ginv[6 + b];
+  sc_eigen_symmetric(3, MtM, ev, 0);
+  if (!(ev[0] > 0 && ev[2] <= RT_MATRIX_CONDITION * RT_MATRIX_CONDITION * ev[0])) return SCALCAL_E_DEGENERATE;
+  for (k = 0; k < 3; ++k)
+    if (!sc_finite(out->offset[k]) || !sc_finite(out->gain[k]) || !sc_finite(out->nonorthogonality[k]) ||
+        !sc_finite(out->matrix[k][0]) || !sc_finite(out->matrix[k][1]) || !sc_finite(out->matrix[k][2]))
+      return SCALCAL_E_NOT_FINITE;
+  return SCALCAL_OK;
+}
+
+scalcal_status scalcal_fit_rate_table(const scalcal_pose_set* set, const scalcal_rate_table_options* options,
+                                      scalcal_calibration* cal, scalcal_rate_table_report* report) {
+  scalcal_rate_table_report local;
+  scalcal_rate_table_report* r = report ? report : &local;
+  scalcal_real o[3] = {0, 0, 0}, values[SCALCAL_MAX_POSES], p[SC_P], x[9];
+  scalcal_calibration out;
+  rt_problem q;
+  uint32_t total = 0;
+  int k, P;
+  scalcal_status status;
+  memset(r, 0, sizeof *r);
+  if ((status = check_inputs(set, options, cal)) != SCALCAL_OK) return status;
+  if ((status = start_of(set, options, r, o, &q, values, &total)) != SCALCAL_OK) return status;
+  P = model_of(set, options, r, o);
+  if (P == 0) return SCALCAL_E_NOT_IDENTIFIABLE;
+  if (r->segments + 3 < (uint32_t)P) return SCALCAL_E_TOO_FEW_POSES;
+  q.free = P;
+  for (k = 0; k < 3; ++k) {
+    q.step[k] = (scalcal_real)1e-6 * q.gain0 * options->rate;
     q.step[3 + k] = (scalcal_real)1e-6 * q.gain0;
     q.step[6 + k] = (scalcal_real)1e-6;
   }
   for (k = 0; k < SC_P; ++k) p[k] = 0;
   for (k = 0; k < 3; ++k) p[k] = o[k], p[3 + k] = k == 0 || P != 4 ? q.gain0 : 0;
   if (P == 4) p[3] = q.gain0; /* the host's reduce: cbrt of three equal gains */
-  /* The variance components: refit until each group's scale settles (at most 8 passes). */
-  for (pass = 0; pass < 8; ++pass) {
-    int settled = 1;
-    r->iterations += minimise(&q, p, options->max_iterations, &r->termination);
-    accumulate(&q, p, N, cov);
-    if (!sc_spd_inverse(P, N, N)) return SCALCAL_E_NOT_IDENTIFIABLE;
-    groups_at(&q, p, N, chi, dof);
-    for (k = 0; k < 2; ++k) {
-      scalcal_real s = scale[k];
-      if (dof[k] > (scalcal_real)0.5) s = chi[k] / dof[k] > 1 ? chi[k] / dof[k] : 1;
-      settled = settled && SC_FABS(s / scale[k] - 1) < (scalcal_real)1e-3;
-      scale[k] = s;
-      q.weight[k] = 1 / SC_SQRT(s);
-    }
-    if (settled) break;
-  }
-  r->segment_scale = scale[0], r->rest_scale = scale[1], r->segment_dof = dof[0], r->rest_dof = dof[1];
-  if (r->termination != SCALCAL_FIT_CONVERGED) return SCALCAL_E_NOT_CONVERGED;
-  /* The achieved covariance (with the scales), the predicted one (without), the scaled condition. */
-  accumulate(&q, p, N, cov);
-  if (!sc_spd_inverse(P, N, cov)) return SCALCAL_E_NOT_IDENTIFIABLE;
-  expand(&q, p, x);
-  for (k = 0; k < 9; ++k) {
-    const int j = k < 3 ? k : k < 6 ? (P == 4 ? 3 : k) : (P == 9 ? k : -1);
-    r->parameters[k] = j >= 0 ? x[k] : (scalcal_real)NAN;
-    r->standard_error[k] = j >= 0 ? SC_SQRT(cov[j * P + j] > 0 ? cov[j * P + j] : 0) : (scalcal_real)NAN;
-  }
-  q.weight[0] = q.weight[1] = 1;
-  accumulate(&q, p, N, cov);
-  {
-    scalcal_real D[SC_P], S[SC_P * SC_P], ev[SC_P];
-    int a, b;
-    for (a = 0; a < P; ++a) D[a] = 1 / SC_SQRT(N[a * P + a] > RT_TINY ? N[a * P + a] : RT_TINY);
-    for (a = 0; a < P; ++a)
-      for (b = 0; b < P; ++b) S[a * P + b] = D[a] * N[a * P + b] * D[b];
-    sc_eigen_symmetric(P, S, ev, 0);
-    r->normal_condition = ev[P - 1] / (ev[0] > RT_TINY ? ev[0] : RT_TINY);
-  }
-  if (!sc_spd_inverse(P, N, cov)) return SCALCAL_E_NOT_IDENTIFIABLE;
-  for (k = 0; k < 9; ++k) {
-    const int j = k < 3 ? k : k < 6 ? (P == 4 ? 3 : k) : (P == 9 ? k : -1);
-    r->predicted_std[k] = j >= 0 ? SC_SQRT(cov[j * P + j] > 0 ? cov[j * P + j] : 0) : (scalcal_real)NAN;
-  }
-  /* The calibration: physical = G^-1 (raw - o), nominal gain 1 as the host writes it. */
-  memset(&out, 0, sizeof out);
-  {
-    scalcal_real Ginv[9], frob = 0, MtM[9], ev[3], rms = 0;
-    uint32_t n = 0;
-    int a, b;
-    if (!inverse_meter(x, Ginv)) return SCALCAL_E_DEGENERATE;
-    out.model = r->model;
-    out.magnitude = options->rate;
-    out.nominal_gain = 1;
-    out.nominal_gain_std = (scalcal_real)NAN;
-    out.positions = segments;
-    out.samples = total;
-    for (k = 0; k < 3; ++k) {
-      out.offset[k] = x[k] + set->origin[k];
-      out.gain[k] = x[3 + k];
-      out.scale_deviation[k] = x[3 + k] - 1;
-      out.nonorthogonality[k] = x[6 + k];
-      out.bias_std[k] = r->standard_error[k];
-      out.gain_std[k] = out.scale_deviation_std[k] = r->standard_error[3 + k];
-      out.nonorthogonality_std[k] = r->standard_error[6 + k];
-    }
-    for (k = 0; k < 9; ++k) out.matrix[k / 3][k % 3] = Ginv[k], frob += Ginv[k] * Ginv[k];
-    /* The host's noise: the rests' median |sd| / sqrt(3) through the matrix's Frobenius norm / sqrt(3). */
-    for (i = 0; i < set->count; ++i) {
-      scalcal_real m[3], sd[3], c[3];
-      pose_stats(set, i, m, sd);
-      if (r->rest[i]) {
-        values[n++] = sc_norm3(sd) / SC_SQRT(3);
-      } else {
-        m[0] -= x[0], m[1] -= x[1], m[2] -= x[2];
-        sc_mul3v(Ginv, m, c);
-        rms += (sc_norm3(c) - options->rate) * (sc_norm3(c) - options->rate);
-      }
-    }
-    sort(values, n);
-    out.noise = values[n / 2] * SC_SQRT(frob) / SC_SQRT(3);
-    out.residual_rms = SC_SQRT(rms / (scalcal_real)segments);
-    for (a = 0; a < 3; ++a)
-      for (b = 0; b < 3; ++b)
-        MtM[a * 3 + b] = Ginv[a] * Ginv[b] + Ginv[3 + a] * Ginv[3 + b] + Ginv[6 + a] * Ginv[6 + b];
-    sc_eigen_symmetric(3, MtM, ev, 0);
-    if (!(ev[0] > 0 && ev[2] <= RT_MATRIX_CONDITION * RT_MATRIX_CONDITION * ev[0])) return SCALCAL_E_DEGENERATE;
-  }
-  for (k = 0; k < 3; ++k)
-    if (!sc_finite(out.offset[k]) || !sc_finite(out.gain[k]) || !sc_finite(out.nonorthogonality[k]) ||
-        !sc_finite(out.matrix[k][0]) || !sc_finite(out.matrix[k][1]) || !sc_finite(out.matrix[k][2]))
-      return SCALCAL_E_NOT_FINITE;
+  if ((status = fit_groups(&q, p, P, options, r)) != SCALCAL_OK) return status;
+  if ((status = errors_of(&q, p, P, r, x)) != SCALCAL_OK) return status;
+  if ((status = calibration_of(set, options, r, x, total, values, &out)) != SCALCAL_OK) return status;
   *cal = out;
   return SCALCAL_OK;
 }
