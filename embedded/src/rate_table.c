@@ -131,6 +131,23 @@ static scalcal_real residual(const rt_problem* q, const scalcal_real x[9], uint3
   return (scalcal_real)NAN;
 }
 
+/* One row's weighted Jacobian in the model's unknowns: central differences in the nine, mapped to the
+ * model's (bias3's one gain is the sum of the three gains' columns). */
+static void row_jacobian(const rt_problem* q, const scalcal_real x[9], uint32_t row, scalcal_real w, scalcal_real* J) {
+  scalcal_real Jf[9];
+  int a, group;
+  for (a = 0; a < 9; ++a) {
+    scalcal_real xa[9], xb[9];
+    memcpy(xa, x, sizeof xa);
+    memcpy(xb, x, sizeof xb);
+    xa[a] += q->step[a];
+    xb[a] -= q->step[a];
+    Jf[a] = w * (residual(q, xa, row, &group) - residual(q, xb, row, &group)) / (2 * q->step[a]);
+  }
+  for (a = 0; a < q->free; ++a) J[a] = Jf[a];
+  if (q->free == 4) J[3] = Jf[3] + Jf[4] + Jf[5];
+}
+
 /* The weighted normal equations N = J^T J, g = J^T r and cost r^T r at p (J by central differences in
  * the nine, mapped to the model's). With N null, the cost alone. */
 static scalcal_real accumulate(const rt_problem* q, const scalcal_real* p, scalcal_real* N, scalcal_real* g) {
@@ -145,17 +162,8 @@ static scalcal_real accumulate(const rt_problem* q, const scalcal_real* p, scalc
     const scalcal_real w = q->weight[group], r = w * r0;
     cost += r * r;
     if (N) {
-      scalcal_real Jf[9], J[SC_P];
-      for (a = 0; a < 9; ++a) {
-        scalcal_real xa[9], xb[9];
-        memcpy(xa, x, sizeof xa);
-        memcpy(xb, x, sizeof xb);
-        xa[a] += q->step[a];
-        xb[a] -= q->step[a];
-        Jf[a] = w * (residual(q, xa, row, &group) - residual(q, xb, row, &group)) / (2 * q->step[a]);
-      }
-      for (a = 0; a < P; ++a) J[a] = Jf[a];
-      if (P == 4) J[3] = Jf[3] + Jf[4] + Jf[5];
+      scalcal_real J[SC_P];
+      row_jacobian(q, x, row, w, J);
       for (a = 0; a < P; ++a) {
         g[a] += J[a] * r;
         for (b = 0; b < P; ++b) N[a * P + b] += J[a] * J[b];
@@ -215,18 +223,9 @@ static void groups_at(const rt_problem* q, const scalcal_real* p, const scalcal_
   expand(q, p, x);
   chi[0] = chi[1] = dof[0] = dof[1] = 0;
   for (row = 0; row < q->rows; ++row) {
-    scalcal_real Jf[9], J[SC_P], h = 0;
+    scalcal_real J[SC_P], h = 0;
     const scalcal_real r = residual(q, x, row, &group), w = q->weight[group];
-    for (a = 0; a < 9; ++a) {
-      scalcal_real xa[9], xb[9];
-      memcpy(xa, x, sizeof xa);
-      memcpy(xb, x, sizeof xb);
-      xa[a] += q->step[a];
-      xb[a] -= q->step[a];
-      Jf[a] = w * (residual(q, xa, row, &group) - residual(q, xb, row, &group)) / (2 * q->step[a]);
-    }
-    for (a = 0; a < P; ++a) J[a] = Jf[a];
-    if (P == 4) J[3] = Jf[3] + Jf[4] + Jf[5];
+    row_jacobian(q, x, row, w, J);
     for (a = 0; a < P; ++a)
       for (b = 0; b < P; ++b) h += J[a] * Ninv[a * P + b] * J[b];
     chi[group] += r * r;
