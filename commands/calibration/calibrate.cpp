@@ -418,6 +418,8 @@ CalibrateResult calibrate(const CalibrateRequest& q, CalibrationInput in, const 
     out.detection = in.detection;
     out.chosen = in.chosen;
     out.rows = in.log->size();
+    out.chunk_rows = q.chunk_rows;
+    out.chunks = q.chunk_rows > 0 ? in.chunks : 0;
     out.motion = in.motion;
     // The median time step's reciprocal, to 12 digits (a log's time stamps carry no more).
     out.sample_rate = std::stod(number(1 / in.detection.sample_period, 12));

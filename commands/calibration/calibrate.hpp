@@ -40,6 +40,7 @@ struct CalibrateRequest {
   double rate = 0;                  // Hz: a raw log whose row k is at k / rate (0: its time column)
   StaticIntervalOptions intervals;  // for a raw log
   bool intervals_given = false;     // --window, --threshold-factor, --min-interval or --still given: no choosing
+  int chunk_rows = 0;               // --chunk: a raw log taken in chunks of this many rows (0: whole)
   std::string weights = "auto";     // auto, samples or positions
   bool keep_outliers = false;
   int suggest = 3;  // positions to suggest adding
@@ -67,6 +68,7 @@ struct CalibrationInput {
   IntervalDetection detection;
   LogMotion motion;                       // a raw log's: its noise, how much it moves, the modulus in motion
   std::optional<DetectionChoice> chosen;  // the detection chosen for this log (adaptive_detection.hpp)
+  int chunks = 0;                         // the chunks the log's stream took (1: the whole log at once)
   bool every_sample = false;              // a tumbling log: every usable sample is a position
   std::vector<int> sample_index;          // with every_sample: each position's sample in the log
   std::optional<Instrument> instrument;   // as given or as the log shows it; empty when neither says
@@ -134,6 +136,7 @@ struct CalibrateResult {
   std::optional<IntervalDetection> detection;  // a raw log's
   std::optional<DetectionChoice> chosen;       // how its detection was chosen
   int rows = 0;                                // a raw log's rows
+  int chunk_rows = 0, chunks = 0;              // --chunk: the stream's chunk and how many it took (0: whole)
   double sample_rate = NAN;                    // a raw log's, Hz
   ProgramQuality program;
   double t95 = NAN;                                   // Student's t at 97.5 % for dof (95 % two-sided), NaN for dof < 1

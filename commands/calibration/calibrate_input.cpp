@@ -6,6 +6,7 @@
 
 #include "commands/calibration/calibrate.hpp"
 #include "commands/core/usage_error.hpp"
+#include "numeric/calibration/calibration_stream.hpp"
 #include "numeric/calibration/measurements_csv.hpp"
 #include "numeric/calibration/model_choice.hpp"
 
@@ -194,20 +195,39 @@ std::optional<double> detection_score(const RawLog& log, const IntervalDetection
 // The detection of a raw log's still poses, chosen among the candidates by the predicted errors of
 // the calibration each gives: under the requested model, else the richest linear model under which
 // some candidate calibrates.
-void choose_for_log(const CalibrateRequest& o, CalibrationInput& in) {
+void choose_for_log(const CalibrateRequest& o, const CalibrationStream& stream, CalibrationInput& in) {
   std::vector<ModelKind> models;
   if (o.model)
     models.push_back(*o.model);
   else
     for (const char* name : {"paper9", "axis6", "bias3"}) models.push_back(*parse_model(name));
   for (const ModelKind model : models) {
-    const auto chosen = choose_detection(
-        *in.log, o.intervals, [&](const IntervalDetection& d) { return detection_score(*in.log, d, o, model); });
+    const auto chosen =
+        stream.choose([&](const IntervalDetection& d) { return detection_score(*in.log, d, o, model); });
     if (!chosen) continue;
     in.chosen = chosen;
     in.detection = chosen->detection;
     return;
   }
+}
+
+// The log through the stream's detection: as one last chunk (the batch), or in chunks of
+// --chunk rows as a logger delivers them; with the adaptive choice's candidates unless the
+// detection's options were given.
+CalibrationStream stream_of(const RawLog& log, const CalibrateRequest& o, int& chunks) {
+  CalibrationStream stream(log.file, o.intervals, !o.intervals_given);
+  const int rows = o.chunk_rows > 0 ? o.chunk_rows : std::max(log.size(), 1);
+  for (int begin = 0; begin < log.size(); begin += rows) {
+    const int end = std::min(log.size(), begin + rows);
+    RawLog chunk;
+    chunk.file = log.file;
+    chunk.t.assign(log.t.begin() + begin, log.t.begin() + end);
+    chunk.samples.assign(log.samples.begin() + begin, log.samples.begin() + end);
+    chunk.lines.assign(log.lines.begin() + begin, log.lines.begin() + end);
+    stream.add(chunk, end == log.size());
+  }
+  chunks = stream.chunks();
+  return stream;
 }
 
 }  // namespace
@@ -222,7 +242,8 @@ CalibrationInput calibration_input(RawLog log, const CalibrateRequest& o) {
   in.log = std::move(log);
   if (o.modulus == Modulus::projection)
     throw InputError(o.file, 0, "a raw log has no nominal directions: the projection modulus needs them");
-  in.detection = detect_static_intervals(*in.log, o.intervals);
+  const CalibrationStream stream = stream_of(*in.log, o, in.chunks);
+  in.detection = stream.detection();
   const auto& d = in.detection;
   if (d.nonfinite > 0)
     in.warnings.push_back({o.file, std::to_string(d.nonfinite) +
@@ -242,7 +263,7 @@ CalibrationInput calibration_input(RawLog log, const CalibrateRequest& o) {
       throw InputError(o.file, 0, std::to_string(in.data.size()) + " usable samples; " + need);
     return in;
   }
-  if (!o.intervals_given) choose_for_log(o, in);
+  if (!o.intervals_given) choose_for_log(o, stream, in);
   if (d.intervals.size() < static_cast<std::size_t>(needed))
     throw InputError(o.file, 0,
                      in.motion.mostly_moving() && !d.floor_from_still ? moving_log_message(in.motion, d, need)

@@ -161,6 +161,7 @@ void add_log(const CalibrateResult& r, Json& j) {
   j["noise_floor_source"] = d ? Json(d->floor_from_still ? "still" : "quiet_windows") : Json();
   j["static_threshold"] = d ? number_or_null(d->threshold) : Json();
   j["sample_rate"] = number_or_null(r.sample_rate);
+  if (r.chunk_rows > 0) j["stream"] = Json{{"chunk_rows", r.chunk_rows}, {"chunks", r.chunks}};
   if (r.chosen)
     j["detection_choice"] =
         Json{{"window_seconds", r.chosen->options.window_seconds},

@@ -79,6 +79,14 @@ Option calibrate_model_option() {
   return model;
 }
 
+// --chunk: a raw log as a stream (numeric/calibration/calibration_stream.hpp).
+Option chunk_option() {
+  return integer_option("--chunk", 1, 1000000000,
+                        "take a raw log in chunks of this many rows, as a logger delivers them: each sample is judged "
+                        "still or moving once, from the rows up to half a window after it, never again",
+                        "rows", "", "the whole log at once");
+}
+
 }  // namespace
 
 const CommandTable& calibrate_table() {
@@ -134,6 +142,7 @@ const CommandTable& calibrate_table() {
                        shortest_text(d.threshold_factor)),
        positive_option("--min-interval", "the shortest static interval that counts as a position", "seconds",
                        shortest_text(d.min_seconds)),
+       chunk_option(),
        choice_option("--weights", {"auto", "samples", "positions"},
                      "each position's weight: its number of samples, or 1; auto: positions for a raw log, samples "
                      "otherwise",
@@ -203,6 +212,7 @@ CalibrateRequest calibrate_request(const Values& v) {
     throw UsageError("--magnitude column:NAME is a rate table's (--instrument gyro)");
   q.modulus = v.text("--modulus") == "projection" ? Modulus::projection : Modulus::norm;
   read_log_options(v, q.format, q.rate, q.intervals);
+  if (v.given("--chunk")) q.chunk_rows = static_cast<int>(v.integer("--chunk"));
   q.intervals_given =
       v.given("--window") || v.given("--threshold-factor") || v.given("--min-interval") || v.given("--still");
   q.weights = v.text("--weights");

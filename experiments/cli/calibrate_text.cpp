@@ -44,6 +44,9 @@ void header(const CalibrateResult& r, std::ostream& t) {
       << " samples, noise floor " << d.still_variance << " from "
       << (d.floor_from_still ? "the first --still seconds" : "the log's quiet windows") << ", threshold " << d.threshold
       << ")\n";
+    if (r.chunk_rows > 0)
+      t << "taken as a stream: " << r.chunks << " chunks of " << r.chunk_rows
+        << " rows, each sample judged once from the rows up to half a window after it\n";
     if (r.chosen) {
       const auto& c = *r.chosen;
       t << "detection chosen of " << c.scored << " candidates: window " << c.options.window_seconds

@@ -22,15 +22,29 @@ std::vector<PositionSamples> interval_positions(const RawLog& log, const Interva
   return out;
 }
 
+std::vector<StaticIntervalOptions> detection_candidates(const StaticIntervalOptions& base) {
+  std::vector<StaticIntervalOptions> out{base};
+  StaticIntervalOptions o = base;
+  for (double window : kDetectionWindows)
+    for (double threshold : kDetectionThresholds)
+      for (double shortest : kDetectionShortest) {
+        o.window_seconds = window;
+        o.threshold_factor = threshold;
+        o.min_seconds = shortest;
+        out.push_back(o);
+      }
+  return out;
+}
+
 std::optional<DetectionChoice> choose_detection(
-    const RawLog& log, const StaticIntervalOptions& base,
-    const std::function<std::optional<double>(const IntervalDetection&)>& score) {
+    const std::function<IntervalDetection(const StaticIntervalOptions&, int)>& detect,
+    const StaticIntervalOptions& base, const std::function<std::optional<double>(const IntervalDetection&)>& score) {
   std::optional<DetectionChoice> best;
   int scored = 0;
-  const auto try_options = [&](const StaticIntervalOptions& o, int* positions) -> std::optional<double> {
+  const auto try_options = [&](const StaticIntervalOptions& o, int k, int* positions) -> std::optional<double> {
     IntervalDetection d;
     try {
-      d = detect_static_intervals(log, o);
+      d = detect(o, k);
     } catch (const InputError&) {  // a window longer than the log, say
       return std::nullopt;
     }
@@ -47,23 +61,23 @@ std::optional<DetectionChoice> choose_detection(
     return s;
   };
   // The defaults first: they are what the choice is measured against.
+  const std::vector<StaticIntervalOptions> candidates = detection_candidates(base);
   int default_positions = 0;
-  const auto first = try_options(base, &default_positions);
-  StaticIntervalOptions o = base;
-  for (double window : kDetectionWindows)
-    for (double threshold : kDetectionThresholds)
-      for (double shortest : kDetectionShortest) {
-        o.window_seconds = window;
-        o.threshold_factor = threshold;
-        o.min_seconds = shortest;
-        try_options(o, nullptr);
-      }
+  const auto first = try_options(candidates[0], 0, &default_positions);
+  for (std::size_t k = 1; k < candidates.size(); ++k) try_options(candidates[k], static_cast<int>(k), nullptr);
   if (best) {
     best->default_score = first ? *first : NAN;
     best->default_positions = default_positions;
     best->scored = scored;
   }
   return best;
+}
+
+std::optional<DetectionChoice> choose_detection(
+    const RawLog& log, const StaticIntervalOptions& base,
+    const std::function<std::optional<double>(const IntervalDetection&)>& score) {
+  return choose_detection([&](const StaticIntervalOptions& o, int) { return detect_static_intervals(log, o); }, base,
+                          score);
 }
 
 }  // namespace scalcal

@@ -41,5 +41,12 @@ struct DetectionChoice {
 std::optional<DetectionChoice> choose_detection(
     const RawLog& log, const StaticIntervalOptions& base,
     const std::function<std::optional<double>(const IntervalDetection&)>& score);
+// The same over any detector: detect(options, k) gives candidate k's detection (k = 0: `base`, then the
+// candidates in kDetectionWindows x kDetectionThresholds x kDetectionShortest order) or throws InputError.
+std::optional<DetectionChoice> choose_detection(
+    const std::function<IntervalDetection(const StaticIntervalOptions&, int)>& detect,
+    const StaticIntervalOptions& base, const std::function<std::optional<double>(const IntervalDetection&)>& score);
+// The candidates' options, base's --still kept: base first, then kDetectionCandidates more.
+std::vector<StaticIntervalOptions> detection_candidates(const StaticIntervalOptions& base);
 
 }  // namespace scalcal

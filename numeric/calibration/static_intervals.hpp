@@ -69,9 +69,12 @@ struct IntervalDetection {
 // by `shift`, a sample of the log, for accuracy); NaN where the window is incomplete or holds an
 // unusable sample.
 std::vector<double> window_variances(const RawLog& log, const std::vector<char>& usable, int w, const Vec3& shift);
+// The variance norm of a window of w samples from their (shifted) sum and sum of squares.
+double window_variance_norm(const Vec3& sum, const Vec3& sum2, int w);
 
-// Throws InputError (the log's file) when the log is shorter than the window, when the still period
-// (still_seconds > 0) is, or when no window has any noise (a constant or clipped signal).
+// The whole log as one last chunk of the stream's detection (pose_stream.hpp). Throws InputError
+// (the log's file) when the log is shorter than the window, when the still period (still_seconds > 0)
+// is, or when no window has any noise (a constant or clipped signal).
 IntervalDetection detect_static_intervals(const RawLog& log, const StaticIntervalOptions& options = {});
 
 }  // namespace scalcal

@@ -63,5 +63,36 @@ TEST_P(RealLog, AsGoodAsTheIndependentFit) {
 
 INSTANTIATE_TEST_SUITE_P(Logs, RealLog, testing::Values("xsens", "mpu6050", "nilspod_ferraris", "qmc5883l"));
 
+// Taken as a stream (--chunk: 7 rows, 100 rows at a time), each sample judged once from the rows
+// before it: the same number of poses as the independent script's batch detection finds, the same
+// model, and the RMS within the same 1.05 of its fit's.
+class StreamedRealLog : public testing::TestWithParam<std::string> {};
+
+TEST_P(StreamedRealLog, AsGoodAsTheIndependentFit) {
+  const nlohmann::json fit = independent_fits()["logs"][GetParam()];
+  const std::string path = find_log(fit["file"].get<std::string>());
+  if (path.empty()) GTEST_SKIP() << fit["file"] << " is in neither data/ nor ../shared/data";
+  for (int chunk : {7, 100}) {
+    commands::CalibrateRequest q;
+    q.file = path;
+    q.magnitude = fit["magnitude"].is_null() ? "auto" : std::to_string(fit["magnitude"].get<double>());
+    q.rate = fit["rate"].is_null() ? 0.0 : fit["rate"].get<double>();
+    q.suggest = 0;
+    q.intervals_given = true;
+    q.chunk_rows = chunk;
+    const commands::CalibrateResult r = commands::calibrate(q);
+    EXPECT_EQ(r.chunks, (r.rows + chunk - 1) / chunk);
+    EXPECT_EQ(static_cast<int>(r.positions.size()), fit["intervals"].get<int>()) << chunk;
+    EXPECT_EQ(model_name(r.model), fit["model"].get<std::string>()) << r.model_reason;
+    EXPECT_TRUE(r.converged()) << r.fit.estimate.summary.message;
+    double ss = 0;
+    for (const auto& p : r.positions) ss += p.residual * p.residual;
+    const double rms = std::sqrt(ss / static_cast<double>(r.positions.size())) / r.fit.magnitude;
+    EXPECT_LT(rms, 1.05 * fit["rms_means_relative"].get<double>()) << GetParam() << " in chunks of " << chunk;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Logs, StreamedRealLog, testing::Values("xsens", "mpu6050", "nilspod_ferraris", "qmc5883l"));
+
 }  // namespace
 }  // namespace scalcal

@@ -1,0 +1,60 @@
+// Still-pose detection as a stream: a log taken in chunks as a logger delivers it, each sample
+// judged once, when what its decision needs has arrived, and never judged again. The rules are
+// static_intervals.hpp's; what they take from the whole log they take from the log so far: the
+// noise floor (the median of the quiet windows) from the windows seen, the sample period from the
+// steps seen, the saturation rails from the extremes seen, the field's radius from the spread
+// seen. So the whole log given as one last chunk is the batch detection, decision for decision
+// (detect_static_intervals is exactly that), and a log given in small chunks decides each sample
+// with less knowledge: until the windows whose variance is white noise, not smooth motion (as the C
+// library's detector judges), make up the 5 % of the windows the floor's quantile starts from, it
+// decides nothing, so a log that starts in slow motion does not take that motion for the floor.
+#pragma once
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "numeric/calibration/log_stream.hpp"
+#include "numeric/calibration/static_intervals.hpp"
+
+namespace scalcal {
+
+// White windows seen before a stream's floor is trusted, in windows: one window's worth of windows
+// (a still stretch of two windows' length).
+inline constexpr int kFloorWhiteWindows = 1;
+
+// The still poses of one set of options, judged as the log stream's samples are decided.
+class StillPoseDetector {
+ public:
+  explicit StillPoseDetector(StaticIntervalOptions options);
+  // Judges what the stream's samples decided so far allow (everything once the stream ended).
+  void advance(const LogStream& stream);
+  // The poses judged so far. Once the stream has ended it throws InputError where the batch
+  // detection does (no usable sample, no complete window, a still period too short, no noise).
+  IntervalDetection detection(const LogStream& stream) const;
+  const StaticIntervalOptions& options() const { return options_; }
+
+ private:
+  bool fix_window(const LogStream& stream);
+  void extend_variances(const LogStream& stream);
+  bool update_floor(const LogStream& stream);
+  void judge(const LogStream& stream, int upto);
+  void close_run(const LogStream& stream);
+  void settle_pending(const LogStream& stream);
+
+  StaticIntervalOptions options_;
+  int window_ = 0;                 // samples, 0 until fixed
+  std::vector<double> variances_;  // per sample, as far as computed
+  std::vector<double> finite_;     // the finite ones, in order: the floor's data
+  std::size_t floor_windows_ = 0;  // finite_.size() when the floor was last computed
+  int white_ = 0;                  // white windows seen
+  double floor_ = 0, threshold_ = 0;
+  bool floor_from_still_ = false;
+  int judged_ = 0;                          // samples judged static or not
+  std::optional<std::pair<int, int>> run_;  // the open still run
+  std::optional<StaticInterval> pending_;   // the last merged run, which a run a short break later may join
+  int pending_last_begin_ = 0;              // the last run merged into it
+  std::vector<StaticInterval> intervals_;
+  int short_runs_ = 0, drifting_runs_ = 0, longest_samples_ = 0;
+};
+
+}  // namespace scalcal
