@@ -66,7 +66,14 @@ def main(out):
              "class ConvergenceError(Error, RuntimeError):",
              "    result: Any",
              "class ScalcalWarning(UserWarning): ...", "",
-             "def program(name: str) -> Any: ...", ""]
+             "def program(name: str) -> Any: ...", "",
+             "class PoseStream:",
+             "    def __init__(self, name: str = 'stream', *, still: float | None = None, window: float | None = None,",
+             "                 threshold_factor: float | None = None, min_interval: float | None = None) -> None: ...",
+             "    def add(self, t: ArrayLike, samples: ArrayLike, last: bool = False) -> None: ...",
+             "    def poses(self) -> list[dict[str, Any]]: ...",
+             "    def state(self) -> dict[str, Any]: ...",
+             "    def calibrate(self, **options: Any) -> Any: ...", ""]
     lines += [stub(t) for t in _scalcal.tables()]
     with open(out, "w") as f:
         f.write("\n".join(lines))

@@ -29,6 +29,8 @@
 #include "python/arguments.hpp"
 #include "python/bindings.hpp"
 #include "python/from_numpy.hpp"
+#include "python/library_lock.hpp"
+#include "python/stream.hpp"
 #include "python/to_python.hpp"
 #include "symbolic/family.hpp"
 
@@ -88,25 +90,6 @@ py::list tables() {
   }
   return out;
 }
-
-// One call into the library at a time: GiNaC/CLN (program names, families) and Ipopt/MUMPS are not
-// thread-safe, and two Python threads calling at once crashed the interpreter. The lock is taken
-// with the GIL released, so a thread waiting for it never holds up the one that has it.
-std::mutex& library_mutex() {
-  static std::mutex m;
-  return m;
-}
-
-class LibraryLock {
- public:
-  LibraryLock() {
-    py::gil_scoped_release free;
-    library_mutex().lock();
-  }
-  ~LibraryLock() { library_mutex().unlock(); }
-  LibraryLock(const LibraryLock&) = delete;
-  LibraryLock& operator=(const LibraryLock&) = delete;
-};
 
 // Interval at which a running command lets Python see Ctrl-C.
 constexpr auto kSignalPoll = std::chrono::milliseconds(50);
@@ -219,4 +202,5 @@ PYBIND11_MODULE(_scalcal, m) {
   m.def("run", &sp::run, py::arg("name"), py::arg("args"), py::arg("kwargs"));
   m.def("program", &sp::program, py::arg("name"));
   m.def("sweep_tasks", &sp::sweep_tasks, py::arg("args"), py::arg("kwargs"));
+  sp::bind_stream(m);
 }

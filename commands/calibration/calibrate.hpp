@@ -16,6 +16,7 @@
 #include "commands/core/warning.hpp"
 #include "numeric/calibration/adaptive_detection.hpp"
 #include "numeric/calibration/any_units.hpp"
+#include "numeric/calibration/calibration_stream.hpp"
 #include "numeric/calibration/instrument.hpp"
 #include "numeric/calibration/log_motion.hpp"
 #include "numeric/calibration/outlier_samples.hpp"
@@ -159,6 +160,8 @@ CalibrationInput read_calibration_input(const CalibrateRequest& request);
 // From a raw log: its static intervals become positions; InputError when too few are found (the
 // message says what would help for this log), warnings for dropouts and saturation.
 CalibrationInput calibration_input(RawLog log, const CalibrateRequest& request);
+// The same from a stream's poses so far (the log's own options are the stream's; the request's are ignored).
+CalibrationInput calibration_input(const CalibrationStream& stream, const CalibrateRequest& request);
 
 // --measurements FILE --magnitude M|auto [--model auto|NAME] [--modulus ...] [--format ...] [--rate HZ] [--still S]
 // [--window W] [--threshold-factor K] [--min-interval T] [--weights ...] [--keep-outliers] [--suggest K]

@@ -233,16 +233,23 @@ CalibrationStream stream_of(const RawLog& log, const CalibrateRequest& o, int& c
 }  // namespace
 
 CalibrationInput calibration_input(RawLog log, const CalibrateRequest& o) {
+  if (o.modulus == Modulus::projection)
+    throw InputError(o.file, 0, "a raw log has no nominal directions: the projection modulus needs them");
+  int chunks = 0;
+  return calibration_input(stream_of(log, o, chunks), o);
+}
+
+CalibrationInput calibration_input(const CalibrationStream& stream, const CalibrateRequest& o) {
   // --model auto takes the richest model the positions carry, down to offsets only.
   const int needed = o.model ? model_parameters(*o.model) : model_parameters(*parse_model("bias3"));
   const std::string need = o.model ? "--model " + std::string(model_name(*o.model)) + " needs at least " +
                                          std::to_string(needed) + " positions"
                                    : "paper9 needs at least 9 positions (axis6 6, bias3 3)";
-  CalibrationInput in;
-  in.log = std::move(log);
   if (o.modulus == Modulus::projection)
     throw InputError(o.file, 0, "a raw log has no nominal directions: the projection modulus needs them");
-  const CalibrationStream stream = stream_of(*in.log, o, in.chunks);
+  CalibrationInput in;
+  in.log = stream.log();
+  in.chunks = stream.chunks();
   in.detection = stream.detection();
   const auto& d = in.detection;
   if (d.nonfinite > 0)
@@ -263,7 +270,7 @@ CalibrationInput calibration_input(RawLog log, const CalibrateRequest& o) {
       throw InputError(o.file, 0, std::to_string(in.data.size()) + " usable samples; " + need);
     return in;
   }
-  if (!o.intervals_given) choose_for_log(o, stream, in);
+  choose_for_log(o, stream, in);  // a stream of given options has no candidates
   if (d.intervals.size() < static_cast<std::size_t>(needed))
     throw InputError(o.file, 0,
                      in.motion.mostly_moving() && !d.floor_from_still ? moving_log_message(in.motion, d, need)

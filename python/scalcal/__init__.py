@@ -181,6 +181,54 @@ calibrate.__doc__ = (_calibrate_command.__doc__.replace("returns its --json obje
                      if _calibrate_command.__doc__ else None)
 
 
+class PoseStream:
+    """Still poses found as a log arrives, and the calibration of those settled so far: the CLI's
+    ``calibrate --chunk`` one chunk at a time, for a bench script that reads a serial port.
+
+    ``PoseStream(name="stream", still=None, window=None, threshold_factor=None, min_interval=None)``
+    takes the detection's options as ``calibrate`` does (none given: every candidate of its adaptive
+    choice is kept). ``add(t, samples, last=False)`` appends rows (t in seconds, samples an (n, 3)
+    array of raw outputs); each sample is judged still or moving once, when half a window of rows after
+    it has arrived, from the rows up to there (docs/calibrate.md). ``poses()`` lists the poses settled
+    so far (rows from 0, seconds, samples, mean and per-output variance), ``state()`` the rows, chunks,
+    window, noise floor and threshold, and ``calibrate(magnitude=..., **options)`` fits them with
+    ``scalcal.calibrate``'s options and returns a Calibration; after ``last=True`` it is exactly
+    ``scalcal.calibrate`` of the whole log."""
+
+    def __init__(self, name="stream", *, still=None, window=None, threshold_factor=None, min_interval=None):
+        self._stream = self._checked(_scalcal.PoseStream, name, still, window, threshold_factor, min_interval)
+
+    @staticmethod
+    def _checked(call, *args):
+        try:
+            return call(*args)
+        except _scalcal.InputError as e:
+            raise InputError(str(e)) from None
+        except _scalcal.UsageError as e:
+            raise UsageError(str(e)) from None
+
+    def add(self, t, samples, last=False):
+        import numpy
+        self._checked(self._stream.add, numpy.asarray(t, dtype=float), numpy.asarray(samples, dtype=float),
+                      bool(last))
+
+    def poses(self):
+        return self._checked(self._stream.poses)
+
+    def state(self):
+        return self._checked(self._stream.state)
+
+    def calibrate(self, **kwargs):
+        result, warned, status = self._checked(self._stream.calibrate, kwargs)
+        for subject, message in warned:
+            _warnings.warn(f"{subject}: {message}" if subject else message, ScalcalWarning, stacklevel=2)
+        if status == 1:
+            raise ConvergenceError("calibrate: the result did not converge", Calibration(_plain(result)))
+        return Calibration(_plain(result))
+
+
+__all__.append("PoseStream")
+
 _sweep_command = sweep  # noqa: F821 (made from its table above)
 
 

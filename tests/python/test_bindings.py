@@ -332,3 +332,42 @@ def test_sweep_through_a_map_is_one_sweep():
                                       "--seed", "4", "--threads", "1"))
     with pytest.raises(scalcal.UsageError, match="give no shard"):
         scalcal.sweep(**kw, shard="0/2", map=map)
+
+
+def test_pose_stream_is_calibrate_in_chunks():
+    # A log given to PoseStream in chunks is the CLI's `calibrate --chunk` of the same rows (issue 51):
+    # the same calibration file, key for key; given as one last chunk it is the batch `calibrate`.
+    log = os.path.join(DATA, "xsens_acc.txt")
+    rows = np.loadtxt(log)
+    created = ("created", "tool", "stream")  # the file's time stamp; the CLI's chunk size (the stream's vary)
+    for chunk in (500, len(rows)):
+        s = scalcal.PoseStream("xsens_acc.txt")
+        for k in range(0, len(rows), chunk):
+            s.add(rows[k:k + chunk, 0], rows[k:k + chunk, 1:4], last=k + chunk >= len(rows))
+        c = s.calibrate(magnitude=9.81744)
+        args = ["calibrate", "--measurements", log, "--magnitude", "9.81744", "--out", "-"]
+        expected = json.loads(cli(*args, *(["--chunk", str(chunk)] if chunk < len(rows) else [])).stdout)
+        for key in expected:
+            if key not in created and key != "data":
+                assert plain(c[key]) == plain(expected[key]), (chunk, key)
+        # Each pose's mean is the mean of its rows (numpy's, over the rows the pose spans with no break).
+        poses = s.poses()
+        assert len(poses) == 38
+        whole = [p for p in poses if p["samples"] == p["end"] - p["begin"] + 1]
+        assert len(whole) >= 30
+        for p in whole:
+            mean = rows[p["begin"]:p["end"] + 1, 1:4].mean(axis=0)
+            assert np.allclose(p["mean"], mean, rtol=0, atol=1e-9 * 4e4)
+
+
+def test_pose_stream_refuses_what_is_not_its_own():
+    s = scalcal.PoseStream("s")
+    with pytest.raises(scalcal.UsageError, match="samples an \\(n, 3\\) array"):
+        s.add([0.0, 0.01], [[1.0, 2.0], [3.0, 4.0]])
+    s.add([0.0, 0.01], [[1.0, 2.0, 3.0], [1.0, 2.0, 3.5]])
+    with pytest.raises(scalcal.InputError, match="time does not increase"):
+        s.add([0.005], [[1.0, 2.0, 3.0]])
+    with pytest.raises(scalcal.UsageError, match="window belongs to the stream"):
+        s.calibrate(magnitude=1.0, window=0.5)
+    with pytest.raises(scalcal.UsageError, match="threshold_factor must be a positive number"):
+        scalcal.PoseStream("t", threshold_factor=-1.0)
