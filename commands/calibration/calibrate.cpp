@@ -24,22 +24,13 @@ std::string number(double v, int digits = 3) {
   return s.str();
 }
 
-// What scalar calibration at one magnitude leaves out for the model, in one sentence.
+// What scalar calibration at one magnitude leaves out for the model, in one sentence: the rotation,
+// for every model, then what the model's type says it leaves out.
 std::string not_estimated_text(ModelKind model) {
   const std::string rotation =
       "the rotation part of the misalignment (three angles) leaves every modulus unchanged and is not estimated";
-  const std::string_view name = model_name(model);
-  if (name == "bias3")
-    return rotation +
-           "; the scale factors are taken as equal (one gain, from the start) and the axes as orthogonal: "
-           "their errors go into the residual";
-  if (name == "axis6") return rotation + "; the axes are taken as orthogonal: non-orthogonality goes into the residual";
-  if (name == "cubic12")
-    return rotation +
-           "; at one magnitude the cubic term is identified as c_i |I| only (it cannot be told from a scale factor "
-           "that depends on the magnitude), and never from positions along the axes alone, where x^3 = x makes it "
-           "the bias";
-  return rotation;
+  const std::string_view own = model_not_estimated(model);
+  return own.empty() ? rotation : rotation + "; " + std::string(own);
 }
 
 // The model: the requested one if the layout carries it (InputError naming what would work

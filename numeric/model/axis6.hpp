@@ -11,6 +11,9 @@ struct Axis6Model : MonomialModel<Axis6Model> {
   static constexpr int kParameters = 6;
   static constexpr std::string_view name = "axis6";
   static constexpr std::string_view summary = "h = (x, y, z, x^2, y^2, z^2): bias and scale factor";
+  // What a fit under this model leaves out beyond the rotation no scalar calibration sees (calibrate's report).
+  static constexpr std::string_view not_estimated =
+      "the axes are taken as orthogonal: non-orthogonality goes into the residual";
   static constexpr std::array<std::string_view, 6> parameter_names = {"bias_x",  "bias_y",  "bias_z",
                                                                       "scale_x", "scale_y", "scale_z"};
   static constexpr std::array<ParameterGroup, 6> parameter_groups = {ParameterGroup::bias,  ParameterGroup::bias,

@@ -10,6 +10,10 @@ struct Bias3Model : MonomialModel<Bias3Model> {
   static constexpr int kParameters = 3;
   static constexpr std::string_view name = "bias3";
   static constexpr std::string_view summary = "h = (x, y, z): offsets only";
+  // What a fit under this model leaves out beyond the rotation no scalar calibration sees (calibrate's report).
+  static constexpr std::string_view not_estimated =
+      "the scale factors are taken as equal (one gain, from the start) and the axes as orthogonal: their errors go "
+      "into the residual";
   static constexpr std::array<std::string_view, 3> parameter_names = {"bias_x", "bias_y", "bias_z"};
   static constexpr std::array<ParameterGroup, 3> parameter_groups = {ParameterGroup::bias, ParameterGroup::bias,
                                                                      ParameterGroup::bias};

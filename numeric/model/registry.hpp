@@ -69,6 +69,15 @@ inline int model_parameters(ModelKind m) {
   return visit_model(m, [](auto M) { return decltype(M)::kParameters; });
 }
 
+// What a fit under the model leaves out beyond the rotation no scalar calibration sees: its type's
+// `not_estimated` sentence, empty when it has none (the paper's model estimates all it can).
+inline std::string_view model_not_estimated(ModelKind m) {
+  return visit_model(m, [](auto M) {
+    if constexpr (requires { decltype(M)::not_estimated; }) return std::string_view(decltype(M)::not_estimated);
+    return std::string_view();
+  });
+}
+
 inline std::optional<ModelKind> parse_model(std::string_view s) {
   for (int i = 0; i < kModelCount; ++i)
     if (model_name(ModelKind(i)) == s) return ModelKind(i);
