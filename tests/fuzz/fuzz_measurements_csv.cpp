@@ -2,12 +2,16 @@
 // reader (t,ix,iy,iz as CSV or whitespace text), and the whole calibrate path after them: static
 // intervals, outlier samples, the data checks, the start in any units, the estimator and the
 // goodness of fit. The first byte picks the modulus (bit 0), a raw log (bit 1) and the magnitude
-// (bit 2: 1, else auto). Only InputError is an expected outcome, as in the CLI.
+// (bit 2: 1, else auto); for a raw log, the stream's chunk (bits 3-5: 1 to 22 rows), the floor (bit 6:
+// the log's quiet windows, else a still start) and the adaptive choice's detectors (bit 7), the poses
+// asked for after every chunk. Only InputError is an expected outcome, as in the CLI.
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <string>
 
 #include "numeric/calibration/any_units.hpp"
+#include "numeric/calibration/calibration_stream.hpp"
 #include "numeric/calibration/measurements_csv.hpp"
 #include "numeric/calibration/outlier_samples.hpp"
 #include "numeric/calibration/raw_log.hpp"
@@ -25,15 +29,22 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (raw) {
       const scalcal::RawLog log = scalcal::parse_raw_log(text, "fuzz.txt");
       scalcal::StaticIntervalOptions o;  // short enough for the small logs a fuzzer writes
-      o.still_seconds = 0.5;
+      if (!(data[0] & 64)) o.still_seconds = 0.5;
       o.window_seconds = 0.05;
       o.min_seconds = 0.05;
-      for (const auto& iv : scalcal::detect_static_intervals(log, o).intervals) {
-        scalcal::PositionSamples p;
-        for (int i = iv.begin; i <= iv.end; ++i)
-          if (!iv.in_break(i)) p.samples.push_back(log.samples[static_cast<std::size_t>(i)]);
-        samples.push_back(p);
+      const int chunk = 1 + ((data[0] >> 3) & 7) * 3;
+      scalcal::CalibrationStream stream(log.file, o, data[0] & 128);
+      for (int b = 0; b < log.size(); b += chunk) {
+        scalcal::RawLog part;
+        part.file = log.file;
+        const int e = std::min(log.size(), b + chunk);
+        part.t.assign(log.t.begin() + b, log.t.begin() + e);
+        part.samples.assign(log.samples.begin() + b, log.samples.begin() + e);
+        part.lines.assign(log.lines.begin() + b, log.lines.begin() + e);
+        stream.add(part, e == log.size());
+        (void)stream.pose_sums();
       }
+      samples = stream.positions();
     } else {
       samples = scalcal::measurements_from_table(scalcal::parse_csv(text, "fuzz.csv"),
                                                  modulus == scalcal::Modulus::projection);
