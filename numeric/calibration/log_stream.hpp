@@ -30,6 +30,8 @@ class LogStream {
   // The median step between finite samples, fixed when the log ends or has a window's span
   // (window_seconds) at the period seen so far; 0 before.
   double period_for(double window_seconds) const;
+  // The period once fixed (0 before): asking never fixes it.
+  double period() const { return period_.value_or(0.0); }
   int first_usable() const { return first_usable_; }
   // The variance norm over usable samples [i - h, i + h] (NaN for an unusable one or an incomplete window);
   // needs i + h < decided().

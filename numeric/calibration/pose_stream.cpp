@@ -147,7 +147,7 @@ void StillPoseDetector::advance(const LogStream& stream) {
 // The run-length rules, sample by sample: a still sample opens or grows the run; a moving one closes
 // it; a merged run no later run can join any more (a break longer than a second) is settled.
 void StillPoseDetector::judge(const LogStream& stream, int upto) {
-  const int longest_break = std::max(1, static_cast<int>(std::lround(1.0 / stream.period_for(0))));
+  const int longest_break = std::max(1, static_cast<int>(std::lround(1.0 / stream.period())));
   for (int i = judged_; i < upto; ++i) {
     const double v = variances_[static_cast<std::size_t>(i)];
     if (std::isfinite(v) && v < threshold_) {
@@ -171,7 +171,7 @@ void StillPoseDetector::judge(const LogStream& stream, int upto) {
 void StillPoseDetector::close_run(const LogStream& stream) {
   const auto [first, last] = *run_;
   run_.reset();
-  const int longest_break = std::max(1, static_cast<int>(std::lround(1.0 / stream.period_for(0))));
+  const int longest_break = std::max(1, static_cast<int>(std::lround(1.0 / stream.period())));
   if (pending_ && first - pending_->end - 1 <= longest_break) {
     const Vec3 shift = stream.log().samples[static_cast<std::size_t>(stream.first_usable())];
     const double sigma2 = floor_ / std::sqrt(3.0);
@@ -198,7 +198,7 @@ void StillPoseDetector::settle_pending(const LogStream& stream) {
   pending_.reset();
   const RawLog& log = stream.log();
   const int n = log.size();
-  const double period = stream.period_for(0);
+  const double period = stream.period();
   const int min_samples =
       static_cast<int>(std::clamp(std::ceil(options_.min_seconds / period), 1.0, static_cast<double>(n) + 1));
   if (iv.samples() < min_samples) {
@@ -218,7 +218,7 @@ void StillPoseDetector::settle_pending(const LogStream& stream) {
 IntervalDetection StillPoseDetector::detection(const LogStream& stream) const {
   const RawLog& log = stream.log();
   if (stream.ended()) {
-    if (!(stream.period_for(0) > 0)) throw InputError(log.file, 0, "fewer than two finite rows: no sample period");
+    if (!(stream.period() > 0)) throw InputError(log.file, 0, "fewer than two finite rows: no sample period");
     if (stream.first_usable() < 0)
       throw InputError(log.file, 0,
                        floor_from_still_ ? "the initial still period (--still " + seconds(options_.still_seconds) +
@@ -251,7 +251,7 @@ IntervalDetection StillPoseDetector::detection(const LogStream& stream) const {
   IntervalDetection d;
   stream.describe(d);
   d.intervals = intervals_;
-  d.sample_period = stream.period_for(0);
+  d.sample_period = stream.period();
   d.window = window_;
   d.still_variance = floor_;
   d.floor_from_still = floor_from_still_;

@@ -106,6 +106,34 @@ TEST(PoseStream, ASlowStartIsNotTakenForTheFloor) {
   }
 }
 
+// Asking for the poses between chunks changes nothing the stream decides (a question must not fix
+// the period or the floor early).
+TEST(PoseStream, AskingDoesNotChangeTheAnswer) {
+  LogSpec spec;
+  spec.lead_motion = 20;
+  RawLog log = parse_raw_log(simulate_log(spec, fourteen_directions()).text, "simulated.txt");
+  for (int i = 0; i < log.size(); ++i)  // a logger's jitter: the median step of a few rows is not the log's
+    log.t[static_cast<std::size_t>(i)] += 2e-4 * std::sin(1.7 * i);
+  for (bool adaptive : {false, true}) {
+    CalibrationStream asked(log.file, {}, adaptive), quiet(log.file, {}, adaptive);
+    for (int b = 0; b < log.size(); b += 7) {
+      const RawLog part = rows(log, b, std::min(log.size(), b + 7));
+      asked.add(part, b + 7 >= log.size());
+      quiet.add(part, b + 7 >= log.size());
+      (void)asked.detection();
+      (void)asked.pose_sums();
+    }
+    const IntervalDetection a = asked.detection(), q = quiet.detection();
+    ASSERT_EQ(a.intervals.size(), q.intervals.size());
+    for (std::size_t k = 0; k < a.intervals.size(); ++k) {
+      EXPECT_EQ(a.intervals[k].begin, q.intervals[k].begin);
+      EXPECT_EQ(a.intervals[k].end, q.intervals[k].end);
+    }
+    EXPECT_EQ(a.still_variance, q.still_variance);
+    EXPECT_EQ(a.sample_period, q.sample_period);
+  }
+}
+
 // The fit on request: half the log gives the poses settled in it, and the calibration of the whole
 // stream recovers the simulated meter within its standard errors.
 TEST(PoseStream, TheFitIsMadeFromThePosesSettledSoFar) {
