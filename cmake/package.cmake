@@ -13,6 +13,13 @@ set(CPACK_PACKAGE_DESCRIPTION
     "proven and certified limits, plans them on benches, and calibrates raw logs with honest errors (CLI "
     "`scalcal`, C++ libraries, Python module). The binaries link GiNaC and CLN (GPL-2.0-or-later); the sources "
     "are BSD-3-Clause.")
+if(NOT SCALCAL_WITH_GINAC)  # docs/install.md: the licences of what the binaries then link
+  set(CPACK_PACKAGE_DESCRIPTION
+      "scalcal designs calibration programs for triads of accelerometers, magnetometers and gyroscopes against "
+      "proven and certified limits and calibrates raw logs with honest errors (CLI `scalcal`, C++ libraries, "
+      "Python module), built without GiNaC (no `family`, no `jig`, no closed forms derived). The sources are "
+      "BSD-3-Clause; the binaries link Ipopt (CPL-1.0/EPL-1.0), MUMPS (CeCILL-C), MPFR, GMP and MPFI (LGPL), no GPL-only library.")
+endif()
 set(CPACK_PACKAGING_INSTALL_PREFIX "/usr")
 set(CPACK_DEBIAN_FILE_NAME "DEB-DEFAULT")  # scalcal_VERSION_ARCH.deb
 set(CPACK_DEBIAN_PACKAGE_SECTION "science")

@@ -170,10 +170,14 @@ const std::vector<Binding>& bindings() {
       bind(commands::augment_table(), commands::augment_request, commands::augment),
       bind(commands::plan_table(), commands::plan_request, commands::plan),
       bind(commands::export_table(), commands::export_request, commands::export_calibration),
+#ifdef SCALCAL_PYTHON_GINAC  // without GiNaC build_info() names family and jig as lacking (build_features.hpp)
       bind(commands::family_table(), commands::family_request,
            [](const commands::FamilyRequest& q) { return commands::family(q); }),
+#endif
       bind(commands::limits_table(), commands::limits_request, commands::limits),
+#ifdef SCALCAL_PYTHON_GINAC
       bind(commands::jig_table(), commands::jig_request, commands::jig),
+#endif
 #ifdef SCALCAL_PYTHON_REPRODUCE
       {&reproduce::reproduce_table(),
        [](const Values& v, const Progress&) {

@@ -66,7 +66,8 @@ def main(out):
              "class ConvergenceError(Error, RuntimeError):",
              "    result: Any",
              "class ScalcalWarning(UserWarning): ...", "",
-             "def program(name: str) -> Any: ...", "",
+             "def program(name: str) -> Any: ...",
+             "def build_info() -> dict[str, Any]: ...", "",
              "class PoseStream:",
              "    def __init__(self, name: str = 'stream', *, still: float | None = None, window: float | None = None,",
              "                 threshold_factor: float | None = None, min_interval: float | None = None) -> None: ...",
@@ -75,6 +76,8 @@ def main(out):
              "    def state(self) -> dict[str, Any]: ...",
              "    def calibrate(self, **options: Any) -> Any: ...", ""]
     lines += [stub(t) for t in _scalcal.tables()]
+    lines += [f"def {name}(*args: Any, **kwargs: Any) -> Any:\n    \"\"\"Not in this build: {why}.\"\"\"\n"
+              for name, why in _scalcal.build_info()["lacking"].items()]
     with open(out, "w") as f:
         f.write("\n".join(lines))
 

@@ -18,6 +18,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include "commands/core/build_features.hpp"
 #include "commands/core/usage_error.hpp"
 #include "commands/research/sweep.hpp"
 #include "numeric/calibration/measurements_csv.hpp"
@@ -32,7 +33,6 @@
 #include "python/library_lock.hpp"
 #include "python/stream.hpp"
 #include "python/to_python.hpp"
-#include "symbolic/family.hpp"
 
 namespace py = pybind11;
 
@@ -171,6 +171,17 @@ py::list sweep_tasks(const py::tuple& args, const py::dict& kwargs) {
   return out;
 }
 
+// build_info() -> {"version", "ginac", "lacking": {command: the line the CLI gives for it}}.
+py::dict build_info() {
+  py::dict lacking;
+  for (const auto& c : commands::lacking_commands()) lacking[py::str(c.name)] = commands::lacking_message(c);
+  py::dict out;
+  out["version"] = SCALCAL_VERSION;
+  out["ginac"] = commands::with_ginac();
+  out["lacking"] = lacking;
+  return out;
+}
+
 py::object program(const std::string& name) {
   const LibraryLock lock;
   return to_python(commands::program_json(resolve_program(name)));
@@ -184,7 +195,7 @@ PYBIND11_MODULE(_scalcal, m) {
   m.doc() = "scalcal's compiled core: option tables and one runner (use the package `scalcal`)";
   m.attr("__version__") = SCALCAL_VERSION;
   m.def("blas_kernel", &scalcal::blas_kernel, "the OpenBLAS kernel in use (\"\" for another BLAS)");
-  scalcal::symbolic::register_family_programs();  // the families' program names, as the CLI has them
+  scalcal::commands::register_family_programs();  // the families' program names, as the CLI has them
   static py::exception<scalcal::InputError> input_error(m, "InputError", PyExc_ValueError);
   static py::exception<scalcal::UsageError> usage_error(m, "UsageError", PyExc_ValueError);
   py::register_exception_translator([](std::exception_ptr p) {
@@ -201,6 +212,7 @@ PYBIND11_MODULE(_scalcal, m) {
   m.def("tables", &sp::tables);
   m.def("run", &sp::run, py::arg("name"), py::arg("args"), py::arg("kwargs"));
   m.def("program", &sp::program, py::arg("name"));
+  m.def("build_info", &sp::build_info);
   m.def("sweep_tasks", &sp::sweep_tasks, py::arg("args"), py::arg("kwargs"));
   sp::bind_stream(m);
 }

@@ -10,28 +10,24 @@
 
 #include "commands/core/region_request.hpp"
 #include "commands/core/usage_error.hpp"
+#include "commands/design/closed_forms.hpp"
 #include "commands/design/gyro_regions.hpp"
 #include "numeric/region/cap_limits.hpp"
 #include "numeric/region/region_limits.hpp"
 #include "numeric/synthesis/seeds.hpp"
-#include "symbolic/cap_limits.hpp"
-#include "symbolic/exact.hpp"
-#include "symbolic/limits.hpp"
 
 namespace scalcal::commands {
 namespace {
 
-double number(const GiNaC::ex& e) { return GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(e)).to_double(); }
-
 std::optional<SphereLimit> paper9_limit(CriterionKind c) {
-  if (!symbolic::has_symbolic_limit(c)) return std::nullopt;
-  const auto l = symbolic::symbolic_limit(c);
+  const auto l = sphere_closed_form(c);
+  if (!l) return std::nullopt;
   SphereLimit s;
-  s.exact = symbolic::canonical_text(l.value);
-  s.value = number(l.value);
-  s.x4 = symbolic::canonical_text(l.x4);
-  s.x2y2 = symbolic::canonical_text(l.b);
-  s.b = number(l.b);
+  s.exact = l->exact;
+  s.value = l->value;
+  s.x4 = l->x4;
+  s.x2y2 = l->x2y2;
+  s.b = l->b;
   s.theorem = std::string(criterion_limit(c).theorem);
   return s;
 }
@@ -122,7 +118,7 @@ LimitsResult limits(const LimitsRequest& q, const Progress& progress) {
     row.region = limits[i];
     if (!row.region->theorem.empty())
       if (const auto form = cap_closed_form(row.criterion, *r.region))
-        row.region_exact = symbolic::cap_limit_exact(row.criterion, *form);
+        row.region_exact = cap_limit_text(row.criterion, *form);
   }
   return r;
 }

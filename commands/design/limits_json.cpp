@@ -34,7 +34,7 @@ Json region_json(const RegionLimit& l, const std::string& exact, double sphere) 
   Json entry{{"value", l.value}};
   entry["status"] = std::string(status_name(status_of(l)));
   if (!l.theorem.empty()) {
-    entry["exact"] = exact;
+    entry["exact"] = exact.empty() ? Json(nullptr) : Json(exact);  // null: not derived (a build without GiNaC)
     entry["theorem"] = std::string(l.theorem);
   }
   entry["lower_bound"] = l.lower_bound ? Json(*l.lower_bound) : Json(nullptr);

@@ -3,8 +3,8 @@
 
 #include <stdexcept>
 
+#include "commands/design/closed_forms.hpp"
 #include "numeric/region/cap_limits.hpp"
-#include "symbolic/cap_limits.hpp"
 
 namespace scalcal::commands {
 
@@ -27,7 +27,7 @@ std::optional<ReportedLimit> reported_limit(CriterionKind c, ModelKind model, co
   if (!region || region->is_sphere())
     out.exact = std::string(criterion_limit(c).exact);
   else if (const auto form = cap_closed_form(c, *region))
-    out.exact = symbolic::cap_limit_exact(c, *form);
+    out.exact = cap_limit_text(c, *form);
   return out;
 }
 
@@ -35,7 +35,7 @@ Json to_json(const ReportedLimit& l) {
   Json j{{"value", l.statement.value}, {"status", std::string(status_name(l.statement.status))}};
   j["lower_bound"] = l.statement.lower_bound ? Json(*l.statement.lower_bound) : Json(nullptr);
   if (l.statement.status == LimitStatus::proven) {
-    j["exact"] = l.exact;
+    j["exact"] = l.exact.empty() ? Json(nullptr) : Json(l.exact);  // none derived (a build without GiNaC)
     j["theorem"] = std::string(l.statement.theorem);
   }
   return j;

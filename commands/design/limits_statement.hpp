@@ -13,13 +13,13 @@ namespace scalcal::commands {
 
 struct ReportedLimit {
   LimitStatement statement;  // value, proven lower bound, status, theorem
-  std::string exact;         // the closed form where the status is proven
+  std::string exact;         // the closed form where the status is proven ("" where not derived: no GiNaC)
 };
 
 // The limit of c on the region (none: the sphere), or a model's stated limit; nullopt where none is known.
 std::optional<ReportedLimit> reported_limit(CriterionKind c, ModelKind model, const std::optional<Region>& region);
 
-// {"value", "status", "lower_bound", and where proven "exact" and "theorem"}.
+// {"value", "status", "lower_bound", and where proven "exact" (null where not derived) and "theorem"}.
 Json to_json(const ReportedLimit& limit);
 
 }  // namespace scalcal::commands

@@ -8,42 +8,41 @@
 #include <cstdio>
 
 #include "commands/core/common_options.hpp"
+#include "commands/design/closed_forms.hpp"
 #include "numeric/region/cap_limits.hpp"
 #include "numeric/region/region_limit.hpp"
 #include "numeric/region/region_limits.hpp"
 #include "numeric/synthesis/seeds.hpp"
-#include "symbolic/cap_limits.hpp"
-#include "symbolic/exact.hpp"
-#include "symbolic/limits.hpp"
-#include "symbolic/thermal_limits.hpp"
 
 namespace scalcal::commands {
 namespace {
 
-// The base model's factor: its limit on the sphere or the region, the exact text where a theorem proves it,
-// a certified lower bound where interval arithmetic encloses it.
+// The base model's factor: its limit on the sphere or the region, whether a theorem proves it and its exact
+// text there (closed_forms.hpp: "" in a build without GiNaC), a certified lower bound where interval
+// arithmetic encloses it.
 struct BaseFactor {
   double value = NAN;
-  std::string exact;                  // "" where none is proven
+  bool proven = false;
+  std::string exact;                  // "" where none is proven or derived
   std::optional<double> lower_bound;  // certified (a region's)
 };
 
 BaseFactor sphere_factor(ModelKind model, CriterionKind c) {
   if (model_supports(model, ModelCapability::criteria_native)) {
-    if (!symbolic::has_symbolic_limit(c)) return {};
-    const auto l = symbolic::symbolic_limit(c);
-    return {GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(l.value)).to_double(), symbolic::canonical_text(l.value), {}};
+    const auto l = sphere_closed_form(c);
+    if (!l) return {};
+    return {l->value, true, l->exact, {}};
   }
   const auto l = stated_limit(model, criterion_name(c));
   if (!l) return {};
-  return {l->value, std::string(l->exact), {}};
+  return {l->value, true, std::string(l->exact), {}};
 }
 
 // paper9's limits on a region, the criteria side by side (one worker process per core, as `limits` runs them).
 std::vector<BaseFactor> region_factors(const Region& region, const Progress& progress) {
   std::vector<RegionLimitTask> tasks;
   for (CriterionKind c : kCriteria)
-    if (symbolic::has_symbolic_limit(c)) tasks.push_back({c, region});
+    if (sphere_closed_form(c)) tasks.push_back({c, region});  // a limit on the sphere: one on a region too
   const std::string stage = "limits on " + region.text();
   const std::vector<RegionLimit> limits = region_limits(tasks, {}, thread_count(0), [&](int done, int total) {
     if (progress) progress(stage, done, total);
@@ -54,8 +53,10 @@ std::vector<BaseFactor> region_factors(const Region& region, const Progress& pro
     f.value = limits[i].value;
     f.lower_bound = limits[i].lower_bound;
     if (status_of(limits[i]) == LimitStatus::proven)
-      if (const auto form = cap_closed_form(tasks[i].criterion, region))
-        f.exact = symbolic::cap_limit_exact(tasks[i].criterion, *form);
+      if (const auto form = cap_closed_form(tasks[i].criterion, region)) {
+        f.proven = true;
+        f.exact = cap_limit_text(tasks[i].criterion, *form);
+      }
   }
   return out;
 }
@@ -109,11 +110,13 @@ ThermalLimitsResult thermal_limits(const ThermalModel& model, const TemperatureR
       r.rows.push_back(row);
       continue;
     }
-    const GiNaC::ex one = symbolic::interval_factor_exact(c, model.degree);
-    if (!one.is_zero() && !f.exact.empty()) {
+    // The temperature factor is proven where its optimal design is (numeric/thermal/interval_design.hpp).
+    const bool proven_one = row.limit->temperature.closed_form;
+    const std::string one = interval_factor_text(c, model.degree);
+    if (proven_one && f.proven) {
       row.status = "proven";
-      row.exact = exact_form(c, model, f.exact, symbolic::canonical_text(one));
-    } else if (!one.is_zero() && f.lower_bound) {
+      if (!one.empty() && !f.exact.empty()) row.exact = exact_form(c, model, f.exact, one);
+    } else if (proven_one && f.lower_bound) {
       row.status = "certified";
       row.limit->lower_bound = thermal_limit(c, model, *f.lower_bound)->value;
       row.note = "the region's factor enclosed by interval arithmetic, the temperature's exact";

@@ -60,7 +60,7 @@ void print_region(const commands::LimitsResult& r) {
     const std::string value = decimal("%.10g", g.value);
     switch (status_of(g)) {
       case LimitStatus::proven:
-        std::cout << " = " << value << (l.region_exact == value ? "" : " = " + l.region_exact)
+        std::cout << " = " << value << (l.region_exact.empty() || l.region_exact == value ? "" : " = " + l.region_exact)
                   << " (proven: " << g.theorem << ")";
         break;
       case LimitStatus::certified: {
@@ -89,7 +89,10 @@ void print_sphere(const commands::LimitsResult& r) {
     }
     const auto& s = *l.sphere;
     std::cout << criterion_name(l.criterion) << " >= " << exact_and_decimal(s);
-    if (paper9)
+    if (paper9 && s.x4.empty())  // no exact moments derived (a build without GiNaC): b's value, x4 from it
+      std::cout << "   optimal moments: E[x^2] = 1/3, E[x^2 y^2] = " << decimal("%.10g", s.b.value_or(NAN))
+                << ", E[x^4] = 1/3 - 2 E[x^2 y^2], odd moments and other mixed moments 0\n";
+    else if (paper9)
       std::cout << "   optimal moments: E[x^2] = 1/3, E[x^4] = " << s.x4 << ", E[x^2 y^2] = " << s.x2y2
                 << ", odd moments and other mixed moments 0\n";
     else
@@ -112,7 +115,9 @@ void print_thermal(const commands::ThermalLimitsResult& t) {
       continue;
     }
     const ThermalLimit& l = *row.limit;
-    if (row.status == "proven") {  // a factor stated after "; " (a cap's D) goes after the value
+    if (row.status == "proven" && row.exact.empty())  // no closed form derived (a build without GiNaC)
+      std::cout << " >= " << decimal("%.10g", l.value) << " (proven: proofs/thermal_product.md)";
+    else if (row.status == "proven") {  // a factor stated after "; " (a cap's D) goes after the value
       const auto semicolon = row.exact.find("; ");
       std::cout << " >= " << row.exact.substr(0, semicolon) << " = " << decimal("%.10g", l.value)
                 << " (proven: proofs/thermal_product.md)"

@@ -14,6 +14,7 @@
 #endif
 #include <CLI/CLI.hpp>
 
+#include "commands/core/build_features.hpp"
 #include "commands/core/tool_info.hpp"
 #include "experiments/cli/command.hpp"
 #include "experiments/cli/man_page.hpp"
@@ -21,7 +22,6 @@
 #include "numeric/io/blas_kernel.hpp"
 #include "numeric/io/input_error.hpp"
 #include "numeric/io/resource_error.hpp"
-#include "symbolic/family.hpp"
 
 namespace {
 
@@ -32,6 +32,21 @@ void print_overview(std::ostream& out) {
       << "usage: scalcal COMMAND [options]   (scalcal help COMMAND, scalcal COMMAND --help: every option with "
          "its unit and default)\n\n";
   for (const auto& c : commands()) out << "  " << c.usage << "\n      " << c.summary << "\n";
+  std::string lacking;
+  for (const auto& c : scalcal::commands::lacking_commands()) lacking += (lacking.empty() ? "" : ", ") + c.name;
+  if (!lacking.empty())
+    out << "\nnot in this build (made with -DSCALCAL_WITH_GINAC=OFF, without GiNaC): " << lacking << "\n";
+}
+
+// A command this build lacks (`scalcal family` without GiNaC, or `help family`): one line, exit 2; -1 for any other.
+int lacking_command(const std::vector<std::string>& args) {
+  const std::string name = args[0] == "help" || args[0] == "--man" ? (args.size() > 1 ? args[1] : "") : args[0];
+  for (const auto& c : scalcal::commands::lacking_commands())
+    if (c.name == name) {
+      std::cerr << "scalcal: " << scalcal::commands::lacking_message(c) << "\n";
+      return 2;
+    }
+  return -1;
 }
 
 // CLI11 says "--x: ..." or "--x is required"; scalcal's messages say "option --x ...".
@@ -124,7 +139,7 @@ int main(int argc, char** argv) {
   // 10.9 -> 7.3 s, the same peak memory (37 MiB) and the same results.
   mallopt(M_TOP_PAD, 16 << 20);
 #endif
-  scalcal::symbolic::register_family_programs();  // every family's names, for every PROGRAM argument
+  scalcal::commands::register_family_programs();  // every family's names, for every PROGRAM argument
   const std::vector<std::string> args(argv + 1, argv + argc);
   if (args.empty()) {
     print_overview(std::cerr);
@@ -134,6 +149,7 @@ int main(int argc, char** argv) {
     print_overview(std::cout);
     return checked(0);
   }
+  if (const int status = lacking_command(args); status >= 0) return status;
   if (args[0] == "--man") return checked(print_man_page(args));
 
   CLI::App app("scalar calibration programs for vector meters", "scalcal");

@@ -31,7 +31,8 @@ if not _KERNEL_CHOSEN and _scalcal.blas_kernel() not in ("", "Prescott"):
     _warnings.warn("OpenBLAS was loaded before scalcal (numpy imported first?) with its " + _scalcal.blas_kernel() +
                    " kernel: the last digits may differ from the CLI's; import scalcal first or set "
                    "OPENBLAS_CORETYPE=Prescott")
-__all__ = ["Error", "InputError", "UsageError", "ConvergenceError", "ScalcalWarning", "Calibration", "program"]
+__all__ = ["Error", "InputError", "UsageError", "ConvergenceError", "ScalcalWarning", "Calibration", "program",
+           "build_info"]
 
 
 class Error(Exception):
@@ -166,6 +167,27 @@ class Calibration(dict):
 for _table in _scalcal.tables():
     globals()[_table["name"]] = _make(_table)
     __all__.append(_table["name"])
+
+
+def build_info():
+    """What this build holds: ``{"version", "ginac", "lacking"}``. A build made with -DSCALCAL_WITH_GINAC=OFF
+    (docs/install.md) has ``ginac`` False and lacks ``family`` and ``jig``: ``lacking`` maps each to the line
+    the CLI gives for it, and calling it raises UsageError with that line."""
+    return _scalcal.build_info()
+
+
+def _lacking(name, message):
+    def command(*args, **kwargs):
+        raise UsageError(message)
+
+    command.__name__ = command.__qualname__ = name
+    command.__doc__ = f"Not in this build: {message}."
+    return command
+
+
+for _name, _message in _scalcal.build_info()["lacking"].items():
+    globals()[_name] = _lacking(_name, _message)
+    __all__.append(_name)
 
 _calibrate_command = calibrate  # noqa: F821 (made from its table above)
 

@@ -371,3 +371,12 @@ def test_pose_stream_refuses_what_is_not_its_own():
         s.calibrate(magnitude=1.0, window=0.5)
     with pytest.raises(scalcal.UsageError, match="threshold_factor must be a positive number"):
         scalcal.PoseStream("t", threshold_factor=-1.0)
+
+
+def test_build_info_says_what_the_build_holds():
+    # A normal build has GiNaC and lacks nothing; a build without it (scripts/without_ginac.sh checks that one)
+    # names `family` and `jig` as lacking.
+    info = scalcal.build_info()
+    assert info == {"version": scalcal.__version__, "ginac": True, "lacking": {}}
+    assert "def build_info() -> dict[str, Any]: ..." in open(
+        os.path.join(os.path.dirname(scalcal.__file__), "__init__.pyi")).read()
