@@ -13,7 +13,7 @@ set(CPACK_PACKAGE_DESCRIPTION
     "proven and certified limits, plans them on benches, and calibrates raw logs with honest errors (CLI "
     "`scalcal`, C++ libraries, Python module). The binaries link GiNaC and CLN (GPL-2.0-or-later); the sources "
     "are BSD-3-Clause.")
-if(NOT SCALCAL_WITH_GINAC)  # docs/install.md: the licences of what the binaries then link
+if(NOT SCALCAL_WITH_GINAC)  # docs/library.md: the licences of what the binaries then link
   set(CPACK_PACKAGE_DESCRIPTION
       "scalcal designs calibration programs for triads of accelerometers, magnetometers and gyroscopes against "
       "proven and certified limits and calibrates raw logs with honest errors (CLI `scalcal`, C++ libraries, "

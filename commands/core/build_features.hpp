@@ -1,4 +1,4 @@
-// What this build holds: GiNaC's closed forms or not (-DSCALCAL_WITH_GINAC, docs/install.md). Without
+// What this build holds: GiNaC's closed forms or not (-DSCALCAL_WITH_GINAC, docs/library.md). Without
 // GiNaC the commands that are closed forms through and through (`family`, `jig`) are lacking, and so are
 // the families' program names (the printable jigs, jig:NAME); the front ends name what is lacking in one
 // line. build_features_with_ginac.cpp and build_features_without_ginac.cpp are the two builds' sides.
