@@ -4,9 +4,9 @@
 # evaluate, optimize, limits and calibrate and compares them with the normal build's CLI (the same bytes where no
 # closed form is involved, the same numbers where one is), and checks the one-line refusals of what it lacks.
 # Usage: scripts/without_ginac.sh [NORMAL_CLI]   (default build/experiments/scalcal: build it first,
-# bash scripts/build.sh scalcal). SCALCAL_JOBS sets the build's jobs (default: the cores). Not run by
-# scripts/test.sh: from an empty build-noginac/ the build takes most of its time (629 CPU-s, 11 min at -j1;
-# the checks alone 21 s, docs/library.md).
+# bash scripts/build.sh scalcal). SCALCAL_JOBS sets the build's jobs (default: the cores). scripts/test.sh runs
+# it: from an empty build-noginac/ the build takes most of its time (557 CPU-s, 5 min at -j2 on 2 cores; the
+# checks alone 16 CPU-s, 14 s, docs/library.md).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 normal="$(realpath "${1:-build/experiments/scalcal}")"
@@ -51,9 +51,10 @@ import json, sys
 
 
 def equal(n, o):
-    """The same JSON, the run time aside; an `exact` the build without GiNaC leaves null (a cap's) is not compared."""
+    """The same JSON, the run time and the builds' commits aside; an `exact` the build without GiNaC leaves null (a
+    cap's) is not compared."""
     if isinstance(n, dict) and isinstance(o, dict):
-        keys = (set(n) | set(o)) - {"seconds"}
+        keys = (set(n) | set(o)) - {"seconds", "commit"}
         return all(k in n and k in o and (k == "exact" and o[k] is None or equal(n[k], o[k])) for k in keys)
     if isinstance(n, list) and isinstance(o, list):
         return len(n) == len(o) and all(equal(a, b) for a, b in zip(n, o))
@@ -76,8 +77,8 @@ same optimize --positions 10 --criterion E --region cap:90 --seed 1 --json  # a 
 same calibrate --measurements data/xsens_acc.txt --magnitude 9.81744 --json
 same calibrate --instrument gyro --measurements data/xsens_gyro.txt --accelerometer data/xsens_acc.txt \
   --accelerometer-magnitude 9.81744 --json
-# The real logs of /work/shared/data (issue 31), where present.
-shared=/work/shared/data
+# The real logs of the shared data beside the repository (../shared/data, issue 31), where present.
+shared="$PWD/../shared/data"
 if [ -d "$shared" ]; then
   same calibrate --measurements "$shared/mpu6050_acc.csv" --rate 100 --magnitude 9.80665 --json
   same calibrate --measurements "$shared/nilspod_ferraris_acc.csv" --rate 102.4 --magnitude 9.81 --json
