@@ -50,6 +50,9 @@ Vec3 mean_of(const LogStream& stream, int i, int j, const Vec3& shift, int& coun
   return Vec3(s / std::max(count, 1));
 }
 
+// Still runs at most this many samples apart (a second) may be one pose (close_run).
+int longest_break(const LogStream& stream) { return std::max(1, static_cast<int>(std::lround(1.0 / stream.period()))); }
+
 // Whether a still run turns: its first and last thirds' means more than kPoseDriftRad of the radius
 // apart. A slow motion (a short window and a high threshold take a second of a turn at 10 degrees
 // per second for a pose) turns by degrees; a hand-held pose settles by less (the public logs' poses:
@@ -98,30 +101,38 @@ void StillPoseDetector::extend_variances(const LogStream& stream) {
   }
 }
 
+// The initial still period (--still), once the stream is past it: its usable samples and, when they
+// fill a window, their variance norm as the floor. False while the period goes on.
+bool StillPoseDetector::settle_still_period(const LogStream& stream) {
+  const RawLog& log = stream.log();
+  const int first = stream.first_usable();
+  if (first < 0) return false;
+  const double end = log.t[static_cast<std::size_t>(first)] + options_.still_seconds;
+  Vec3 sum = Vec3::Zero(), sum2 = Vec3::Zero();
+  int count = 0, i = first;
+  for (; i < stream.decided() && log.t[static_cast<std::size_t>(i)] <= end; ++i)
+    if (stream.usable()[static_cast<std::size_t>(i)]) {
+      const Vec3 s = log.samples[static_cast<std::size_t>(i)] - log.samples[static_cast<std::size_t>(first)];
+      sum += s;
+      sum2 += s.cwiseProduct(s);
+      ++count;
+    }
+  if (i == stream.decided() && !stream.ended()) return false;
+  still_settled_ = true;
+  still_samples_ = count;
+  if (count < window_) return true;  // detection() says why
+  const Vec3 mean = sum / count;
+  floor_ = (sum2 / count - mean.cwiseProduct(mean)).cwiseMax(0.0).norm();
+  return true;
+}
+
 // The floor: the initial still period's variance (--still), once the stream is past it; else the
 // quiet windows' median, recomputed as the windows grow by a sixty-fourth (the whole log at its end),
 // and trusted once white windows make up the 5 % of the windows whose quantile it starts from (and at
 // least a window's worth): before, the quietest windows could be a slow motion's.
 bool StillPoseDetector::update_floor(const LogStream& stream) {
   if (floor_from_still_) {
-    if (floor_ > 0) return true;
-    const RawLog& log = stream.log();
-    const int first = stream.first_usable();
-    if (first < 0) return false;
-    const double end = log.t[static_cast<std::size_t>(first)] + options_.still_seconds;
-    Vec3 sum = Vec3::Zero(), sum2 = Vec3::Zero();
-    int count = 0, i = first;
-    for (; i < stream.decided() && log.t[static_cast<std::size_t>(i)] <= end; ++i)
-      if (stream.usable()[static_cast<std::size_t>(i)]) {
-        const Vec3 s = log.samples[static_cast<std::size_t>(i)] - log.samples[static_cast<std::size_t>(first)];
-        sum += s;
-        sum2 += s.cwiseProduct(s);
-        ++count;
-      }
-    if (i == stream.decided() && !stream.ended()) return false;  // the still period goes on
-    if (count < window_) return false;                           // detection() says why
-    const Vec3 mean = sum / count;
-    floor_ = (sum2 / count - mean.cwiseProduct(mean)).cwiseMax(0.0).norm();
+    if (!still_settled_ && !settle_still_period(stream)) return false;  // the still period goes on
   } else if (!finite_.empty() && finite_.size() != floor_windows_) {
     const bool trusted = white_ >= kFloorWhiteWindows * window_ && 20.0 * white_ >= static_cast<double>(finite_.size());
     if (!stream.ended() &&
@@ -147,7 +158,7 @@ void StillPoseDetector::advance(const LogStream& stream) {
 // The run-length rules, sample by sample: a still sample opens or grows the run; a moving one closes
 // it; a merged run no later run can join any more (a break longer than a second) is settled.
 void StillPoseDetector::judge(const LogStream& stream, int upto) {
-  const int longest_break = std::max(1, static_cast<int>(std::lround(1.0 / stream.period())));
+  const int gap = longest_break(stream);
   for (int i = judged_; i < upto; ++i) {
     const double v = variances_[static_cast<std::size_t>(i)];
     if (std::isfinite(v) && v < threshold_) {
@@ -158,7 +169,7 @@ void StillPoseDetector::judge(const LogStream& stream, int upto) {
       continue;
     }
     if (run_) close_run(stream);
-    if (pending_ && i - pending_->end - 1 >= longest_break) settle_pending(stream);
+    if (pending_ && i - pending_->end - 1 >= gap) settle_pending(stream);
   }
   judged_ = upto;
 }
@@ -171,8 +182,8 @@ void StillPoseDetector::judge(const LogStream& stream, int upto) {
 void StillPoseDetector::close_run(const LogStream& stream) {
   const auto [first, last] = *run_;
   run_.reset();
-  const int longest_break = std::max(1, static_cast<int>(std::lround(1.0 / stream.period())));
-  if (pending_ && first - pending_->end - 1 <= longest_break) {
+  const int gap = longest_break(stream);
+  if (pending_ && first - pending_->end - 1 <= gap) {
     const Vec3 shift = stream.log().samples[static_cast<std::size_t>(stream.first_usable())];
     const double sigma2 = floor_ / std::sqrt(3.0);
     int na = 0, nb = 0;
@@ -228,20 +239,13 @@ IntervalDetection StillPoseDetector::detection(const LogStream& stream) const {
       throw InputError(
           log.file, 0,
           "the log holds no complete window of " + std::to_string(window_) + " usable samples; shorten --window");
-    if (floor_from_still_ && !(floor_ > 0)) {  // too short a still period, or a silent one
-      const int first = stream.first_usable();
-      const double end = log.t[static_cast<std::size_t>(first)] + options_.still_seconds;
-      int count = 0;
-      for (int i = first; i < log.size() && log.t[static_cast<std::size_t>(i)] <= end; ++i)
-        count += stream.usable()[static_cast<std::size_t>(i)];
-      if (count < window_)
-        throw InputError(log.file, 0,
-                         "the initial still period (--still " + seconds(options_.still_seconds) + " s) holds " +
-                             std::to_string(count) + " usable samples, fewer than one variance window (" +
-                             std::to_string(window_) +
-                             "); lengthen --still, shorten --window, or drop --still (the noise "
-                             "floor then comes from the log's quiet windows)");
-    }
+    if (floor_from_still_ && still_samples_ < window_)
+      throw InputError(log.file, 0,
+                       "the initial still period (--still " + seconds(options_.still_seconds) + " s) holds " +
+                           std::to_string(still_samples_) + " usable samples, fewer than one variance window (" +
+                           std::to_string(window_) +
+                           "); lengthen --still, shorten --window, or drop --still (the noise "
+                           "floor then comes from the log's quiet windows)");
     if (!(floor_ > 0))
       throw InputError(
           log.file, 0,

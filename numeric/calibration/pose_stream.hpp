@@ -36,6 +36,7 @@ class StillPoseDetector {
  private:
   bool fix_window(const LogStream& stream);
   void extend_variances(const LogStream& stream);
+  bool settle_still_period(const LogStream& stream);
   bool update_floor(const LogStream& stream);
   void judge(const LogStream& stream, int upto);
   void close_run(const LogStream& stream);
@@ -49,6 +50,8 @@ class StillPoseDetector {
   int white_ = 0;                  // white windows seen
   double floor_ = 0, threshold_ = 0;
   bool floor_from_still_ = false;
+  bool still_settled_ = false;  // --still: the period is past (still_samples_ usable samples in it)
+  int still_samples_ = 0;
   int judged_ = 0;                          // samples judged static or not
   std::optional<std::pair<int, int>> run_;  // the open still run
   std::optional<StaticInterval> pending_;   // the last merged run, which a run a short break later may join
