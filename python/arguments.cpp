@@ -6,6 +6,7 @@
 
 #include "commands/core/usage_error.hpp"
 #include "numeric/io/csv_table.hpp"
+#include "numeric/io/option_words.hpp"
 #include "python/from_numpy.hpp"
 
 namespace py = pybind11;
@@ -111,9 +112,9 @@ void set(commands::Values& values, const Option& o, py::handle v) {
       values.set(o.name, value_text(o, v));
     }
   } catch (const UsageError& e) {
-    // "--positions: must be ..." from the table's check, named as Python names the argument.
-    const std::string m = e.what();
-    if (m.rfind(o.name + ": ", 0) == 0) throw UsageError(o.python_name() + ": " + m.substr(o.name.size() + 2));
+    // "positions: must be ..." from the table's check (option_word), named as Python names the argument.
+    const std::string m = e.what(), prefix = option_word(o.name) + ": ";
+    if (m.rfind(prefix, 0) == 0) throw UsageError(o.python_name() + ": " + m.substr(prefix.size()));
     throw;
   }
 }

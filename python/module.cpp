@@ -25,6 +25,7 @@
 #include "numeric/io/blas_kernel.hpp"
 #include "numeric/io/input_error.hpp"
 #include "numeric/io/interrupt.hpp"
+#include "numeric/io/option_words.hpp"
 #include "numeric/io/resource_error.hpp"
 #include "numeric/program/catalogue.hpp"
 #include "python/arguments.hpp"
@@ -195,7 +196,8 @@ PYBIND11_MODULE(_scalcal, m) {
   m.doc() = "scalcal's compiled core: option tables and one runner (use the package `scalcal`)";
   m.attr("__version__") = SCALCAL_VERSION;
   m.def("blas_kernel", &scalcal::blas_kernel, "the OpenBLAS kernel in use (\"\" for another BLAS)");
-  scalcal::commands::register_family_programs();  // the families' program names, as the CLI has them
+  scalcal::set_option_style(scalcal::OptionStyle::python);  // messages say threshold_factor=, not --threshold-factor
+  scalcal::commands::register_family_programs();            // the families' program names, as the CLI has them
   static py::exception<scalcal::InputError> input_error(m, "InputError", PyExc_ValueError);
   static py::exception<scalcal::UsageError> usage_error(m, "UsageError", PyExc_ValueError);
   py::register_exception_translator([](std::exception_ptr p) {

@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """The house rules that check themselves (ctest -L rules): no function over 100 lines outside proof checks
-and test tables, includes only down the folders' order (docs/layout.md), and clang-format's layout.
+and test tables, includes only down the folders' order (docs/layout.md), clang-format's layout, and no CLI
+flag in the libraries' message text (numeric/io/option_words.hpp names options in each front end's words).
 
-Usage: check_rules.py [--lengths] [--includes] [--format] [--list-long N]   (no option: all three)
+Usage: check_rules.py [--lengths] [--includes] [--format] [--flags] [--list-long N]   (no option: all four)
 Exit 1 naming every breach, one per line: file:line: the rule and what breaks it.
 """
 import os
@@ -33,6 +34,10 @@ CONTROL = re.compile(r"^(if|for|while|switch|catch|do|else|try|return|namespace|
 
 
 def tracked_sources():
+    return sorted(f for f in tracked_files() if SOURCE.match(f))
+
+
+def tracked_files():
     try:
         out = subprocess.check_output(["git", "ls-files"], cwd=ROOT, text=True, stderr=subprocess.DEVNULL).split()
     except (OSError, subprocess.CalledProcessError):  # a tree without git (an unpacked source archive)
@@ -40,7 +45,7 @@ def tracked_sources():
         for d, dirs, names in os.walk(ROOT):
             dirs[:] = [x for x in dirs if not x.startswith((".", "build")) and x != "node_modules"]
             out += [os.path.relpath(os.path.join(d, n), ROOT) for n in names]
-    return sorted(f for f in out if SOURCE.match(f))
+    return sorted(out)
 
 
 def strip_code(text):
@@ -212,6 +217,65 @@ def check_includes():
     return breaches
 
 
+# Flags in message text: the libraries under the front ends write "{magnitude}" for words() to render.
+# A literal that is one whole option name ("--magnitude": a table's key, Values::text's argument) names no
+# flag to a user, and an export's first line names the command that writes that file ("# scalcal export
+# --format px4 ..."): the file is the same whichever front end wrote it.
+FLAG_ROOTS = ("numeric/", "commands/")
+FLAG = re.compile(r"(?<![A-Za-z0-9_-])--[a-z][a-z0-9-]*")
+OPTION_KEY = re.compile(r"--[a-z][a-z0-9-]*")
+PROVENANCE = re.compile(r"^(# |% |/\* )scalcal ")
+
+
+def string_literals(text):
+    """(line, body) of each string literal outside comments (raw literals included)."""
+    i, n = 0, len(text)
+    while i < n:
+        if text.startswith("//", i):
+            j = text.find("\n", i)
+            i = n if j < 0 else j
+        elif text.startswith("/*", i):
+            j = text.find("*/", i + 2)
+            i = n if j < 0 else j + 2
+        elif text[i] == "'":
+            j = i + 1
+            while j < n and text[j] != "'":
+                j += 2 if text[j] == "\\" else 1
+            i = j + 1
+        elif text[i] == '"':
+            if i > 0 and text[i - 1] == "R" and (i < 2 or not (text[i - 2].isalnum() or text[i - 2] == "_")):
+                delim = text[i + 1:text.find("(", i)]
+                j = text.find(")" + delim + '"', i)
+                j = n if j < 0 else j
+                yield text.count("\n", 0, i) + 1, text[i + 2 + len(delim):j]
+                i = j + len(delim) + 2
+                continue
+            j = i + 1
+            while j < n and text[j] != '"':
+                j += 2 if text[j] == "\\" else 1
+            yield text.count("\n", 0, i) + 1, text[i + 1:j]
+            i = j + 1
+        else:
+            i += 1
+
+
+def flag_breaches_in(text):
+    return [(line, body) for line, body in string_literals(text)
+            if FLAG.search(body) and not OPTION_KEY.fullmatch(body) and not PROVENANCE.match(body)]
+
+
+def check_flags():
+    breaches = []
+    for f in tracked_sources() + [x for x in tracked_files() if x.endswith(".in")]:
+        if not f.startswith(FLAG_ROOTS):
+            continue
+        text = open(os.path.join(ROOT, f), encoding="utf-8", errors="replace").read()
+        for line, body in flag_breaches_in(text):
+            breaches.append(f"{f}:{line}: a CLI flag in message text ({FLAG.search(body).group(0)}): write "
+                            "{name} and words() (numeric/io/option_words.hpp)")
+    return breaches
+
+
 def check_format():
     script = os.path.join(ROOT, "scripts", "check_format.sh")
     r = subprocess.run(["bash", script], cwd=ROOT, capture_output=True, text=True)
@@ -219,9 +283,10 @@ def check_format():
 
 
 def main(argv):
-    chosen = [a for a in argv if a in ("--lengths", "--includes", "--format")] or ["--lengths", "--includes",
-                                                                                   "--format"]
-    checks = {"--lengths": check_lengths, "--includes": check_includes, "--format": check_format}
+    every = ["--lengths", "--includes", "--format", "--flags"]
+    chosen = [a for a in argv if a in every] or every
+    checks = {"--lengths": check_lengths, "--includes": check_includes, "--format": check_format,
+              "--flags": check_flags}
     breaches = []
     for c in chosen:
         breaches += checks[c]()

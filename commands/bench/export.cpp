@@ -6,6 +6,7 @@
 #include "commands/core/common_options.hpp"
 #include "commands/core/usage_error.hpp"
 #include "numeric/io/input_error.hpp"
+#include "numeric/io/option_words.hpp"
 
 namespace scalcal::commands {
 namespace {
@@ -29,8 +30,9 @@ std::string format_help() {
 
 Instrument instrument_of(const ExportRequest& q, const CalibrationFile& c) {
   if (q.instrument && c.instrument && *q.instrument != *c.instrument)
-    throw UsageError("export: --instrument " + std::string(instrument_name(*q.instrument)) + " contradicts the " +
-                     std::string(instrument_name(*c.instrument)) + " calibration in " + display_name(q.calibration));
+    throw UsageError(words("export: {instrument} ") + std::string(instrument_name(*q.instrument)) +
+                     " contradicts the " + std::string(instrument_name(*c.instrument)) + " calibration in " +
+                     display_name(q.calibration));
   return q.instrument ? *q.instrument : c.instrument ? *c.instrument : Instrument::accel;
 }
 
@@ -94,7 +96,7 @@ ExportInput input_of(const ExportRequest& q, const ExportResult& r) {
     in.raw_scale = parse_amount(q.raw_scale);
     if (!in.raw_scale)
       throw UsageError(
-          "export: --raw-scale: expected a positive size with its unit, such as 0.061mg or 1/16384g, got '" +
+          words("export: {raw-scale}: expected a positive size with its unit, such as 0.061mg or 1/16384g, got '") +
           q.raw_scale + "' (units: " + unit_names() + ")");
   }
   in.kept.emplace_back("format_version", std::to_string(kCalibrationFormatVersion));
@@ -120,7 +122,7 @@ const CommandTable& export_table() {
   Option calibration;
   calibration.name = "CALIBRATION";
   calibration.kind = OptionKind::positional;
-  calibration.what = "a calibration file written by calibrate --out";
+  calibration.what = words("a calibration file written by calibrate {out}");
   calibration.takes_document = true;
   static const CommandTable table{
       "export",
@@ -165,7 +167,7 @@ ExportRequest export_request(const Values& v) {
 
 ExportResult export_calibration(const ExportRequest& q) {
   const ExportFormat* format = find_export_format(q.format);
-  if (!format) throw UsageError("export: --format '" + q.format + "' is not one of " + export_format_names());
+  if (!format) throw UsageError(words("export: {format} '") + q.format + "' is not one of " + export_format_names());
   ExportResult r;
   r.request = q;
   r.calibration = q.calibration_document

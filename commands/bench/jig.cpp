@@ -9,6 +9,7 @@
 #include "commands/design/gyro_regions.hpp"
 #include "numeric/criteria/identifiability.hpp"
 #include "numeric/io/input_error.hpp"
+#include "numeric/io/option_words.hpp"
 #include "numeric/synthesis/mounting.hpp"
 #include "symbolic/exact.hpp"
 #include "symbolic/family.hpp"
@@ -72,8 +73,8 @@ void gyro_reading(const std::string& jig, const Program& normals, JigResult& r) 
     for (const Vec3& m : normals.positions) opposite = opposite || (n + m).norm() < 1e-9;
     if (!opposite)
       throw InputError(jig, 0,
-                       "--instrument gyro: its faces are not in opposite pairs, so reversed turns would add "
-                       "directions; evaluate the program with its antipodes instead");
+                       words("{instrument gyro}: its faces are not in opposite pairs, so reversed turns would add "
+                             "directions; evaluate the program with its antipodes instead"));
   }
   r.instrument = "gyro";
   r.instrument_note =

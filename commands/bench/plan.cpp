@@ -12,6 +12,7 @@
 #include "numeric/bench/rounding.hpp"
 #include "numeric/criteria/efficiency.hpp"
 #include "numeric/io/input_error.hpp"
+#include "numeric/io/option_words.hpp"
 
 namespace scalcal::commands {
 namespace {
@@ -77,11 +78,11 @@ void refuse_loss(const PlanRequest& q, const PlanResult& r) {
   const double lost = r.as_run.full_rank() ? r.efficiency_lost[static_cast<std::size_t>(D.index())] : 1.0;
   if (!(lost * 100 > q.max_loss * 100 + 1e-12) && !std::isnan(lost)) return;
   throw UsageError(
-      "--resolution " + short_number(q.resolution_deg) + " moves the positions out of the design: as run " +
+      words("{resolution} ") + short_number(q.resolution_deg) + " moves the positions out of the design: as run " +
       (r.as_run.full_rank() ? "" : "the program is rank-deficient and ") + "it loses " +
       short_number(std::isnan(lost) ? 100 : 100 * lost, "%.3g") + " % of its D efficiency (positions up to " +
-      short_number(r.max_rounding_deg(), "%.3g") + " deg from the design), beyond --max-loss " +
-      short_number(100 * q.max_loss, "%.3g") + " %: a finer --resolution, or --max-loss 100 to plan it anyway");
+      short_number(r.max_rounding_deg(), "%.3g") + words(" deg from the design), beyond {max-loss} ") +
+      short_number(100 * q.max_loss, "%.3g") + words(" %: a finer {resolution}, or {max-loss 100} to plan it anyway"));
 }
 
 RunPlan as_run_plan(const std::vector<PlannedStep>& steps) {
@@ -135,11 +136,12 @@ const CommandTable& plan_table() {
                            "set every angle to a multiple of this, never leaving the region (0: the exact angles)",
                            "degrees", "0"),
              "DEG"),
-       named(number_option("--max-loss", 0, 100,
-                           "the largest share of the design's D efficiency that rounding to --resolution may cost: "
-                           "beyond it plan stops and says so (100: plan whatever it costs)",
-                           "percent", "5"),
-             "PERCENT"),
+       named(
+           number_option("--max-loss", 0, 100,
+                         words("the largest share of the design's D efficiency that rounding to {resolution} may cost: "
+                               "beyond it plan stops and says so (100: plan whatever it costs)"),
+                         "percent", "5"),
+           "PERCENT"),
        choice_option("--order", {"travel", "remounts", "given"},
                      "travel: fewest remounts, then least travel of the axes; remounts: fewest remounts, the given "
                      "order within each mounting; given: the program's order",
@@ -151,7 +153,8 @@ const CommandTable& plan_table() {
                            "minutes", "30"),
              "MIN"),
        named(number_option("--dwell", 0, 86400,
-                           "a thermal program: seconds at rest on each position (simulate's --dwell)", "seconds", "5"),
+                           words("a thermal program: seconds at rest on each position (simulate's {dwell})"), "seconds",
+                           "5"),
              "S"),
        out_option("write the plan as a program file in run order (step, position, mounting, angles, a thermal "
                   "program's t_c; region line)"),
@@ -199,7 +202,7 @@ PlanResult plan(const PlanRequest& q, const Progress& progress) {
     for (const auto& c : choices) settings += static_cast<double>(c.size());
     check_work(std::to_string(q.program.size()) + " positions on " + r.bench.text() + " (order travel)",
                plan_work(q.program.size(), settings / std::max<std::size_t>(1, choices.size())),
-               "plan the program in parts, or --order remounts");
+               words("plan the program in parts, or {order} remounts"));
   }
   if (progress) progress("ordering", 0, 0);
   RunPlan given = run_in_order(r.bench, choices, [&] {

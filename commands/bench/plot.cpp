@@ -14,6 +14,7 @@
 #include "commands/core/work_bound.hpp"
 #include "numeric/io/csv_table.hpp"
 #include "numeric/io/input_error.hpp"
+#include "numeric/io/option_words.hpp"
 #include "numeric/program/catalogue.hpp"
 #include "numeric/region/region.hpp"
 
@@ -191,7 +192,7 @@ std::string figure_stem(const std::string& out, std::string& folder) {
   const std::filesystem::path p(out);
   const std::string ext = p.extension().string();
   if (ext != ".pdf" && ext != ".png" && ext != ".svg")
-    throw UsageError("--out " + display_name(out) +
+    throw UsageError(words("{out} ") + display_name(out) +
                      ": the figure is FILE.pdf, FILE.png or FILE.svg (all three are made, with FILE.gp)");
   folder = p.parent_path().empty() ? "." : p.parent_path().string();
   return p.stem().string();
@@ -208,9 +209,9 @@ std::string default_out(const std::string& program) {
 
 // PROGRAM is optional: --log draws a log instead.
 Option optional_program() {
-  Option o = program_argument(
-      "a catalogue name or a CSV file (a plan file from `plan --out`: numbered by step, its "
-      "path drawn)");
+  Option o =
+      program_argument(words("a catalogue name or a CSV file (a plan file from `plan {out}`: numbered by step, its "
+                             "path drawn)"));
   o.kind = OptionKind::text;
   return o;
 }
@@ -228,7 +229,7 @@ const CommandTable& plot_table() {
       58,
       {optional_program(), region_option(),
        text_option("--log", "FILE", "instead of a program: a raw log (t,ix,iy,iz CSV or text t ix iy iz)", "file path"),
-       text_option("--calibration", "CAL.json", "with --log: the calibration of that log (calibrate --out)",
+       text_option("--calibration", "CAL.json", words("with {log}: the calibration of that log (calibrate {out})"),
                    "file path"),
        figure}};
   return table;
@@ -238,15 +239,16 @@ PlotRequest plot_request(const Values& v) {
   PlotRequest q;
   if (v.given("--log") || v.given("--calibration")) {
     if (!v.given("--log") || !v.given("--calibration"))
-      throw UsageError("--log FILE and --calibration CAL.json go together");
+      throw UsageError(words("{log FILE} and {calibration CAL.json} go together"));
     if (v.given("PROGRAM") || v.program || v.given("--region"))
-      throw UsageError("--log draws a log: it takes no PROGRAM or --region");
+      throw UsageError(words("{log} draws a log: it takes no PROGRAM or {region}"));
     q.log = v.text("--log");
     q.calibration = v.text("--calibration");
     q.out = v.given("--out") ? v.text("--out") : default_out(q.log);
     return q;
   }
-  if (!v.given("PROGRAM") && !v.program) throw UsageError("PROGRAM is required (or --log FILE --calibration CAL.json)");
+  if (!v.given("PROGRAM") && !v.program)
+    throw UsageError(words("PROGRAM is required (or {log FILE} {calibration CAL.json})"));
   q.name = v.text("PROGRAM");
   q.program = program_of(v);
   q.out = v.given("--out") ? v.text("--out") : default_out(q.name);
@@ -347,7 +349,7 @@ void refuse_overwriting(const PlotRequest& q, const PlotResult& r) {
     if (input.empty() || !fs::exists(input, ec)) continue;
     for (const auto& o : outputs)
       if (fs::exists(fs::path(r.folder) / o, ec) && fs::equivalent(fs::path(r.folder) / o, input, ec))
-        throw UsageError("--out " + display_name(q.out) + " would write " + o + " over the input " +
+        throw UsageError(words("{out} ") + display_name(q.out) + " would write " + o + " over the input " +
                          display_name(input));
   }
 }

@@ -9,6 +9,7 @@
 #include "numeric/calibration/raw_log.hpp"
 #include "numeric/io/csv_table.hpp"
 #include "numeric/io/input_error.hpp"
+#include "numeric/io/option_words.hpp"
 
 namespace scalcal::commands {
 namespace {
@@ -41,7 +42,8 @@ std::vector<Interval> poses_of(const Json& j, const std::string& file, double ma
     if (!p.is_object() || !p["t_c"].is_number() || !p["start_s"].is_number() || !p.contains("stop_s") ||
         !p["stop_s"].is_number() || !p["residual"].is_number() || !p["mean"].is_array() || p["mean"].size() != 3 ||
         !p["samples"].is_number_integer())
-      throw InputError(file, 0, "its poses need t_c, start_s, stop_s, mean, samples and residual (calibrate --out)");
+      throw InputError(file, 0,
+                       words("its poses need t_c, start_s, stop_s, mean, samples and residual (calibrate {out})"));
     out.push_back({p["start_s"].get<double>(), p["stop_s"].get<double>(), magnitude * p["residual"].get<double>(),
                    Vec3(p["mean"][0].get<double>(), p["mean"][1].get<double>(), p["mean"][2].get<double>()),
                    p["samples"].get<int>(), p["t_c"].get<double>()});
@@ -59,7 +61,7 @@ std::vector<Interval> intervals_of(const std::string& file, double& magnitude) {
     return out;
   }
   if (!j.is_object() || !j.contains("intervals") || !j["intervals"].is_array())
-    throw InputError(file, 0, "not a calibration of a log (calibrate --out): it has no 'intervals'");
+    throw InputError(file, 0, words("not a calibration of a log (calibrate {out}): it has no 'intervals'"));
   magnitude = j.contains("magnitude") && j["magnitude"].is_number() ? j["magnitude"].get<double>() : 1.0;
   std::vector<Interval> out;
   for (const auto& i : j["intervals"]) {

@@ -14,6 +14,7 @@
 #include "commands/core/usage_error.hpp"
 #include "numeric/calibration/model_choice.hpp"
 #include "numeric/io/input_error.hpp"
+#include "numeric/io/option_words.hpp"
 
 namespace scalcal::commands {
 namespace {
@@ -57,15 +58,16 @@ void choose(const CalibrateRequest& q, const std::vector<PositionSamples>& data,
   }
   const LayoutVerdict v = judge_layout(*q.model, layout, gain);
   if (!v.carried) {
-    std::string hint = automatic ? "; --model " + std::string(model_name(automatic->model)) + " (or auto) would work"
-                                 : "; no registered model would work with these positions";
+    std::string hint = automatic
+                           ? words("; {model} ") + std::string(model_name(automatic->model)) + " (or auto) would work"
+                           : "; no registered model would work with these positions";
     throw InputError(q.file, 0,
-                     "--model " + std::string(model_name(*q.model)) + " cannot be identified by these positions (" +
-                         v.why + ")" + hint);
+                     words("{model} ") + std::string(model_name(*q.model)) +
+                         " cannot be identified by these positions (" + v.why + ")" + hint);
   }
   out.model = *q.model;
-  out.model_reason = "requested (--model " + std::string(model_name(*q.model)) + "; the layout carries it, condition " +
-                     number(v.condition) + ")";
+  out.model_reason = words("requested ({model} ") + std::string(model_name(*q.model)) +
+                     "; the layout carries it, condition " + number(v.condition) + ")";
 }
 
 void collect_positions(const CalibrationInput& in, CalibrateResult& out) {
@@ -103,8 +105,8 @@ void check_finite(const CalibrateResult& r) {
   for (const auto& p : r.positions) ok = ok && p.direction.allFinite() && std::isfinite(p.residual);
   if (!ok)
     throw InputError(r.file, 0,
-                     "the fit of --model " + std::string(model_name(r.model)) + " gave values that are not finite (" +
-                         a.estimate.summary.message + "); nothing is reported");
+                     words("the fit of {model} ") + std::string(model_name(r.model)) +
+                         " gave values that are not finite (" + a.estimate.summary.message + "); nothing is reported");
 }
 
 void collect_warnings(const CalibrateResult& r, Warnings& w) {
@@ -284,7 +286,7 @@ void fit_with_fallback(const CalibrateRequest& q, CalibrationInput& in, const An
   if (why.empty() || q.model) {
     // An explicit model is the user's: one that did not converge is reported as such (exit 1).
     if (!why.empty() && out.fit.estimate.summary.converged())
-      out.warnings.push_back({q.file, "--model " + std::string(model_name(out.model)) + " " + why});
+      out.warnings.push_back({q.file, words("{model} ") + std::string(model_name(out.model)) + " " + why});
     return;
   }
   const ModelKind first = out.model;
@@ -325,22 +327,22 @@ void resolve_units(const CalibrateRequest& q, CalibrateResult& out) {
   }
   if (!q.physical_units.empty()) {
     u.physical = parse_unit(q.physical_units);
-    out.units_reason = "given (--units)";
+    out.units_reason = words("given ({units})");
   } else if (!magnitude_auto && out.instrument) {
     u.physical = unit_of_earth_magnitude(*out.instrument, std::stod(q.magnitude));
     if (u.physical)
-      out.units_reason = "physical units " + std::string(u.physical->name) + " from --magnitude " + q.magnitude +
+      out.units_reason = "physical units " + std::string(u.physical->name) + words(" from {magnitude} ") + q.magnitude +
                          " (the Earth's " + (*out.instrument == Instrument::accel ? "gravity" : "field") +
                          " in those units)";
   }
   if (!u.raw && !out.raw_counts && !out.fit.started && u.physical) {
     u.raw = u.physical;
     out.units_reason += std::string(out.units_reason.empty() ? "" : "; ") +
-                        "raw units the physical ones (the data were within 10 % of --magnitude)";
+                        words("raw units the physical ones (the data were within 10 % of {magnitude})");
   }
   if (magnitude_auto)
     out.units_reason = std::string(out.units_reason.empty() ? "" : out.units_reason + "; ") +
-                       "corrected to unit modulus (--magnitude auto)";
+                       words("corrected to unit modulus ({magnitude auto})");
 }
 
 // A thermal fit corrects in the log's own units (|I| = --magnitude in them): raw and physical units are one,
@@ -348,20 +350,21 @@ void resolve_units(const CalibrateRequest& q, CalibrateResult& out) {
 void thermal_units(const CalibrateRequest& q, double magnitude, CalibrateResult& r) {
   r.instrument = q.instrument;
   if (q.instrument == Instrument::gyro)
-    throw UsageError("calibrate: a thermal model is an accelerometer's or a magnetometer's (--instrument accel|mag)");
+    throw UsageError(
+        words("calibrate: a thermal model is an accelerometer's or a magnetometer's ({instrument accel|mag})"));
   if (!q.raw_units.empty()) {
     if (q.raw_units != q.physical_units || is_count_unit(q.raw_units))
       throw UsageError(
-          "calibrate: --units: a thermal fit corrects in the log's own units (|I| = --magnitude in them): "
-          "give one unit twice, such as m/s^2,m/s^2, not " +
+          words("calibrate: {units}: a thermal fit corrects in the log's own units (|I| = {magnitude} in them): "
+                "give one unit twice, such as m/s^2,m/s^2, not ") +
           q.raw_units + "," + q.physical_units);
     r.units.raw = r.units.physical = parse_unit(q.raw_units);
-    r.units_reason = "given (--units)";
+    r.units_reason = words("given ({units})");
   } else if (q.instrument) {
     r.units.raw = r.units.physical = unit_of_earth_magnitude(*q.instrument, magnitude);
     if (r.units.raw)
-      r.units_reason = "raw and physical units " + std::string(r.units.raw->name) + " from --magnitude " + q.magnitude +
-                       " (the Earth's " + (*q.instrument == Instrument::accel ? "gravity" : "field") +
+      r.units_reason = "raw and physical units " + std::string(r.units.raw->name) + words(" from {magnitude} ") +
+                       q.magnitude + " (the Earth's " + (*q.instrument == Instrument::accel ? "gravity" : "field") +
                        " in those units)";
   }
 }
@@ -429,7 +432,7 @@ CalibrateResult calibrate(const CalibrateRequest& q, const Progress& progress) {
     const double magnitude = std::strtod(q.magnitude.c_str(), &end);
     if (q.magnitude == "auto" || *end != '\0')
       throw UsageError(
-          "calibrate: a thermal model needs --magnitude M, the field's modulus in the log's units (not auto)");
+          words("calibrate: a thermal model needs {magnitude M}, the field's modulus in the log's units (not auto)"));
     CalibrateResult r;
     r.file = q.file;
     r.request = q;

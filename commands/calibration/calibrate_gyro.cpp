@@ -13,6 +13,7 @@
 #include "numeric/gyro/gravity_poses.hpp"
 #include "numeric/gyro/gyro_simulation.hpp"
 #include "numeric/io/input_error.hpp"
+#include "numeric/io/option_words.hpp"
 #include "numeric/region/augment.hpp"
 #include "numeric/region/region_limit.hpp"
 
@@ -25,38 +26,41 @@ const char* gyro_method_name(GyroMethod m) {
 GyroMethod gyro_method(const GyroCalibrateRequest& r) {
   if (!r.accelerometer.empty()) {
     if (r.accelerometer_magnitude.empty())
-      throw UsageError(
-          "calibrate: --accelerometer needs --accelerometer-magnitude (|g| in the accelerometer's units, or auto)");
+      throw UsageError(words(
+          "calibrate: {accelerometer} needs {accelerometer-magnitude} (|g| in the accelerometer's units, or auto)"));
     if (!r.magnitude.empty() || r.turn_angle_deg)
       throw UsageError(
-          "calibrate: hand rotations (--accelerometer) take no --magnitude or --turn-angle: the gyro's "
-          "rates come from the accelerometer's poses");
-    if (r.latitude_deg) throw UsageError("calibrate: --latitude is for a rate table (--magnitude), not hand rotations");
+          words("calibrate: hand rotations ({accelerometer}) take no {magnitude} or {turn-angle}: the gyro's "
+                "rates come from the accelerometer's poses"));
+    if (r.latitude_deg)
+      throw UsageError(words("calibrate: {latitude} is for a rate table ({magnitude}), not hand rotations"));
     return GyroMethod::hand_rotations;
   }
   if (!r.accelerometer_magnitude.empty())
-    throw UsageError("calibrate: --accelerometer-magnitude needs --accelerometer ACC_LOG");
+    throw UsageError(words("calibrate: {accelerometer-magnitude} needs {accelerometer ACC_LOG}"));
   if (r.turn_angle_deg) {
     if (!r.magnitude.empty())
-      throw UsageError("calibrate: --turn-angle (known turns) and --magnitude (a rate table) exclude each other");
+      throw UsageError(
+          words("calibrate: {turn-angle} (known turns) and {magnitude} (a rate table) exclude each other"));
     if (!(*r.turn_angle_deg > 0) || !std::isfinite(*r.turn_angle_deg))
-      throw UsageError("calibrate: --turn-angle must be a positive number of degrees");
-    if (r.latitude_deg) throw UsageError("calibrate: --latitude is for a rate table (--magnitude), not known turns");
+      throw UsageError(words("calibrate: {turn-angle} must be a positive number of degrees"));
+    if (r.latitude_deg)
+      throw UsageError(words("calibrate: {latitude} is for a rate table ({magnitude}), not known turns"));
     return GyroMethod::known_turns;
   }
   if (r.magnitude.empty())
     throw UsageError(
-        "calibrate --instrument gyro: say how the gyro was turned: --magnitude RATE|auto|column:NAME (a rate "
-        "table), --turn-angle DEG (known turns) or --accelerometer ACC_LOG --accelerometer-magnitude G (hand "
-        "rotations)");
+        words("calibrate {instrument gyro}: say how the gyro was turned: {magnitude RATE|auto|column:NAME} (a rate "
+              "table), {turn-angle DEG} (known turns) or {accelerometer ACC_LOG} {accelerometer-magnitude G} (hand "
+              "rotations)"));
   if (r.magnitude.rfind("column:", 0) != 0) {
     if (const std::string problem = magnitude_problem(r.magnitude); !problem.empty())
-      throw UsageError("calibrate: --magnitude " + problem + " (or column:NAME)");
+      throw UsageError(words("calibrate: {magnitude} ") + problem + " (or column:NAME)");
   } else if (r.magnitude.size() == 7) {
-    throw UsageError("calibrate: --magnitude column:NAME needs the column's name");
+    throw UsageError(words("calibrate: {magnitude column:NAME} needs the column's name"));
   }
   if (r.latitude_deg && !(std::abs(*r.latitude_deg) <= 90))
-    throw UsageError("calibrate: --latitude must be in [-90, 90] degrees");
+    throw UsageError(words("calibrate: {latitude} must be in [-90, 90] degrees"));
   return GyroMethod::rate_table;
 }
 
@@ -69,8 +73,8 @@ double per_rad_per_s(const std::string& unit) {
   const auto u = parse_unit(unit);
   if (!u || u->quantity != Quantity::angular_rate)
     throw UsageError(
-        "calibrate --instrument gyro: --units PHYSICAL must be a unit of angular rate (rad/s, deg/s), got '" + unit +
-        "'");
+        words("calibrate {instrument gyro}: {units PHYSICAL} must be a unit of angular rate (rad/s, deg/s), got '") +
+        unit + "'");
   return 1 / u->base;
 }
 
@@ -87,7 +91,7 @@ std::map<int, double> column_by_line(const std::string& file, const std::string&
   TableFormat lenient;
   lenient.nonfinite_allowed = true;
   const CsvTable table = parse_table(read_text_file(file), file, lenient);
-  if (!table.has(name)) throw InputError(file, 1, "no column '" + name + "' (--magnitude column:" + name + ")");
+  if (!table.has(name)) throw InputError(file, 1, "no column '" + name + words("' ({magnitude column:}") + name + ")");
   const std::size_t c =
       static_cast<std::size_t>(std::find(table.columns.begin(), table.columns.end(), name) - table.columns.begin());
   std::map<int, double> out;
@@ -160,8 +164,8 @@ void rate_table(const GyroCalibrateRequest& q, const RawLog& log, GyroCalibrateR
   if (q.latitude_deg) {
     if (senses.empty())
       throw UsageError(
-          "calibrate: --latitude needs each segment's sense: give the table's signed rate as a column "
-          "(--magnitude column:NAME, positive counterclockwise seen from above)");
+          words("calibrate: {latitude} needs each segment's sense: give the table's signed rate as a column "
+                "({magnitude column:NAME}, positive counterclockwise seen from above)"));
     // The Earth's rate in east, north, up is Omega (0, cos phi, sin phi); along the table's axis it adds to
     // every turn's rate, across it it turns with the table and averages out over a segment's whole turns.
     const double phi = *q.latitude_deg * M_PI / 180;

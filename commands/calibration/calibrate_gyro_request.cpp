@@ -7,6 +7,7 @@
 #include "commands/calibration/calibrate.hpp"
 #include "commands/calibration/calibrate_gyro.hpp"
 #include "commands/core/usage_error.hpp"
+#include "numeric/io/option_words.hpp"
 
 namespace scalcal::commands {
 
@@ -22,11 +23,11 @@ Vec3 table_axis(const std::string& text) {
     char* stop = nullptr;
     a(k) = part.empty() ? NAN : std::strtod(part.c_str(), &stop);
     if (part.empty() || *stop != '\0' || !std::isfinite(a(k)))
-      throw UsageError("--table-axis: expected E,N,U (three numbers, east, north, up), got '" + text + "'");
+      throw UsageError(words("{table-axis}: expected E,N,U (three numbers, east, north, up), got '") + text + "'");
     at = end + 1;
   }
   if (!(a.norm() > 0) || !std::isfinite(a.norm()))
-    throw UsageError("--table-axis: the axis " + text + " has no direction (all zero)");
+    throw UsageError(words("{table-axis}: the axis ") + text + " has no direction (all zero)");
   return a.normalized();
 }
 
@@ -42,28 +43,30 @@ GyroCalibrateRequest gyro_calibrate_request(const Values& v) {
   if (v.given("--accelerometer-magnitude")) q.accelerometer_magnitude = v.text("--accelerometer-magnitude");
   if (v.given("--latitude")) q.latitude_deg = v.number("--latitude");
   if (v.given("--table-axis")) {
-    if (!q.latitude_deg) throw UsageError("calibrate: --table-axis places the Earth's rate: it needs --latitude");
+    if (!q.latitude_deg)
+      throw UsageError(words("calibrate: {table-axis} places the Earth's rate: it needs {latitude}"));
     q.table_axis = table_axis(v.text("--table-axis"));
   }
   // Options of an accelerometer's calibration that a gyro's does not take.
   for (const char* o :
        {"--modulus", "--weights", "--keep-outliers", "--suggest", "--criterion", "--region", "--program"})
     if (v.given(o))
-      throw UsageError(std::string("calibrate --instrument gyro: ") + o + " is an accelerometer's option");
+      throw UsageError(std::string(words("calibrate {instrument gyro}: ")) + o + " is an accelerometer's option");
   q.sensor = v.text("--sensor");
   q.physical_units = "";
   if (const std::string units = v.text("--units"); !units.empty()) {
     const auto comma = units.find(',');
     if (comma == std::string::npos || comma == 0 || comma + 1 == units.size())
-      throw UsageError("--units: expected RAW,PHYSICAL (for example counts,rad/s), got '" + units + "'");
+      throw UsageError(words("{units}: expected RAW,PHYSICAL (for example counts,rad/s), got '") + units + "'");
     q.raw_units = units.substr(0, comma);
     q.physical_units = units.substr(comma + 1);
   }
-  if (v.given("--temperature")) throw UsageError("--temperature belongs to a thermal model, not to --instrument gyro");
+  if (v.given("--temperature"))
+    throw UsageError(words("{temperature} belongs to a thermal model, not to {instrument gyro}"));
   if (v.text("--model") != "auto") {
     const auto model = parse_model(v.text("--model"));
     if (!model)
-      throw UsageError("--instrument gyro: --model " + v.text("--model") +
+      throw UsageError(words("{instrument gyro}: {model} ") + v.text("--model") +
                        " is no gyro model (thermal models are the accelerometer's and magnetometer's)");
     q.model = *model;
   }

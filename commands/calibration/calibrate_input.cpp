@@ -12,6 +12,7 @@
 
 #include <Eigen/Dense>
 #include "numeric/io/input_error.hpp"
+#include "numeric/io/option_words.hpp"
 
 namespace scalcal::commands {
 namespace {
@@ -32,25 +33,27 @@ std::string shortest(double v) {
 std::string too_few_message(const IntervalDetection& d, const StaticIntervalOptions& o, const std::string& need) {
   std::ostringstream s;
   s << std::setprecision(4) << "found " << d.intervals.size() << " static intervals; " << need << ". A window of "
-    << d.window << " samples is static when its variance norm stays below " << d.threshold << " = --threshold-factor "
-    << o.threshold_factor << " x the noise floor " << d.still_variance << " ("
-    << (d.floor_from_still ? "the variance of the first --still " + shortest(o.still_seconds) + " s"
+    << d.window << " samples is static when its variance norm stays below " << d.threshold
+    << words(" = {threshold-factor} ") << o.threshold_factor << " x the noise floor " << d.still_variance << " ("
+    << (d.floor_from_still ? words("the variance of the first {still} ") + shortest(o.still_seconds) + " s"
                            : std::string("the median of the log's quiet windows"))
-    << "), for at least --min-interval " << o.min_seconds << " s. ";
+    << words("), for at least {min-interval} ") << o.min_seconds << " s. ";
   if (d.drifting_runs > 0 && d.intervals.empty()) {
     s << d.drifting_runs << " runs under the threshold turned by more than two degrees (slow motion, not poses): "
       << "the threshold is above the motion"
-      << (d.floor_from_still ? "; the --still period is not still (drop --still: the floor then comes from the quiet "
-                               "windows)"
-                             : "; a smaller --threshold-factor separates the positions");
+      << (d.floor_from_still
+              ? words("; the {still} period is not still (drop {still}: the floor then comes from the quiet "
+                      "windows)")
+              : words("; a smaller {threshold-factor} separates the positions"));
   } else if (d.longest_fraction > 0.5) {
     s << "One interval covers " << std::setprecision(2) << 100 * d.longest_fraction
       << " % of the log: the threshold is above the motion"
-      << (d.floor_from_still ? "; the --still period is not still (drop --still: the floor then comes from the quiet "
-                               "windows)"
-                             : "; a smaller --threshold-factor separates the positions");
+      << (d.floor_from_still
+              ? words("; the {still} period is not still (drop {still}: the floor then comes from the quiet "
+                      "windows)")
+              : words("; a smaller {threshold-factor} separates the positions"));
   } else if (d.short_runs > 0) {
-    s << d.short_runs << " still runs were shorter than --min-interval: a shorter --min-interval counts them";
+    s << d.short_runs << words(" still runs were shorter than {min-interval}: a shorter {min-interval} counts them");
   } else {
     s << "The log holds no other still period of that length: record more positions";
   }
@@ -65,7 +68,7 @@ namespace {
 CalibrationInput input_from_table(const CalibrateRequest& o, const CsvTable& table) {
   if (o.rate > 0 || is_raw_log(table)) {
     if (table.has("position"))
-      throw InputError(o.file, 1, "a 'position' column makes this bench data, which --rate does not apply to");
+      throw InputError(o.file, 1, words("a 'position' column makes this bench data, which {rate} does not apply to"));
     return calibration_input(raw_log_from_table(table, o.rate), o);
   }
   for (const auto& row : table.rows)
@@ -94,14 +97,15 @@ CalibrationInput read_calibration_input(const CalibrateRequest& o) {
   const CsvTable table = parse_table(text, o.file, lenient);
   if (o.rate > 0 || is_raw_log(table)) {
     if (table.has("position"))
-      throw InputError(o.file, 1, "a 'position' column makes this bench data, which --rate does not apply to");
+      throw InputError(o.file, 1, words("a 'position' column makes this bench data, which {rate} does not apply to"));
     return calibration_input(raw_log_from_table(table, o.rate), o);
   }
   if (!table.has("position") && time_column(table) < 0 && rows_change_like_a_log(table))
-    throw InputError(o.file, 0,
-                     "its rows change as a raw log's do (consecutive rows close together, motion between), but it "
-                     "has no time column: give the sample rate with --rate HZ (or a position column, if it is bench "
-                     "data with samples of each position in a row)");
+    throw InputError(
+        o.file, 0,
+        words("its rows change as a raw log's do (consecutive rows close together, motion between), but it "
+              "has no time column: give the sample rate with {rate HZ} (or a position column, if it is bench "
+              "data with samples of each position in a row)"));
   CalibrationInput in;
   in.data = measurements_from_table(parse_csv(text, o.file), need_nominal);  // strict, as always
   return in;
@@ -124,14 +128,14 @@ void decide_instrument(const CalibrateRequest& o, CalibrationInput& in) {
     in.instrument_reason = "given";
   } else if (o.magnitude == "auto") {
     in.instrument = Instrument::mag;
-    in.instrument_reason = "a field of unknown strength (--magnitude auto)";
+    in.instrument_reason = words("a field of unknown strength ({magnitude auto})");
   } else {
     const double magnitude = std::stod(o.magnitude);
     for (Instrument i : {Instrument::accel, Instrument::mag})
       if (unit_of_earth_magnitude(i, magnitude)) {
         in.instrument = i;
         in.instrument_reason = std::string(i == Instrument::accel ? "gravity" : "the geomagnetic field") +
-                               "'s strength (--magnitude " + o.magnitude + ")";
+                               words("'s strength ({magnitude} ") + o.magnitude + ")";
       }
     if (!in.instrument && tumbling) {
       in.instrument = Instrument::mag;
@@ -163,8 +167,10 @@ void decide_instrument(const CalibrateRequest& o, CalibrationInput& in) {
 std::string moving_log_message(const LogMotion& m, const IntervalDetection& d, const std::string& need) {
   return "the log never stands still long enough: " + motion_text(m) + ", and " + std::to_string(d.intervals.size()) +
          " still intervals were found (" + need +
-         "). An accelerometer measures gravity only at rest: record still poses of a second or more; a magnetometer's "
-         "log is calibrated sample by sample (--instrument mag)";
+         words(
+             "). An accelerometer measures gravity only at rest: record still poses of a second or more; a "
+             "magnetometer's "
+             "log is calibrated sample by sample ({instrument mag})");
 }
 
 // det(covariance)^(1/P) of the noise-based errors of the calibration a detection's positions give
@@ -242,7 +248,7 @@ CalibrationInput calibration_input(RawLog log, const CalibrateRequest& o) {
 CalibrationInput calibration_input(const CalibrationStream& stream, const CalibrateRequest& o) {
   // --model auto takes the richest model the positions carry, down to offsets only.
   const int needed = o.model ? model_parameters(*o.model) : model_parameters(*parse_model("bias3"));
-  const std::string need = o.model ? "--model " + std::string(model_name(*o.model)) + " needs at least " +
+  const std::string need = o.model ? words("{model} ") + std::string(model_name(*o.model)) + " needs at least " +
                                          std::to_string(needed) + " positions"
                                    : "paper9 needs at least 9 positions (axis6 6, bias3 3)";
   if (o.modulus == Modulus::projection)
@@ -301,15 +307,15 @@ std::string magnitude_problem(const std::string& s) {
 
 void check_calibrate_request(const CalibrateRequest& o) {
   if (const std::string problem = magnitude_problem(o.magnitude); !problem.empty())
-    throw UsageError("calibrate: --magnitude " + problem);
+    throw UsageError(words("calibrate: {magnitude} ") + problem);
   if (o.model && model_name(*o.model) == "cubic12" && o.magnitude == "auto")
     throw UsageError(
-        "calibrate: --magnitude auto does not work with --model cubic12: its cubic term is relative to "
-        "|I|, which would be one more unknown; give |I|");
+        words("calibrate: {magnitude auto} does not work with {model cubic12}: its cubic term is relative to "
+              "|I|, which would be one more unknown; give |I|"));
   if (o.model && !model_supports(*o.model, ModelCapability::region_limits) && !o.regions.empty())
-    throw UsageError("calibrate: --region (the advice on what to add) works with the " +
+    throw UsageError(words("calibrate: {region} (the advice on what to add) works with the ") +
                      models_supporting(ModelCapability::region_limits) + " model only");
-  if (!(o.rate >= 0) || !std::isfinite(o.rate)) throw UsageError("calibrate: --rate must be a positive number");
+  if (!(o.rate >= 0) || !std::isfinite(o.rate)) throw UsageError(words("calibrate: {rate} must be a positive number"));
 }
 
 }  // namespace scalcal::commands

@@ -9,6 +9,7 @@
 #include "numeric/criteria/identifiability.hpp"
 #include "numeric/criteria/registry.hpp"
 #include "numeric/io/input_error.hpp"
+#include "numeric/io/option_words.hpp"
 #include "numeric/region/augment.hpp"
 #include "numeric/region/region_limit.hpp"
 #include "numeric/region/region_synthesis.hpp"
@@ -28,7 +29,7 @@ Region region_of(const std::vector<std::string>& specs, Warnings& warnings) {
   std::ostringstream c;
   c << std::setprecision(3) << condition;
   if (condition > kBeyondDouble)
-    throw InputError("--region", 0,
+    throw InputError(option_word("region"), 0,
                      "'" + region.text() + "': even the uniform measure has condition number " + c.str() +
                          ", beyond what double precision resolves (1e14): bias and scale factor are confounded there "
                          "(a cap narrower than about 4 degrees)");

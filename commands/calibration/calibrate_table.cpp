@@ -3,6 +3,7 @@
 #include "commands/core/common_options.hpp"
 #include "commands/core/region_request.hpp"
 #include "commands/core/usage_error.hpp"
+#include "numeric/io/option_words.hpp"
 
 namespace scalcal::commands {
 namespace {
@@ -19,7 +20,7 @@ Option instrument_option() {
                            "continuously or held still), gyro",
                            "");
   o.fallback_text =
-      "from the log (a tumbling log whose modulus survives the motion is a magnetometer's) and --magnitude";
+      words("from the log (a tumbling log whose modulus survives the motion is a magnetometer's) and {magnitude}");
   return o;
 }
 
@@ -30,26 +31,27 @@ void read_units(const Values& v, CalibrateRequest& q) {
   const auto comma = units.find(',');
   if (comma == std::string::npos || comma == 0 || comma + 1 == units.size() ||
       units.find(',', comma + 1) != std::string::npos)
-    throw UsageError("--units: expected RAW,PHYSICAL (for example counts,m/s^2), got '" + units + "'");
+    throw UsageError(words("{units}: expected RAW,PHYSICAL (for example counts,m/s^2), got '") + units + "'");
   q.raw_units = units.substr(0, comma);
   q.physical_units = units.substr(comma + 1);
   const auto raw = parse_unit(q.raw_units), physical = parse_unit(q.physical_units);
   if (!raw && !is_count_unit(q.raw_units))
-    throw UsageError("--units: RAW '" + q.raw_units + "' is not counts nor a unit scalcal knows (" + unit_names() +
-                     ")");
+    throw UsageError(words("{units}: RAW '") + q.raw_units + "' is not counts nor a unit scalcal knows (" +
+                     unit_names() + ")");
   if (!physical)
-    throw UsageError("--units: PHYSICAL '" + q.physical_units + "' is not a unit scalcal knows (" + unit_names() + ")");
+    throw UsageError(words("{units}: PHYSICAL '") + q.physical_units + "' is not a unit scalcal knows (" +
+                     unit_names() + ")");
   if (raw && raw->quantity != physical->quantity)
-    throw UsageError("--units: " + q.raw_units + " and " + q.physical_units + " are not units of one quantity");
+    throw UsageError(words("{units}: ") + q.raw_units + " and " + q.physical_units + " are not units of one quantity");
   if (q.instrument && physical->quantity != quantity_of(*q.instrument))
-    throw UsageError("--units: " + q.physical_units + " is not a unit of " +
+    throw UsageError(words("{units}: ") + q.physical_units + " is not a unit of " +
                      std::string(quantity_name(quantity_of(*q.instrument))) + ", which a " +
                      std::string(instrument_noun(*q.instrument)) + " measures");
   if (q.magnitude == "auto")
-    throw UsageError("--units: with --magnitude auto the correction maps the field to modulus 1, not to " +
-                     q.physical_units + "; give the field's strength as --magnitude to calibrate in " +
-                     q.physical_units + " (the raw units alone: --units " + q.raw_units + "," + q.physical_units +
-                     " needs a magnitude)");
+    throw UsageError(words("{units}: with {magnitude auto} the correction maps the field to modulus 1, not to ") +
+                     q.physical_units + words("; give the field's strength as {magnitude} to calibrate in ") +
+                     q.physical_units + words(" (the raw units alone: {units} ") + q.raw_units + "," +
+                     q.physical_units + " needs a magnitude)");
 }
 
 }  // namespace
@@ -87,6 +89,17 @@ Option chunk_option() {
                         "rows", "", "the whole log at once");
 }
 
+Option magnitude_option() {
+  Option o = text_option("--magnitude", "M|auto",
+                         words("modulus |I| of the measured vector, or auto for a field of unknown strength; for a "
+                               "gyro ({instrument gyro}) the rate table's rate, auto, or column:NAME (the log's signed "
+                               "rate per row)"),
+                         "physical units", "");
+  o.fallback_text = words("required, unless {instrument gyro} with {turn-angle} or {accelerometer}");
+  o.why_bad = [](const std::string& m) { return m.rfind("column:", 0) == 0 ? "" : magnitude_problem(m); };
+  return o;
+}
+
 }  // namespace
 
 const CommandTable& calibrate_table() {
@@ -96,14 +109,6 @@ const CommandTable& calibrate_table() {
       "time_s or timestamp) and ix,iy,iz, or text t ix iy iz",
       "file path", kRequired);
   measurements.takes_columns = true;
-  Option magnitude =
-      text_option("--magnitude", "M|auto",
-                  "modulus |I| of the measured vector, or auto for a field of unknown strength; for a "
-                  "gyro (--instrument gyro) the rate table's rate, auto, or column:NAME (the log's signed "
-                  "rate per row)",
-                  "physical units", "");
-  magnitude.fallback_text = "required, unless --instrument gyro with --turn-angle or --accelerometer";
-  magnitude.why_bad = [](const std::string& m) { return m.rfind("column:", 0) == 0 ? "" : magnitude_problem(m); };
   const Option model = calibrate_model_option();
   Option still = positive_option("--still",
                                  "take the noise floor from the log's initial still period of this length (default: "
@@ -124,7 +129,7 @@ const CommandTable& calibrate_table() {
       "position's residual, the program's quality and what to add",
       20,
       {measurements,
-       magnitude,
+       magnitude_option(),
        model,
        temperature_option(),
        choice_option("--modulus", {"norm", "projection"},
@@ -159,29 +164,33 @@ const CommandTable& calibrate_table() {
                    "and the suggestions (without it, the measurements file's own region line does)",
                    "file path"),
        tolerance_option(),
-       text_option("--sensor", "LABEL", "a label of the meter for the calibration file (--out)"),
-       text_option("--units", "RAW,PHYSICAL",
-                   "the units of the raw data (counts, or a unit) and of the corrected vectors (a unit), for the "
-                   "calibration file and the exports (default: from --magnitude where the Earth fixes them: 9.81 is "
-                   "m/s^2, 1 is g, 50 is uT)"),
+       text_option("--sensor", "LABEL", words("a label of the meter for the calibration file ({out})")),
+       text_option(
+           "--units", "RAW,PHYSICAL",
+           words("the units of the raw data (counts, or a unit) and of the corrected vectors (a unit), for the "
+                 "calibration file and the exports (default: from {magnitude} where the Earth fixes them: 9.81 is "
+                 "m/s^2, 1 is g, 50 is uT)")),
        instrument_option(),
-       number_option("--turn-angle", 0, 36000,
-                     "known turns (--instrument gyro): each turn's angle (the largest motions between rests are the "
-                     "turns)",
-                     "degrees", ""),
-       text_option("--accelerometer", "ACC_LOG",
-                   "hand rotations (--instrument gyro): the log of an accelerometer moved with the gyro (the same "
-                   "rows); it is calibrated first and the gyro's matrix maps into its corrected frame",
-                   "file path"),
-       text_option("--accelerometer-magnitude", "G|auto", "hand rotations (--instrument gyro): the accelerometer's |g|",
-                   "the accelerometer's units"),
-       number_option("--latitude", -90, 90,
-                     "a rate table (--instrument gyro): add the Earth's rate to each segment's (its part along the "
-                     "table's axis, --table-axis; needs --magnitude column:NAME for each turn's sense)",
-                     "degrees", ""),
+       number_option(
+           "--turn-angle", 0, 36000,
+           words("known turns ({instrument gyro}): each turn's angle (the largest motions between rests are the "
+                 "turns)"),
+           "degrees", ""),
+       text_option(
+           "--accelerometer", "ACC_LOG",
+           words("hand rotations ({instrument gyro}): the log of an accelerometer moved with the gyro (the same "
+                 "rows); it is calibrated first and the gyro's matrix maps into its corrected frame"),
+           "file path"),
+       text_option("--accelerometer-magnitude", "G|auto",
+                   words("hand rotations ({instrument gyro}): the accelerometer's |g|"), "the accelerometer's units"),
+       number_option(
+           "--latitude", -90, 90,
+           words("a rate table ({instrument gyro}): add the Earth's rate to each segment's (its part along the "
+                 "table's axis, {table-axis}; needs {magnitude column:NAME} for each turn's sense)"),
+           "degrees", ""),
        text_option("--table-axis", "E,N,U",
-                   "a rate table with --latitude: the table's axis in east, north, up, positive turns "
-                   "counterclockwise seen from its tip (normalised; default 0,0,1: vertical)"),
+                   words("a rate table with {latitude}: the table's axis in east, north, up, positive turns "
+                         "counterclockwise seen from its tip (normalised; default 0,0,1: vertical)")),
        out_option("also write the calibration (the JSON object, with \"converged\") to FILE, for `scalcal correct`",
                   "CAL.json"),
        json_option("print one JSON object")}};
@@ -203,13 +212,13 @@ CalibrateRequest calibrate_request(const Values& v) {
   if (const auto it = v.tables.find("--measurements"); it != v.tables.end()) q.table = it->second;
   if (!v.given("--magnitude"))
     throw UsageError(
-        "--magnitude M|auto is required (a gyro's --instrument gyro takes --turn-angle or "
-        "--accelerometer instead)");
+        words("{magnitude M|auto} is required (a gyro's {instrument gyro} takes {turn-angle} or "
+              "{accelerometer} instead)"));
   for (const char* o : {"--turn-angle", "--accelerometer", "--accelerometer-magnitude", "--latitude", "--table-axis"})
-    if (v.given(o)) throw UsageError(std::string(o) + " belongs to --instrument gyro");
+    if (v.given(o)) throw UsageError(option_word(o) + words(" belongs to {instrument gyro}"));
   q.magnitude = v.text("--magnitude");
   if (q.magnitude.rfind("column:", 0) == 0)
-    throw UsageError("--magnitude column:NAME is a rate table's (--instrument gyro)");
+    throw UsageError(words("{magnitude column:NAME} is a rate table's ({instrument gyro})"));
   q.modulus = v.text("--modulus") == "projection" ? Modulus::projection : Modulus::norm;
   read_log_options(v, q.format, q.rate, q.intervals);
   if (v.given("--chunk")) q.chunk_rows = static_cast<int>(v.integer("--chunk"));
@@ -228,19 +237,20 @@ CalibrateRequest calibrate_request(const Values& v) {
   q.sensor = v.text("--sensor");
   if (v.given("--instrument")) q.instrument = parse_instrument(v.text("--instrument"));
   if (q.instrument == Instrument::gyro)
-    throw UsageError(
-        "--instrument gyro: a gyroscope's calibration is calibrate_gyro's (commands/calibration/calibrate_gyro.hpp), "
+    throw UsageError(words(
+        "{instrument gyro}: a gyroscope's calibration is calibrate_gyro's (commands/calibration/calibrate_gyro.hpp), "
         "not this "
-        "request's");
+        "request's"));
   read_units(v, q);
   q.thermal = parse_thermal_model(v.text("--model"));
   if (v.given("--temperature")) {
-    if (!q.thermal) throw UsageError("--temperature needs a thermal model, --model BASE+Tk (e.g. paper9+T2)");
+    if (!q.thermal) throw UsageError(words("{temperature} needs a thermal model, {model BASE+Tk} (e.g. paper9+T2)"));
     q.temperature = parse_temperature_range(v.text("--temperature"));
   }
   if (q.thermal) {
     if (!model_supports(q.thermal->base, ModelCapability::thermal_base))
-      throw UsageError("--model " + q.thermal->name() + ": a thermal log is fitted under paper9+Tk or paper9+bias:Tk");
+      throw UsageError(words("{model} ") + q.thermal->name() +
+                       ": a thermal log is fitted under paper9+Tk or paper9+bias:Tk");
     return q;
   }
   if (v.text("--model") != "auto") q.model = *parse_model(v.text("--model"));

@@ -11,6 +11,7 @@
 #include "commands/core/common_options.hpp"
 #include "numeric/calibration/model_calibration.hpp"
 #include "numeric/io/input_error.hpp"
+#include "numeric/io/option_words.hpp"
 #include "numeric/model/registry.hpp"
 
 namespace scalcal::commands {
@@ -189,7 +190,7 @@ double read_correction(const Json& d, const std::string& file, CalibrationFile& 
   if (c.thermal) return thermal_condition(c);
   if (!d.contains("offset") || (!d.contains("matrix") && !c.nonlinear))
     throw InputError(file, 0,
-                     "needs the keys 'offset' and 'matrix' (write it with `scalcal calibrate ... --out FILE`)");
+                     words("needs the keys 'offset' and 'matrix' (write it with `scalcal calibrate ... {out FILE}`)"));
   const Json& o = d["offset"];
   if (!o.is_array() || o.size() != 3) throw InputError(file, 0, "'offset' must be three numbers");
   for (int i = 0; i < 3; ++i) c.correction.offset(i) = number_at(o[static_cast<std::size_t>(i)], file, "offset");
@@ -229,8 +230,8 @@ std::string distrust(const Json& d, double condition) {
 
 CalibrationFile read_calibration_file(const std::string& path, bool force, Warnings& warnings) {
   return calibration_file_of(
-      parse_json_file_text(read_text_file(path), path, "a JSON object written by `calibrate --out`"), path, force,
-      warnings);
+      parse_json_file_text(read_text_file(path), path, words("a JSON object written by `calibrate {out}`")), path,
+      force, warnings);
 }
 
 CalibrationFile calibration_file_of(const Json& document, const std::string& file, bool force, Warnings& warnings) {
@@ -247,8 +248,8 @@ CalibrationFile calibration_file_of(const Json& document, const std::string& fil
   c.noise = optional_number(document, file, "noise");
   const double condition = read_correction(document, file, c);
   if (const std::string why = distrust(document, condition); !why.empty()) {
-    if (!force) throw InputError(file, 0, "refused: " + why + "; --force applies it all the same");
-    warnings.push_back({file, "used with --force although " + why});
+    if (!force) throw InputError(file, 0, "refused: " + why + words("; {force} applies it all the same"));
+    warnings.push_back({file, words("used with {force} although ") + why});
   }
   return c;
 }

@@ -10,6 +10,7 @@
 #include "numeric/calibration/raw_log.hpp"
 #include "numeric/io/csv_table.hpp"
 #include "numeric/io/input_error.hpp"
+#include "numeric/io/option_words.hpp"
 
 namespace scalcal::commands {
 
@@ -41,7 +42,7 @@ CsvTable read_data(const CorrectRequest& q) {
 
 const CommandTable& correct_table() {
   Option calibration =
-      text_option("--calibration", "CAL.json", "a calibration written by `scalcal calibrate ... --out CAL.json`",
+      text_option("--calibration", "CAL.json", words("a calibration written by `scalcal calibrate ... {out CAL.json}`"),
                   "file path", kRequired);
   calibration.takes_document = true;
   Option measurements = text_option(

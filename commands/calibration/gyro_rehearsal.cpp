@@ -7,6 +7,7 @@
 #include "commands/core/usage_error.hpp"
 #include "numeric/calibration/full_correction.hpp"
 #include "numeric/gyro/rotation_integral.hpp"
+#include "numeric/io/option_words.hpp"
 
 namespace scalcal::commands {
 namespace {
@@ -81,7 +82,7 @@ GyroRehearsalResult rehearse_gyro(const GyroRehearsalRequest& q) {
   // double overflows once the gain and noise are applied.
   for (const Vec3& s : r.log.log.samples)
     if (!s.allFinite())
-      throw UsageError("--magnitude " + shortest_text(q.magnitude) +
+      throw UsageError(words("{magnitude} ") + shortest_text(q.magnitude) +
                        ": the gyro's outputs overflow double precision; give the rate in smaller units");
   return r;
 }

@@ -12,6 +12,7 @@
 #include "commands/core/usage_error.hpp"
 #include "numeric/io/csv_table.hpp"
 #include "numeric/io/input_error.hpp"
+#include "numeric/io/option_words.hpp"
 
 namespace scalcal::commands {
 namespace {
@@ -119,7 +120,7 @@ double rehearsal_rows(const RehearsalRequest& q) {
 
 void check_rehearsal_rate(double rate_hz) {
   if (!(rate_hz >= kMinRateHz && rate_hz <= kMaxRateHz))
-    throw UsageError("--rate " + shortest_text(rate_hz) + ": the rehearsal takes " + shortest_text(kMinRateHz) +
+    throw UsageError(words("{rate} ") + shortest_text(rate_hz) + ": the rehearsal takes " + shortest_text(kMinRateHz) +
                      " to " + shortest_text(kMaxRateHz) +
                      " samples per second (time stamps are written in microseconds)");
 }
@@ -128,8 +129,8 @@ void check_rehearsal_size(const RehearsalRequest& q) {
   check_rehearsal_rate(q.rate_hz);
   if (q.tumble_s > 0) return;  // a tumbling log's rows are --rate x --tumble (simulate checks them)
   if (const double rows = rehearsal_rows(q); rows > kMaxRehearsalRows)
-    throw UsageError("--rate " + shortest_text(q.rate_hz) + " with --dwell " + shortest_text(q.dwell_s) +
-                     " and --still " + shortest_text(q.still_s) + " on " + std::to_string(q.program.size()) +
+    throw UsageError(words("{rate} ") + shortest_text(q.rate_hz) + words(" with {dwell} ") + shortest_text(q.dwell_s) +
+                     words(" and {still} ") + shortest_text(q.still_s) + " on " + std::to_string(q.program.size()) +
                      " positions asks for " + shortest_text(rows) +
                      " rows, the moves between positions included; the bound is " + shortest_text(kMaxRehearsalRows) +
                      " rows");
@@ -179,7 +180,7 @@ RehearsalResult rehearse(const RehearsalRequest& q) {
   // gain and noise are applied.
   for (const Vec3& s : r.samples)
     if (!s.allFinite())
-      throw UsageError("--magnitude " + shortest_text(q.magnitude) +
+      throw UsageError(words("{magnitude} ") + shortest_text(q.magnitude) +
                        ": the meter's outputs overflow double precision; give |I| in smaller units");
   return r;
 }

@@ -13,6 +13,7 @@
 #include "numeric/criteria/identifiability.hpp"
 #include "numeric/criteria/model_evaluation.hpp"
 #include "numeric/io/input_error.hpp"
+#include "numeric/io/option_words.hpp"
 
 namespace scalcal::commands {
 namespace {
@@ -36,21 +37,23 @@ void check_noise(const SimulateRequest& q, const ModelEvaluation& ev, Warnings& 
   s << std::setprecision(3);
   const double noise = q.noise;
   if (noise >= kNoiseRefuseAbove) {
-    s << "option --noise: " << noise << " |I| is meaningless for the linearised model (noise as large as the "
+    s << words("option {noise}: ") << noise << " |I| is meaningless for the linearised model (noise as large as the "
       << "measured vector; must be below " << kNoiseRefuseAbove << ")";
     throw UsageError(s.str());
   }
   if (noise < kNoiseRefuseBelow) {
-    s << "option --noise: " << noise << " |I| is below the resolution of a double near |I| (must be at least "
+    s << words("option {noise}: ") << noise << " |I| is below the resolution of a double near |I| (must be at least "
       << kNoiseRefuseBelow << ")";
     throw UsageError(s.str());
   }
   if (noise > kNoiseWarnAbove) {
-    s << "--noise " << noise << " is above " << kNoiseWarnAbove << ": second-order terms of the modulus (~sigma^2) "
+    s << words("{noise} ") << noise << " is above " << kNoiseWarnAbove
+      << ": second-order terms of the modulus (~sigma^2) "
       << "exceed 1% of the noise; the empirical covariance will depart from sigma^2 K";
     warnings.push_back({"", s.str()});
   } else if (noise < kNoiseWarnBelow) {
-    s << "--noise " << noise << " is below " << kNoiseWarnBelow << ": the estimator's stopping tolerance (2.2e-12) "
+    s << words("{noise} ") << noise << " is below " << kNoiseWarnBelow
+      << ": the estimator's stopping tolerance (2.2e-12) "
       << "and rounding are no longer negligible against the noise; the empirical std will be off";
     warnings.push_back({"", s.str()});
   }
@@ -83,7 +86,7 @@ Option rehearsal(Option o) {
 const CommandTable& simulate_table() {
   Option program = text_option("--program", "P", "a catalogue name or a CSV file", "none", kRequired);
   program.fallback = "";
-  program.fallback_text = "required, unless --tumble";
+  program.fallback_text = words("required, unless {tumble}");
   program.takes_positions = true;
   Option modulus = choice_option("--modulus", {"norm", "projection"}, "the modulus the estimator fits", "");
   modulus.fallback_text = "both, one after the other";
@@ -95,13 +98,14 @@ const CommandTable& simulate_table() {
   Option bench_file = out_option("rehearsal: write the grouped bench file (position,x,y,z,ix,iy,iz) instead");
   bench_file.name = "--bench-file";
   bench_file.cli_only = false;
-  Option truth = out_option(
-      "with --log or --bench-file: write the meter's true parameters as JSON (calibrate "
-      "--json's keys and units)");
+  Option truth =
+      out_option(words("with {log} or {bench-file}: write the meter's true parameters as JSON (calibrate "
+                       "{json}'s keys and units)"));
   truth.name = "--truth";
   truth.cli_only = false;
   Option accelerometer_log = out_option(  // an output: another output's file is refused (check_distinct_outputs)
-      "rehearsal with --instrument gyro: hand rotations; write the accelerometer's log (same rows as --log) here",
+      words(
+          "rehearsal with {instrument gyro}: hand rotations; write the accelerometer's log (same rows as {log}) here"),
       "FILE");
   accelerometer_log.name = "--accelerometer";
   accelerometer_log.cli_only = false;
@@ -112,7 +116,7 @@ const CommandTable& simulate_table() {
       41,
       {program,
        named(integer_option("--trials", 2, 10000000, "simulated meters calibrated", "trials", "0",
-                            "required, unless --log or --bench-file"),
+                            words("required, unless {log} or {bench-file}")),
              "T"),
        positive_option("--noise", "noise RMS sigma of each axis of each sample",
                        "|I| (the modulus of the measured vector)", kRequired),
@@ -130,9 +134,9 @@ const CommandTable& simulate_table() {
        bench_file,
        truth,
        rehearsal(text_option("--meter", "FILE",
-                             "rehearsal: the meter's parameters (bias, scale_deviation, "
-                             "nonorthogonality as calibrate --json writes them) instead of "
-                             "random ones",
+                             words("rehearsal: the meter's parameters (bias, scale_deviation, "
+                                   "nonorthogonality as calibrate {json} writes them) instead of "
+                                   "random ones"),
                              "file path")),
        rehearsal(positive_option("--rate", "rehearsal: samples per second", "Hz", "100")),
        rehearsal(positive_option("--dwell", "rehearsal: seconds at rest on each position", "seconds", "5")),
@@ -141,38 +145,40 @@ const CommandTable& simulate_table() {
                                "program's positions (x,y,z) run over and over (0: the program's set-points, t_c)",
                                "degC per minute", "0")),
        rehearsal(number_option("--still", 0, 3600,
-                               "rehearsal: seconds at rest on the first position (calibrate's --still)", "seconds",
-                               "30")),
+                               words("rehearsal: seconds at rest on the first position (calibrate's {still})"),
+                               "seconds", "30")),
        rehearsal(positive_option("--magnitude", "rehearsal: |I| in the log's units", "log units", "1")),
        rehearsal(choice_option("--format", {"csv", "text"},
                                "rehearsal: the raw log as CSV with a header, or text t ix iy iz (IMU-TK's reader: "
                                "numbers only)",
                                "csv")),
-       rehearsal(number_option("--tumble", 0, 86400,
-                               "rehearsal: a tumbling log of this many seconds, the meter turned continuously (through "
-                               "the program's positions, or random directions without --program) and never still",
-                               "seconds", "0")),
        rehearsal(
-           choice_option("--instrument", {"mag", "accel", "gyro"},
-                         "rehearsal: the meter. With --tumble a magnetometer (the field keeps its modulus) or an "
-                         "accelerometer (the motion adds 5 % of |I| of acceleration); gyro (no --tumble): the "
-                         "program's positions are a rate table's axes (signed by the turn), known turns' axes "
-                         "(--turn-angle) or gravity's directions at the poses of hand rotations (--accelerometer)",
-                         "mag")),
+           number_option("--tumble", 0, 86400,
+                         words("rehearsal: a tumbling log of this many seconds, the meter turned continuously (through "
+                               "the program's positions, or random directions without {program}) and never still"),
+                         "seconds", "0")),
+       rehearsal(choice_option(
+           "--instrument", {"mag", "accel", "gyro"},
+           words("rehearsal: the meter. With {tumble} a magnetometer (the field keeps its modulus) or an "
+                 "accelerometer (the motion adds 5 % of |I| of acceleration); gyro (no {tumble}): the "
+                 "program's positions are a rate table's axes (signed by the turn), known turns' axes "
+                 "({turn-angle}) or gravity's directions at the poses of hand rotations ({accelerometer})"),
+           "mag")),
        rehearsal(named(integer_option("--disturbances", 0, 100,
-                                      "rehearsal --tumble: disturbed stretches of 2 s (a field of up to 0.3 |I| "
-                                      "passing), at random times",
+                                      words("rehearsal {tumble}: disturbed stretches of 2 s (a field of up to 0.3 |I| "
+                                            "passing), at random times"),
                                       "stretches", "0"),
                        "K")),
        rehearsal(number_option("--turn-angle", -3600, 3600,
-                               "rehearsal with --instrument gyro: known turns of this angle about each position "
-                               "instead of a rate table",
+                               words("rehearsal with {instrument gyro}: known turns of this angle about each position "
+                                     "instead of a rate table"),
                                "degrees", "")),
        rehearsal(accelerometer_log),
-       rehearsal(number_option("--latitude", -90, 90,
-                               "rehearsal with --instrument gyro on a rate table: add the Earth's rate (the table's "
-                               "axis vertical)",
-                               "degrees", "")),
+       rehearsal(
+           number_option("--latitude", -90, 90,
+                         words("rehearsal with {instrument gyro} on a rate table: add the Earth's rate (the table's "
+                               "axis vertical)"),
+                         "degrees", "")),
        json_option("print one JSON object")}};
   return table;
 }
@@ -181,14 +187,15 @@ namespace {
 
 // --instrument gyro: a gyro's rehearsal (a raw log only).
 void read_gyro_rehearsal(const Values& v, SimulateRequest& q) {
-  if (!v.given("--log")) throw UsageError("--instrument gyro writes a raw log: give --log FILE (not --bench-file)");
+  if (!v.given("--log"))
+    throw UsageError(words("{instrument gyro} writes a raw log: give {log FILE} (not {bench-file})"));
   for (const char* o : {"--meter", "--still", "--format", "--tumble", "--disturbances"})
     if (v.given(o))
-      throw UsageError(std::string(o) + " belongs to the accelerometer's rehearsal, not --instrument gyro");
+      throw UsageError(option_word(o) + words(" belongs to the accelerometer's rehearsal, not {instrument gyro}"));
   if (v.given("--turn-angle") && v.given("--accelerometer"))
-    throw UsageError("give --turn-angle (known turns) or --accelerometer (hand rotations), not both");
+    throw UsageError(words("give {turn-angle} (known turns) or {accelerometer} (hand rotations), not both"));
   if (v.given("--latitude") && (v.given("--turn-angle") || v.given("--accelerometer")))
-    throw UsageError("--latitude belongs to a rate table (no --turn-angle, no --accelerometer)");
+    throw UsageError(words("{latitude} belongs to a rate table (no {turn-angle}, no {accelerometer})"));
   GyroRehearsalRequest g;
   g.name = q.name;
   g.program = q.program;
@@ -198,18 +205,18 @@ void read_gyro_rehearsal(const Values& v, SimulateRequest& q) {
   g.noise = v.number("--noise");
   g.magnitude = v.number("--magnitude");
   if (v.given("--turn-angle")) g.turn_angle_deg = v.number("--turn-angle");
-  if (g.method == "known_turns" && g.turn_angle_deg == 0) throw UsageError("--turn-angle must not be 0");
+  if (g.method == "known_turns" && g.turn_angle_deg == 0) throw UsageError(words("{turn-angle} must not be 0"));
   if (v.given("--latitude")) g.latitude_deg = v.number("--latitude");
   g.size = v.number("--size");
   g.seed = static_cast<std::uint64_t>(v.integer("--seed"));
   if (g.noise >= kNoiseRefuseAbove)
-    throw UsageError("option --noise: must be below 1 |I| (noise as large as the measured vector)");
+    throw UsageError(words("option {noise}: must be below 1 |I| (noise as large as the measured vector)"));
   check_rehearsal_rate(g.rate_hz);
   // Seconds per position at most: a rest, the spin-up and stop (or a hand's move) and the segment, and a known
   // turn's own duration (a quarter turn a second, gyro_rehearsal.cpp).
   const double turn_s = g.method == "known_turns" ? std::abs(g.turn_angle_deg) / 90 : 0;
   if (g.rate_hz * (2 * g.dwell_s + 4 + turn_s) * static_cast<double>(g.program.size()) > kMaxRehearsalRows)
-    throw UsageError("--rate x --dwell x positions asks for more than 2e7 rows");
+    throw UsageError(words("{rate} x {dwell} x positions asks for more than 2e7 rows"));
   q.gyro_rehearsal = std::move(g);
 }
 
@@ -223,20 +230,21 @@ void read_rehearsal(const Values& v, SimulateRequest& q) {
                        "--turn-angle", "--accelerometer", "--latitude"};
   if (!rehearsal) {
     for (const char* o : own)
-      if (v.given(o)) throw UsageError(std::string(o) + " belongs to a rehearsal (--log FILE or --bench-file FILE)");
-    if (!v.given("--trials")) throw UsageError("--trials T is required (or --log FILE for a rehearsal)");
+      if (v.given(o))
+        throw UsageError(option_word(o) + words(" belongs to a rehearsal ({log FILE} or {bench-file FILE})"));
+    if (!v.given("--trials")) throw UsageError(words("{trials T} is required (or {log FILE} for a rehearsal)"));
     return;
   }
-  if (v.given("--log") && v.given("--bench-file")) throw UsageError("give --log or --bench-file, not both");
+  if (v.given("--log") && v.given("--bench-file")) throw UsageError(words("give {log} or {bench-file}, not both"));
   for (const char* o : monte_carlo)
-    if (v.given(o)) throw UsageError(std::string(o) + " belongs to the Monte-Carlo, not to a rehearsal");
-  if (v.given("--format") && v.given("--bench-file")) throw UsageError("--format is the raw log's (--log)");
+    if (v.given(o)) throw UsageError(option_word(o) + " belongs to the Monte-Carlo, not to a rehearsal");
+  if (v.given("--format") && v.given("--bench-file")) throw UsageError(words("{format} is the raw log's ({log})"));
   if (v.text("--instrument") == "gyro") {
     read_gyro_rehearsal(v, q);
     return;
   }
   for (const char* o : {"--turn-angle", "--accelerometer", "--latitude"})
-    if (v.given(o)) throw UsageError(std::string(o) + " belongs to --instrument gyro");
+    if (v.given(o)) throw UsageError(option_word(o) + words(" belongs to {instrument gyro}"));
   RehearsalRequest r;
   r.name = q.name;
   r.program = q.program;
@@ -256,11 +264,12 @@ void read_rehearsal(const Values& v, SimulateRequest& q) {
   r.disturbances = static_cast<int>(v.integer("--disturbances"));
   if (r.tumble_s == 0)
     for (const char* o : {"--instrument", "--disturbances"})
-      if (v.given(o)) throw UsageError(std::string(o) + " belongs to a tumbling rehearsal (--tumble SECONDS)");
-  if (r.tumble_s > 0 && r.grouped) throw UsageError("--tumble writes a raw log (--log), not a bench file");
-  if (r.tumble_s > 0 && r.rate_hz * r.tumble_s > 2e7) throw UsageError("--rate x --tumble asks for more than 2e7 rows");
+      if (v.given(o)) throw UsageError(option_word(o) + words(" belongs to a tumbling rehearsal ({tumble SECONDS})"));
+  if (r.tumble_s > 0 && r.grouped) throw UsageError(words("{tumble} writes a raw log ({log}), not a bench file"));
+  if (r.tumble_s > 0 && r.rate_hz * r.tumble_s > 2e7)
+    throw UsageError(words("{rate} x {tumble} asks for more than 2e7 rows"));
   if (r.noise >= kNoiseRefuseAbove)
-    throw UsageError("option --noise: must be below 1 |I| (noise as large as the measured vector)");
+    throw UsageError(words("option {noise}: must be below 1 |I| (noise as large as the measured vector)"));
   check_rehearsal_size(r);  // before any work: the rows, moves included
   q.rehearsal = std::move(r);
 }
@@ -275,7 +284,7 @@ SimulateRequest simulate_request(const Values& v) {
   if (v.given("--program") || v.program)
     q.program = program_of(v, "--program");
   else if (!(v.given("--tumble") && v.number("--tumble") > 0))
-    throw UsageError("--program P is required (unless --log with --tumble SECONDS)");
+    throw UsageError(words("{program P} is required (unless {log} with {tumble SECONDS})"));
   else
     q.name = "a random tumble";
   read_rehearsal(v, q);
@@ -301,11 +310,11 @@ SimulateResult simulate(const SimulateRequest& q, const Progress& progress) {
     throw UsageError(std::string("simulate: ") + e.what());
   }
   if (!ev.full_rank()) throw InputError(q.name, 0, rank_deficiency(ev));
-  check_work("--trials " + std::to_string(q.trials) + " of " + std::to_string(q.program.size()) +
-                 " positions with --samples " + std::to_string(q.samples),
+  check_work(words("{trials} ") + std::to_string(q.trials) + " of " + std::to_string(q.program.size()) +
+                 words(" positions with {samples} ") + std::to_string(q.samples),
              monte_carlo_work(static_cast<long long>(q.trials) * static_cast<long long>(q.moduli.size()),
                               q.program.size(), q.samples, model_parameters(q.model)),
-             "fewer --trials or --samples");
+             words("fewer {trials} or {samples}"));
   check_noise(q, ev, r.warnings);
   for (const Modulus m : q.moduli) {
     MonteCarloOptions mc;

@@ -8,6 +8,7 @@
 #include "commands/calibration/thermal_calibrate.hpp"
 #include "commands/core/common_options.hpp"
 #include "commands/core/usage_error.hpp"
+#include "numeric/io/option_words.hpp"
 #include "numeric/program/catalogue.hpp"
 
 namespace scalcal::commands {
@@ -17,28 +18,30 @@ std::optional<ThermalRehearsalRequest> thermal_rehearsal_request(const Values& v
   if (!model) {
     for (const char* o : {"--temperature", "--ramp"})
       if (v.given(o))
-        throw UsageError("simulate: " + std::string(o) + " needs a thermal model, --model BASE+Tk (e.g. paper9+T2)");
+        throw UsageError("simulate: " + option_word(o) +
+                         words(" needs a thermal model, {model BASE+Tk} (e.g. paper9+T2)"));
     return std::nullopt;
   }
   if (!model_supports(model->base, ModelCapability::thermal_base))
-    throw UsageError("simulate: a thermal rehearsal simulates paper9+Tk or paper9+bias:Tk (got --model " +
+    throw UsageError(words("simulate: a thermal rehearsal simulates paper9+Tk or paper9+bias:Tk (got {model} ") +
                      model->name() + ")");
   if (!v.given("--log"))
-    throw UsageError("simulate: --model " + model->name() + " writes a thermal log: give --log FILE");
+    throw UsageError(words("simulate: {model} ") + model->name() + words(" writes a thermal log: give {log FILE}"));
   if (!v.given("--temperature"))
-    throw UsageError("simulate: --model " + model->name() + " needs --temperature T1..T2 (degrees Celsius)");
+    throw UsageError(words("simulate: {model} ") + model->name() +
+                     words(" needs {temperature T1..T2} (degrees Celsius)"));
   if (v.program) throw UsageError("simulate: a thermal program is a CSV file with columns x,y,z,t_c, not an array");
   for (const char* o : {"--trials", "--bench-error", "--modulus", "--samples", "--out", "--bench-file", "--meter",
                         "--tumble", "--still", "--instrument", "--format"})
-    if (v.given(o)) throw UsageError(std::string(o) + " does not apply to a thermal rehearsal");
+    if (v.given(o)) throw UsageError(option_word(o) + " does not apply to a thermal rehearsal");
   ThermalRehearsalRequest q;
   q.model = *model;
   q.range = parse_temperature_range(v.text("--temperature"));
   q.ramp_c_per_min = v.number("--ramp");
   if (q.ramp_c_per_min > 0) {  // positions only: the ramp sets the temperatures
     if (!program_temperatures(v.text("--program")).empty())
-      throw UsageError("simulate: --ramp sets the temperatures, and " + v.text("--program") +
-                       " has a temperature column: give its positions (x,y,z) or leave out --ramp");
+      throw UsageError(words("simulate: {ramp} sets the temperatures, and ") + v.text("--program") +
+                       words(" has a temperature column: give its positions (x,y,z) or leave out {ramp}"));
     for (const auto& e : resolve_program(v.text("--program")).positions) {
       q.program.positions.emplace_back(e);
       q.program.celsius.push_back(q.range.low);
@@ -52,12 +55,14 @@ std::optional<ThermalRehearsalRequest> thermal_rehearsal_request(const Values& v
   q.magnitude = v.number("--magnitude");
   q.size = q.drift = v.number("--size");
   q.seed = static_cast<std::uint64_t>(v.integer("--seed"));
-  if (q.noise >= 1) throw UsageError("option --noise: must be below 1 |I| (noise as large as the measured vector)");
+  if (q.noise >= 1)
+    throw UsageError(words("option {noise}: must be below 1 |I| (noise as large as the measured vector)"));
   // The rehearsal's own bound (numeric/thermal/thermal_rehearsal.hpp), said in the options' words.
   if (thermal_rehearsal_samples(q) > kMaxThermalRehearsalSamples)
-    throw UsageError(q.ramp_c_per_min > 0 ? "--ramp, --temperature and --rate ask for more than 2e7 samples: a faster "
-                                            "ramp, a narrower range or a lower rate"
-                                          : "--rate x --dwell x rows asks for more than 2e7 samples");
+    throw UsageError(q.ramp_c_per_min > 0
+                         ? words("{ramp}, {temperature} and {rate} ask for more than 2e7 samples: a faster "
+                                 "ramp, a narrower range or a lower rate")
+                         : words("{rate} x {dwell} x rows asks for more than 2e7 samples"));
   return q;
 }
 

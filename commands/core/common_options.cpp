@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "numeric/io/input_error.hpp"
+#include "numeric/io/option_words.hpp"
 #include "numeric/program/catalogue.hpp"
 #include "numeric/thermal/temperature_range.hpp"
 #include "numeric/thermal/thermal_model.hpp"
@@ -178,9 +179,10 @@ Option seed_option() {
 }
 
 Option starts_option() {
-  Option o = integer_option("--starts", kStarts.lo, kStarts.hi, "random starts of the multistart", "starts", "0",
-                            "adaptive: batches of 8 until 8 consecutive starts hit the best, capped at the criterion's "
-                            "count; 8 on a restricted --region; K forces K");
+  Option o =
+      integer_option("--starts", kStarts.lo, kStarts.hi, "random starts of the multistart", "starts", "0",
+                     words("adaptive: batches of 8 until 8 consecutive starts hit the best, capped at the criterion's "
+                           "count; 8 on a restricted {region}; K forces K"));
   o.value_name = "K";
   return o;
 }

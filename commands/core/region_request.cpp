@@ -6,6 +6,7 @@
 
 #include "numeric/criteria/identifiability.hpp"
 #include "numeric/io/input_error.hpp"
+#include "numeric/io/option_words.hpp"
 #include "numeric/program/catalogue.hpp"
 
 namespace scalcal::commands {
@@ -139,7 +140,7 @@ std::vector<std::string> regions_for(const std::vector<std::string>& given, cons
     std::string text;
     for (const auto& s : file.specs) text += (text.empty() ? "" : ";") + s;
     warnings.push_back({program_argument, "the program's region " + text + " (line " + std::to_string(file.line) +
-                                              ") is replaced by --region"});
+                                              words(") is replaced by {region}")});
   }
   return given;
 }

@@ -7,6 +7,7 @@
 
 #include "commands/core/common_options.hpp"
 #include "commands/core/usage_error.hpp"
+#include "numeric/io/option_words.hpp"
 
 namespace scalcal::commands {
 namespace {
@@ -151,7 +152,8 @@ void set_from_request(Values& values, const Json& request, const std::string& so
       set_one(values, *o, value);
     } catch (const UsageError& e) {
       std::string reason = e.what();
-      if (reason.rfind(o->name + ": ", 0) == 0) reason = reason.substr(o->name.size() + 2);
+      const std::string prefix = option_word(o->name) + ": ";
+      if (reason.rfind(prefix, 0) == 0) reason = reason.substr(prefix.size());
       throw UsageError(source + ": key '" + key + "': " + reason);
     }
   }
@@ -166,7 +168,7 @@ const CommandTable& schema_table() {
   command.fallback = kRequired;
   static const CommandTable table{
       "schema",
-      "the JSON Schema of a command's request (the JSON that `--request FILE` and Python's keywords take)",
+      words("the JSON Schema of a command's request (the JSON that `{request FILE}` and Python's keywords take)"),
       95,
       {command, out_option("write the schema to FILE instead of standard output")}};
   return table;

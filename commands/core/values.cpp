@@ -6,6 +6,7 @@
 
 #include "commands/core/usage_error.hpp"
 #include "numeric/io/input_error.hpp"
+#include "numeric/io/option_words.hpp"
 
 namespace scalcal::commands {
 
@@ -17,7 +18,7 @@ const Option& Values::option(const std::string& name) const {
 
 void Values::set(const std::string& name, std::string text) {
   const Option& o = option(name);
-  if (const std::string why = o.check(text); !why.empty()) throw UsageError(o.name + ": " + why);
+  if (const std::string why = o.check(text); !why.empty()) throw UsageError(option_word(o.name) + ": " + why);
   auto& slot = given_[o.name];
   if (o.kind != OptionKind::repeated) slot.clear();
   slot.push_back(std::move(text));

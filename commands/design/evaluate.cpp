@@ -10,6 +10,7 @@
 #include "commands/design/gyro_regions.hpp"
 #include "numeric/criteria/identifiability.hpp"
 #include "numeric/io/input_error.hpp"
+#include "numeric/io/option_words.hpp"
 #include "numeric/region/region_limit.hpp"
 
 namespace scalcal::commands {
@@ -34,14 +35,15 @@ EvaluateRequest evaluate_request(const Values& v) {
   if (q.thermal) {
     if (v.program) throw UsageError("evaluate: a thermal program is a CSV file with columns x,y,z,t_c, not an array");
     if (!q.temperature)
-      throw UsageError("evaluate: --model " + q.thermal->name() + " needs --temperature T1..T2 (degrees Celsius)");
+      throw UsageError(words("evaluate: {model} ") + q.thermal->name() +
+                       words(" needs {temperature T1..T2} (degrees Celsius)"));
     q.model = q.thermal->base;
     q.regions = v.list("--region");
     q.thermal_program = read_thermal_program_csv(q.name);
     return q;
   }
   if (q.temperature)
-    throw UsageError("evaluate: --temperature needs a thermal model, --model BASE+Tk (e.g. paper9+T3)");
+    throw UsageError(words("evaluate: {temperature} needs a thermal model, {model BASE+Tk} (e.g. paper9+T3)"));
   q.program = program_of(v);
   q.model = model_of(v);
   // --instrument gyro reverses turns on the regions given here; a program file's own region line
@@ -60,8 +62,9 @@ EvaluateResult evaluate(const EvaluateRequest& q, const Progress& progress) {
     std::optional<Region> region;
     if (!q.regions.empty()) {
       if (!model_supports(q.thermal->base, ModelCapability::region_limits))
-        throw UsageError("evaluate: --region has limits for the " + models_supporting(ModelCapability::region_limits) +
-                         " model only (got --model " + q.thermal->name() + ")");
+        throw UsageError(words("evaluate: {region} has limits for the ") +
+                         models_supporting(ModelCapability::region_limits) + words(" model only (got {model} ") +
+                         q.thermal->name() + ")");
       region = resolve_region(q.regions, r.warnings);
       Program positions;
       for (const auto& e : q.thermal_program.positions) positions.positions.push_back(e);
@@ -72,8 +75,9 @@ EvaluateResult evaluate(const EvaluateRequest& q, const Progress& progress) {
     return r;
   }
   if (!model_supports(q.model, ModelCapability::region_limits) && !q.regions.empty())
-    throw UsageError("evaluate: --region has limits for the " + models_supporting(ModelCapability::region_limits) +
-                     " model only (got --model " + std::string(model_name(q.model)) + ")");
+    throw UsageError(words("evaluate: {region} has limits for the ") +
+                     models_supporting(ModelCapability::region_limits) + words(" model only (got {model} ") +
+                     std::string(model_name(q.model)) + ")");
   EvaluateResult r;
   r.warnings = q.warnings;
   r.name = q.name;

@@ -5,6 +5,7 @@
 
 #include "commands/core/common_options.hpp"
 #include "commands/core/usage_error.hpp"
+#include "numeric/io/option_words.hpp"
 #include "numeric/region/region.hpp"
 
 namespace scalcal::commands {
@@ -22,8 +23,8 @@ std::vector<std::string> with_reversed_turns(const std::vector<std::string>& spe
     out.push_back(s);
     if (s.rfind("candidates:", 0) == 0)
       throw UsageError(
-          "--instrument gyro: a candidates file is taken as it is; list both directions of each "
-          "candidate in it (a turn reversed measures the antipode)");
+          words("{instrument gyro}: a candidates file is taken as it is; list both directions of each "
+                "candidate in it (a turn reversed measures the antipode)"));
     if (s.rfind("cap:", 0) != 0 && s.rfind("band:", 0) != 0) continue;  // sphere, faces: their own antipodes
     Region one;
     add_region_spec(one, s);  // throws for a malformed spec, naming it

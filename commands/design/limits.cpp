@@ -12,6 +12,7 @@
 #include "commands/core/usage_error.hpp"
 #include "commands/design/closed_forms.hpp"
 #include "commands/design/gyro_regions.hpp"
+#include "numeric/io/option_words.hpp"
 #include "numeric/region/cap_limits.hpp"
 #include "numeric/region/region_limits.hpp"
 #include "numeric/synthesis/seeds.hpp"
@@ -75,21 +76,24 @@ LimitsRequest limits_request(const Values& v) {
 LimitsResult limits(const LimitsRequest& q, const Progress& progress) {
   const bool sphere = is_sphere(q.regions);
   if (q.thermal || q.temperature) {
-    if (!q.thermal) throw UsageError("limits: --temperature needs a thermal model, --model BASE+Tk (e.g. paper9+T3)");
+    if (!q.thermal)
+      throw UsageError(words("limits: {temperature} needs a thermal model, {model BASE+Tk} (e.g. paper9+T3)"));
     if (!q.temperature)
-      throw UsageError("limits: --model " + q.thermal->name() + " needs --temperature T1..T2 (degrees Celsius)");
+      throw UsageError(words("limits: {model} ") + q.thermal->name() +
+                       words(" needs {temperature T1..T2} (degrees Celsius)"));
     LimitsResult r;
     r.model = q.model;
     if (!sphere && !model_supports(q.model, ModelCapability::region_limits))
-      throw UsageError("limits: --region has limits for the " + models_supporting(ModelCapability::region_limits) +
-                       " model only (got --model " + q.thermal->name() + ")");
+      throw UsageError(words("limits: {region} has limits for the ") +
+                       models_supporting(ModelCapability::region_limits) + words(" model only (got {model} ") +
+                       q.thermal->name() + ")");
     if (!sphere) r.region = resolve_region(q.regions, r.warnings);
     r.thermal = thermal_limits(*q.thermal, *q.temperature, r.region, progress);
     return r;
   }
   if (!model_supports(q.model, ModelCapability::region_limits) && !sphere)
-    throw UsageError("limits: --region has limits for the " + models_supporting(ModelCapability::region_limits) +
-                     " model only (got --model " + std::string(model_name(q.model)) + ")");
+    throw UsageError(words("limits: {region} has limits for the ") + models_supporting(ModelCapability::region_limits) +
+                     words(" model only (got {model} ") + std::string(model_name(q.model)) + ")");
   LimitsResult r;
   r.model = q.model;
   if (!sphere) r.region = resolve_region(q.regions, r.warnings);

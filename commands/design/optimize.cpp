@@ -12,6 +12,7 @@
 #include "numeric/criteria/identifiability.hpp"
 #include "numeric/criteria/model_evaluation.hpp"
 #include "numeric/io/input_error.hpp"
+#include "numeric/io/option_words.hpp"
 #include "numeric/program/catalogue.hpp"
 #include "numeric/region/region_limit.hpp"
 #include "numeric/region/region_synthesis.hpp"
@@ -22,8 +23,8 @@ namespace {
 void check(const OptimizeRequest& q) {
   const SynthesisOptions& o = q.synthesis;
   if (o.positions < model_parameters(o.model))
-    throw UsageError("optimize: --positions " + std::to_string(o.positions) + " is below the " +
-                     std::to_string(model_parameters(o.model)) + " parameters of --model " +
+    throw UsageError(words("optimize: {positions} ") + std::to_string(o.positions) + " is below the " +
+                     std::to_string(model_parameters(o.model)) + words(" parameters of {model} ") +
                      std::string(model_name(o.model)));
   // The message as it always read while one model had both (paper9); with other models it says which has which.
   const bool regions = !q.regions.empty() && !model_supports(o.model, ModelCapability::region_limits),
@@ -32,33 +33,33 @@ void check(const OptimizeRequest& q) {
                     with_digits = models_supporting(ModelCapability::polish_digits);
   if (regions || digits)
     throw UsageError("optimize: " +
-                     (with_regions == with_digits ? "--region and --digits work with the " + with_regions
-                      : regions                   ? "--region works with the " + with_regions
-                                                  : "--digits works with the " + with_digits) +
-                     " model only (got --model " + std::string(model_name(o.model)) + ")");
+                     (with_regions == with_digits ? words("{region} and {digits} work with the ") + with_regions
+                      : regions                   ? words("{region} works with the ") + with_regions
+                                                  : words("{digits} works with the ") + with_digits) +
+                     words(" model only (got {model} ") + std::string(model_name(o.model)) + ")");
 }
 
 // --from: start 0 is that program, and N its size.
 void start_from(const OptimizeRequest& q, SynthesisOptions& o) {
   if (q.from.empty()) {
-    if (o.positions == 0) throw UsageError("--positions N is required (or --from PROGRAM, whose size it takes)");
+    if (o.positions == 0) throw UsageError(words("{positions N} is required (or {from PROGRAM}, whose size it takes)"));
     return;
   }
   Program start = q.start ? *q.start : resolve_program(q.from);
   if (o.positions != 0 && o.positions != start.size())
-    throw UsageError("--positions " + std::to_string(o.positions) + " but --from " + display_name(q.from) + " has " +
-                     std::to_string(start.size()) + " positions");
+    throw UsageError(words("{positions} ") + std::to_string(o.positions) + words(" but {from} ") +
+                     display_name(q.from) + " has " + std::to_string(start.size()) + " positions");
   if (start.size() < kOptimizePositions.lo || start.size() > kOptimizePositions.hi)
-    throw UsageError("--from " + display_name(q.from) + " has " + std::to_string(start.size()) +
+    throw UsageError(words("{from} ") + display_name(q.from) + " has " + std::to_string(start.size()) +
                      " positions; optimize takes " + std::to_string(kOptimizePositions.lo) + ".." +
                      std::to_string(kOptimizePositions.hi));
-  if (!q.regions.empty()) throw UsageError("--from starts the search on the sphere; it does not take --region");
+  if (!q.regions.empty()) throw UsageError(words("{from} starts the search on the sphere; it does not take {region}"));
   // A start that cannot identify every parameter has no gradient: the search would stay there and
   // report an infinite value as its optimum.
   const ModelEvaluation ev = evaluate(o.model, start);
   if (!ev.full_rank())
     throw InputError(display_name(q.from), 0,
-                     rank_deficiency(ev) + "; --from needs a start of full rank (or give --positions N alone)");
+                     rank_deficiency(ev) + words("; {from} needs a start of full rank (or give {positions N} alone)"));
   o.positions = start.size();
   o.first_start = std::move(start);
 }
@@ -72,7 +73,7 @@ const CommandTable& optimize_table() {
       40,
       {named(integer_option("--positions", kOptimizePositions.lo, kOptimizePositions.hi,
                             "number of positions N (at least the model's number of parameters)", "positions", "0",
-                            "required, unless --from gives it"),
+                            words("required, unless {from} gives it")),
              "N"),
        positions_option(text_option("--from", "PROGRAM",
                                     "start 0 of the multistart is this program (a catalogue name, a family member "
@@ -90,8 +91,9 @@ const CommandTable& optimize_table() {
                             "none (no polish)"),
              "P"),
        local_option(),
-       out_option("write the program (the polished one with --digits) as CSV x,y,z,alpha1_deg,alpha2_deg, after a "
-                  "'# region:' line with --region"),
+       out_option(
+           words("write the program (the polished one with {digits}) as CSV x,y,z,alpha1_deg,alpha2_deg, after a "
+                 "'# region:' line with {region}")),
        json_option("print one JSON object")}};
   return table;
 }
@@ -117,9 +119,11 @@ OptimizeRequest optimize_request(const Values& v) {
 
 OptimizeResult optimize(const OptimizeRequest& q, const Progress& progress) {
   if (q.thermal || q.temperature) {
-    if (!q.thermal) throw UsageError("optimize: --temperature needs a thermal model, --model BASE+Tk (e.g. paper9+T3)");
+    if (!q.thermal)
+      throw UsageError(words("optimize: {temperature} needs a thermal model, {model BASE+Tk} (e.g. paper9+T3)"));
     if (!q.temperature)
-      throw UsageError("optimize: --model " + q.thermal->name() + " needs --temperature T1..T2 (degrees Celsius)");
+      throw UsageError(words("optimize: {model} ") + q.thermal->name() +
+                       words(" needs {temperature T1..T2} (degrees Celsius)"));
     OptimizeRequest sphere = q;
     sphere.thermal.reset();
     sphere.temperature.reset();
@@ -142,7 +146,7 @@ OptimizeResult optimize(const OptimizeRequest& q, const Progress& progress) {
   if (!q.regions.empty()) r.region = resolve_region(q.regions, r.warnings);
   const bool restricted = r.region && !r.region->is_sphere();
   if (q.margin_deg > 0 && !restricted)
-    throw UsageError("--margin moves positions inside a restricted --region's boundaries; the sphere has none");
+    throw UsageError(words("{margin} moves positions inside a restricted {region}'s boundaries; the sphere has none"));
   if (q.margin_deg > 0) {
     // The inset region is where the positions go: it must be resolved as the region itself is (cap:5
     // inset by 4.999 degrees is a cap of 0.001 degrees, where every program is rank-deficient).
@@ -150,16 +154,16 @@ OptimizeResult optimize(const OptimizeRequest& q, const Progress& progress) {
     check_conditioning(*r.designed_on, r.warnings, "--margin");
   }
   if (restricted && q.digits > 0)
-    throw InputError("--digits", 0,
-                     "the polish solves the unconstrained optimality conditions; it cannot keep positions inside "
-                     "--region " +
+    throw InputError(option_word("digits"), 0,
+                     words("the polish solves the unconstrained optimality conditions; it cannot keep positions inside "
+                           "{region} ") +
                          r.region->text());
   if (q.digits > 0)
-    check_work("--positions " + std::to_string(opt.positions) + " --digits " + std::to_string(q.digits),
+    check_work(words("{positions} ") + std::to_string(opt.positions) + words(" {digits} ") + std::to_string(q.digits),
                polish_work(opt.positions, q.digits), "polish fewer positions or to fewer digits");
   r.synthesis = restricted ? synthesize_on_region(opt, r.designed_on ? *r.designed_on : *r.region) : synthesize(opt);
   if (!std::isfinite(r.synthesis.value))
-    throw InputError("--region", 0,
+    throw InputError(option_word("region"), 0,
                      "no start reached a program of full rank on " +
                          (r.designed_on ? r.designed_on->text()
                           : r.region    ? r.region->text()

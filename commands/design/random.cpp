@@ -6,6 +6,7 @@
 #include "commands/core/region_request.hpp"
 #include "commands/core/usage_error.hpp"
 #include "commands/core/work_bound.hpp"
+#include "numeric/io/option_words.hpp"
 #include "numeric/region/region_sampler.hpp"
 
 namespace scalcal::commands {
@@ -40,12 +41,12 @@ RandomRequest random_request(const Values& v) {
 
 RandomResult random_programs(const RandomRequest& q, const Progress&) {
   if (q.positions < model_parameters(q.model))
-    throw UsageError("random: --positions " + std::to_string(q.positions) + " is below the " +
-                     std::to_string(model_parameters(q.model)) + " parameters of --model " +
+    throw UsageError(words("random: {positions} ") + std::to_string(q.positions) + " is below the " +
+                     std::to_string(model_parameters(q.model)) + words(" parameters of {model} ") +
                      std::string(model_name(q.model)));
-  check_work("--count " + std::to_string(q.count) + " at --positions " + std::to_string(q.positions),
+  check_work(words("{count} ") + std::to_string(q.count) + words(" at {positions} ") + std::to_string(q.positions),
              random_search_work(q.count, q.positions, model_parameters(q.model), criterion_name(q.criterion)),
-             "lower --count or --positions, or run several seeds one after another");
+             words("lower {count} or {positions}, or run several seeds one after another"));
   RandomResult r;
   r.request = q;
   PositionSampler sampler;
@@ -59,11 +60,11 @@ RandomResult random_programs(const RandomRequest& q, const Progress&) {
   r.search = random_search(q.positions, q.count, q.criterion, q.seed, q.threads, sampler, q.model);
   // No program with a finite value: the "best" would be a placeholder of zero vectors, not a program.
   if (!std::isfinite(r.search.best))
-    throw UsageError("none of the " + std::to_string(q.count) + " random programs of " + std::to_string(q.positions) +
-                     " positions" + (r.region.empty() ? "" : " on " + r.region) + " has a finite " +
-                     std::string(criterion_name(q.criterion)) +
-                     " (each is rank-deficient in double precision): draw more (--count), more positions, or a wider "
-                     "region");
+    throw UsageError(
+        "none of the " + std::to_string(q.count) + " random programs of " + std::to_string(q.positions) + " positions" +
+        (r.region.empty() ? "" : " on " + r.region) + " has a finite " + std::string(criterion_name(q.criterion)) +
+        words(" (each is rank-deficient in double precision): draw more ({count}), more positions, or a wider "
+              "region"));
   return r;
 }
 

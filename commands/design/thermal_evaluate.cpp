@@ -8,6 +8,7 @@
 
 #include "commands/core/common_options.hpp"
 #include "numeric/io/input_error.hpp"
+#include "numeric/io/option_words.hpp"
 #include "numeric/region/region_limit.hpp"
 #include "numeric/thermal/information_criteria.hpp"
 
@@ -43,8 +44,8 @@ ThermalEvaluation evaluate_thermal(const std::string& name, const ThermalProgram
                      std::to_string(e.setpoints.size()) + " distinct temperature(s) (" + list(e.setpoints) +
                          " degC) cannot identify a polynomial of degree " + std::to_string(k) +
                          " in temperature: " + model.name() + " needs " + std::to_string(k + 1) +
-                         " set-points at least (`scalcal limits --model " + model.name() + " --temperature " +
-                         range.text() + "` prints the optimal ones)");
+                         words(" set-points at least (`scalcal limits {model} ") + model.name() +
+                         words(" {temperature} ") + range.text() + "` prints the optimal ones)");
   const Eigen::MatrixXd m = thermal_information(model, range, p);
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(m);
   const Eigen::VectorXd& l = eig.eigenvalues();
@@ -56,7 +57,7 @@ ThermalEvaluation evaluate_thermal(const std::string& name, const ThermalProgram
                          std::string(model_name(model.base)) + " across the set-points, at least " +
                          std::to_string(model.base_parameters()) + " positions in general position");
   if (e.setpoints.front() < range.low - 1e-9 || e.setpoints.back() > range.high + 1e-9)
-    e.warnings.push_back({name, "temperatures outside --temperature " + range.text() + " (" + list(e.setpoints) +
+    e.warnings.push_back({name, words("temperatures outside {temperature} ") + range.text() + " (" + list(e.setpoints) +
                                     " degC): the limits are for that range, so an efficiency above 1 is possible"});
   e.limits = thermal_limits(model, range, region, progress);
   for (const auto& row : e.limits.rows) {

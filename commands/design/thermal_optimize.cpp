@@ -6,6 +6,7 @@
 
 #include "commands/core/region_request.hpp"
 #include "commands/core/usage_error.hpp"
+#include "numeric/io/option_words.hpp"
 #include "numeric/thermal/information_criteria.hpp"
 
 namespace scalcal::commands {
@@ -51,10 +52,11 @@ std::string nearest_splits(int N, int base_parameters, int points) {
 ThermalOptimizeResult thermal_optimize(const OptimizeRequest& q, const ThermalModel& model,
                                        const TemperatureRange& range, const Progress& progress) {
   if (!q.regions.empty() && !model_supports(model.base, ModelCapability::region_limits))
-    throw UsageError("optimize: --region has limits for the " + models_supporting(ModelCapability::region_limits) +
-                     " model only (got --model " + model.name() + ")");
+    throw UsageError(words("optimize: {region} has limits for the ") +
+                     models_supporting(ModelCapability::region_limits) + words(" model only (got {model} ") +
+                     model.name() + ")");
   if (!q.from.empty() || q.start)
-    throw UsageError("optimize: --from does not apply to a thermal model (the program is a product)");
+    throw UsageError(words("optimize: {from} does not apply to a thermal model (the program is a product)"));
   ThermalOptimizeResult r;
   r.criterion = q.synthesis.criterion;
   r.positions = q.synthesis.positions;
@@ -65,8 +67,9 @@ ThermalOptimizeResult thermal_optimize(const OptimizeRequest& q, const ThermalMo
   const int P = model.base_parameters(), points = static_cast<int>(design->points.size());
   const auto split = best_split(r.positions, P, r.criterion, *design);
   if (!split)
-    throw UsageError("optimize: --positions " + std::to_string(r.positions) + " is no product of a sphere program (" +
-                     std::to_string(P) + " positions at least) and " + std::to_string(points) +
+    throw UsageError(words("optimize: {positions} ") + std::to_string(r.positions) +
+                     " is no product of a sphere program (" + std::to_string(P) + " positions at least) and " +
+                     std::to_string(points) +
                      " set-points or more; nearest that are: " + nearest_splits(r.positions, P, points));
   r.counts = split->counts;
   r.sphere_positions = r.positions / split->repeats;

@@ -5,6 +5,7 @@
 
 #include "commands/core/usage_error.hpp"
 #include "commands/core/work_bound.hpp"
+#include "numeric/io/option_words.hpp"
 
 namespace scalcal::commands {
 
@@ -28,7 +29,7 @@ CertifyRequest certify_request(const Values& v) {
 
 CertifyCommandResult certify(const CertifyRequest& q, const Progress&) {
   if (q.program.size() < 9) throw UsageError("certify: " + q.name + ": a program needs at least 9 positions");
-  check_work(std::to_string(q.program.size()) + " positions at --digits " + std::to_string(q.digits),
+  check_work(std::to_string(q.program.size()) + words(" positions at {digits} ") + std::to_string(q.digits),
              certify_work(q.program.size(), q.digits), "certify a smaller program or at fewer digits");
   CertifyCommandResult r;
   r.criterion = q.criterion;
@@ -36,7 +37,8 @@ CertifyCommandResult certify(const CertifyRequest& q, const Progress&) {
   try {
     r.certificate = scalcal::certify(q.program, q.criterion, CertifyOptions{q.digits});
   } catch (const NoKnownLimit& e) {
-    throw UsageError(std::string("certify: --criterion ") + std::string(criterion_name(q.criterion)) + ": " + e.what());
+    throw UsageError(std::string(words("certify: {criterion} ")) + std::string(criterion_name(q.criterion)) + ": " +
+                     e.what());
   } catch (const std::invalid_argument& e) {
     throw UsageError(q.name + ": " + e.what());
   }

@@ -3,6 +3,7 @@
 
 #include "commands/core/common_options.hpp"
 #include "numeric/io/input_error.hpp"
+#include "numeric/io/option_words.hpp"
 #include "symbolic/criteria.hpp"
 #include "symbolic/exact.hpp"
 #include "symbolic/family.hpp"
@@ -35,7 +36,7 @@ symbolic::ExactCriteria exact_of(const FamilyRequest& q, const symbolic::FamilyI
   const int P = model_parameters(q.model);
   if (!paper9 && !inst.moment)
     throw InputError(q.name, 0,
-                     "the family gives only the paper's H^T H (no moment function), so --model " +
+                     words("the family gives only the paper's H^T H (no moment function), so {model} ") +
                          std::string(model_name(q.model)) +
                          " cannot be evaluated: give FamilyInstance a MomentFunction");
   try {
@@ -43,10 +44,11 @@ symbolic::ExactCriteria exact_of(const FamilyRequest& q, const symbolic::FamilyI
                   : symbolic::exact_criteria(symbolic::model_moment_matrix(q.model, inst.moment), inst.N,
                                              symbolic::model_groups(q.model));
   } catch (const std::invalid_argument&) {
-    throw InputError(q.name, 0,
-                     "the information matrix is singular: these parameters cannot identify all " +
-                         (paper9 ? std::string("nine")
-                                 : std::to_string(P) + " parameters of --model " + std::string(model_name(q.model))));
+    throw InputError(
+        q.name, 0,
+        "the information matrix is singular: these parameters cannot identify all " +
+            (paper9 ? std::string("nine")
+                    : std::to_string(P) + words(" parameters of {model} ") + std::string(model_name(q.model))));
   } catch (const InputError&) {
     throw;
   } catch (const std::runtime_error& e) {  // GiNaC's: e.g. a nested radical under a symbolic rotation

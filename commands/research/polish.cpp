@@ -7,6 +7,7 @@
 #include "numeric/criteria/evaluation.hpp"
 #include "numeric/criteria/identifiability.hpp"
 #include "numeric/io/input_error.hpp"
+#include "numeric/io/option_words.hpp"
 
 namespace scalcal::commands {
 
@@ -31,7 +32,7 @@ PolishRequest polish_request(const Values& v) {
 PolishCommandResult polish(const PolishRequest& q, const Progress&) {
   const Evaluation ev = evaluate(q.program);
   if (!ev.full_rank()) throw InputError(q.name, 0, rank_deficiency(ev));
-  check_work(std::to_string(q.program.size()) + " positions at --digits " + std::to_string(q.digits),
+  check_work(std::to_string(q.program.size()) + words(" positions at {digits} ") + std::to_string(q.digits),
              polish_work(q.program.size(), q.digits), "polish fewer positions or to fewer digits");
   PolishCommandResult r;
   r.criterion = q.criterion;

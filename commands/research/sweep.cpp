@@ -8,6 +8,7 @@
 #include "commands/core/region_request.hpp"
 #include "commands/core/usage_error.hpp"
 #include "commands/research/sweep_shards.hpp"
+#include "numeric/io/option_words.hpp"
 #include "numeric/region/region_limit.hpp"
 #include "numeric/region/region_synthesis.hpp"
 
@@ -48,8 +49,8 @@ std::vector<CriterionKind> read_criteria_list(const std::string& s) {
 // (a job array's tasks); Python's sweep(map=...) runs one shard per task through the caller's map.
 Option shard_option() {
   Option o = text_option("--shard", "I/N",
-                         "run only the tasks k with k mod N = I (tasks: criteria outer, N inner), from 0/N to "
-                         "N-1/N; the CLI needs --results with it");
+                         words("run only the tasks k with k mod N = I (tasks: criteria outer, N inner), from 0/N to "
+                               "N-1/N; the CLI needs {results} with it"));
   o.why_bad = [](const std::string& s) -> std::string {
     return read_shard(s) ? "" : "must be I/N with 0 <= I < N <= " + std::to_string(kMaxShards) + ", got '" + s + "'";
   };
@@ -106,12 +107,12 @@ SweepRequest sweep_request(const Values& v) {
 
 Sweep::Sweep(const SweepRequest& q) : request_(q), limits_(kCriterionCount) {
   if (q.lo < model_parameters(q.model))
-    throw UsageError("sweep: --positions " + std::to_string(q.lo) + " is below the " +
-                     std::to_string(model_parameters(q.model)) + " parameters of --model " +
+    throw UsageError(words("sweep: {positions} ") + std::to_string(q.lo) + " is below the " +
+                     std::to_string(model_parameters(q.model)) + words(" parameters of {model} ") +
                      std::string(model_name(q.model)));
   if (!model_supports(q.model, ModelCapability::region_limits) && !q.regions.empty())
-    throw UsageError("sweep: --region works with the " + models_supporting(ModelCapability::region_limits) +
-                     " model only (got --model " + std::string(model_name(q.model)) + ")");
+    throw UsageError(words("sweep: {region} works with the ") + models_supporting(ModelCapability::region_limits) +
+                     words(" model only (got {model} ") + std::string(model_name(q.model)) + ")");
   if (!q.regions.empty()) region_ = resolve_region(q.regions, warnings_);
   for (const CriterionKind c : q.criteria)
     for (int n = q.lo; n <= q.hi; ++n) tasks_.push_back({c, n});

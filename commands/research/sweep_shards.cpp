@@ -7,6 +7,7 @@
 
 #include "commands/core/common_options.hpp"
 #include "numeric/io/input_error.hpp"
+#include "numeric/io/option_words.hpp"
 
 namespace scalcal::commands {
 namespace {
@@ -206,14 +207,15 @@ std::string request_difference(const SweepRequest& a, const SweepRequest& b) {
     return s.empty() ? std::string("sphere") : s;
   };
   if (a.lo != b.lo || a.hi != b.hi)
-    return "--positions " + std::to_string(a.lo) + ".." + std::to_string(a.hi) + " against " + std::to_string(b.lo) +
-           ".." + std::to_string(b.hi);
-  if (criteria(a) != criteria(b)) return "--criteria " + criteria(a) + " against " + criteria(b);
+    return words("{positions} ") + std::to_string(a.lo) + ".." + std::to_string(a.hi) + " against " +
+           std::to_string(b.lo) + ".." + std::to_string(b.hi);
+  if (criteria(a) != criteria(b)) return words("{criteria} ") + criteria(a) + " against " + criteria(b);
   if (a.model != b.model)
-    return "--model " + std::string(model_name(a.model)) + " against " + std::string(model_name(b.model));
-  if (a.regions != b.regions) return "--region " + regions(a) + " against " + regions(b);
-  if (a.starts != b.starts) return "--starts " + std::to_string(a.starts) + " against " + std::to_string(b.starts);
-  if (a.seed != b.seed) return "--seed " + std::to_string(a.seed) + " against " + std::to_string(b.seed);
+    return words("{model} ") + std::string(model_name(a.model)) + " against " + std::string(model_name(b.model));
+  if (a.regions != b.regions) return words("{region} ") + regions(a) + " against " + regions(b);
+  if (a.starts != b.starts)
+    return words("{starts} ") + std::to_string(a.starts) + " against " + std::to_string(b.starts);
+  if (a.seed != b.seed) return words("{seed} ") + std::to_string(a.seed) + " against " + std::to_string(b.seed);
   return "";
 }
 
@@ -240,7 +242,7 @@ std::vector<SynthesisResult> merge_results(const std::vector<ResultFile>& files,
     throw InputError(files.front().file, 0,
                      std::to_string(missing.size()) + " of the sweep's " + std::to_string(found.size()) +
                          " tasks are in no result file: " + list +
-                         " (run the shards that hold them again with the same --results file: they resume)");
+                         words(" (run the shards that hold them again with the same {results} file: they resume)"));
   }
   std::vector<SynthesisResult> out;
   out.reserve(found.size());
@@ -249,9 +251,9 @@ std::vector<SynthesisResult> merge_results(const std::vector<ResultFile>& files,
 }
 
 const CommandTable& merge_table() {
-  Option results = text_option("--results", "FILE",
-                               "a result file of `sweep --results`, or a folder of them (*.jsonl); repeat for more",
-                               "file path", kRequired);
+  Option results = text_option(
+      "--results", "FILE", words("a result file of `sweep {results}`, or a folder of them (*.jsonl); repeat for more"),
+      "file path", kRequired);
   results.kind = OptionKind::repeated;
   static const CommandTable table{
       "merge",

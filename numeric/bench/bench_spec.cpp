@@ -5,11 +5,12 @@
 #include <cstdlib>
 
 #include "numeric/io/input_error.hpp"
+#include "numeric/io/option_words.hpp"
 
 namespace scalcal {
 
 void bench_error(std::string_view spec, const std::string& why) {
-  throw InputError("--bench", 0, "'" + display_name(std::string(spec)) + "': " + why);
+  throw InputError(option_word("bench"), 0, "'" + display_name(std::string(spec)) + "': " + why);
 }
 
 std::vector<std::string> split_spec(std::string_view text, char separator) {

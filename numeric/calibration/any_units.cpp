@@ -13,6 +13,7 @@
 #include "numeric/criteria/identifiability.hpp"
 #include "numeric/criteria/model_evaluation.hpp"
 #include "numeric/io/input_error.hpp"
+#include "numeric/io/option_words.hpp"
 
 namespace scalcal {
 namespace {
@@ -81,13 +82,14 @@ std::vector<PositionSamples> started_data(const std::string& file, const std::ve
                                           AnyUnitsCalibration& out) {
   const std::string name(model_name(options.model));
   if (options.modulus == Modulus::projection)
-    throw InputError(file, 0,
-                     "the measured modulus is " + std::to_string(ratio) +
-                         " times --magnitude; the projection modulus needs data in the field's units (use the norm "
-                         "modulus, which starts from an ellipsoid fit in any units)");
+    throw InputError(
+        file, 0,
+        "the measured modulus is " + std::to_string(ratio) +
+            words(" times {magnitude}; the projection modulus needs data in the field's units (use the norm "
+                  "modulus, which starts from an ellipsoid fit in any units)"));
   if (has_meter_parameter(index, 9))
     throw InputError(file, 0,
-                     "the measured modulus is " + std::to_string(ratio) + " times --magnitude: --model " + name +
+                     "the measured modulus is " + std::to_string(ratio) + words(" times {magnitude}: {model} ") + name +
                          " calibrates data in the field's units only (its cubic term is relative to |I|); the linear "
                          "models start from an ellipsoid fit in any units");
   const EllipsoidShape shape = has_meter_parameter(index, 6)   ? EllipsoidShape::general
@@ -112,8 +114,8 @@ void check_layout(const std::string& file, const std::vector<PositionSamples>& y
   const double ratio = median_modulus_ratio(y, M);
   if (ratio < 0.5 || ratio > 2.0)
     throw InputError(file, 0,
-                     "the measured modulus is " + std::to_string(ratio) + " times --magnitude " + std::to_string(M) +
-                         "; the model needs it near 1 (wrong --magnitude or units?)");
+                     "the measured modulus is " + std::to_string(ratio) + words(" times {magnitude} ") +
+                         std::to_string(M) + words("; the model needs it near 1 (wrong {magnitude} or units?)"));
   const ModelEvaluation ev = evaluate(options.model, Program{position_directions(y, options.modulus)});
   if (!ev.full_rank()) throw InputError(file, 0, "the measured positions form a " + rank_deficiency(ev));
   if (ev.condition > kIllConditioned)
@@ -206,7 +208,7 @@ AnyUnitsCalibration calibrate_any_units(const std::string& file, const std::vect
   if (n < P)
     throw InputError(file, 0,
                      std::to_string(n) + " positions cannot identify the " + std::to_string(P) +
-                         " parameters of --model " + std::string(model_name(options.model)));
+                         words(" parameters of {model} ") + std::string(model_name(options.model)));
   const double ratio = median_modulus_ratio(data, M);
   out.started = options.magnitude_auto || std::abs(ratio - 1) > kInUnits;
   const std::vector<PositionSamples> y = out.started ? started_data(file, data, options, index, ratio, out) : data;

@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "numeric/calibration/line_list.hpp"
+#include "numeric/io/option_words.hpp"
 
 namespace scalcal {
 namespace {
@@ -77,7 +78,7 @@ std::string outlier_warning(const std::vector<ExcludedSample>& excluded) {
   for (const auto& e : excluded) worst.emplace_back(e.distance, e.line);
   return "excluded " + std::to_string(excluded.size()) + " outlier sample" + (excluded.size() == 1 ? "" : "s") +
          " (line, distance from its position's median in robust scales):" + line_list(worst) +
-         "; --keep-outliers keeps them";
+         words("; {keep-outliers} keeps them");
 }
 
 }  // namespace scalcal

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "numeric/io/input_error.hpp"
+#include "numeric/io/option_words.hpp"
 
 namespace scalcal {
 namespace {
@@ -232,20 +233,21 @@ IntervalDetection StillPoseDetector::detection(const LogStream& stream) const {
     if (!(stream.period() > 0)) throw InputError(log.file, 0, "fewer than two finite rows: no sample period");
     if (stream.first_usable() < 0)
       throw InputError(log.file, 0,
-                       floor_from_still_ ? "the initial still period (--still " + seconds(options_.still_seconds) +
-                                               " s) holds no usable sample (every row is non-finite or saturated)"
-                                         : "no usable sample (every row is non-finite or saturated)");
+                       floor_from_still_
+                           ? words("the initial still period ({still} ") + seconds(options_.still_seconds) +
+                                 " s) holds no usable sample (every row is non-finite or saturated)"
+                           : "no usable sample (every row is non-finite or saturated)");
     if (finite_.empty())
-      throw InputError(
-          log.file, 0,
-          "the log holds no complete window of " + std::to_string(window_) + " usable samples; shorten --window");
+      throw InputError(log.file, 0,
+                       "the log holds no complete window of " + std::to_string(window_) +
+                           words(" usable samples; shorten {window}"));
     if (floor_from_still_ && still_samples_ < window_)
       throw InputError(log.file, 0,
-                       "the initial still period (--still " + seconds(options_.still_seconds) + " s) holds " +
+                       words("the initial still period ({still} ") + seconds(options_.still_seconds) + " s) holds " +
                            std::to_string(still_samples_) + " usable samples, fewer than one variance window (" +
                            std::to_string(window_) +
-                           "); lengthen --still, shorten --window, or drop --still (the noise "
-                           "floor then comes from the log's quiet windows)");
+                           words("); lengthen {still}, shorten {window}, or drop {still} (the noise "
+                                 "floor then comes from the log's quiet windows)"));
     if (!(floor_ > 0))
       throw InputError(
           log.file, 0,

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "numeric/io/input_error.hpp"
+#include "numeric/io/option_words.hpp"
 
 namespace scalcal {
 bool looks_like_text_log(const std::string& text) {
@@ -45,7 +46,7 @@ RawLog raw_log_from_table(const CsvTable& table, double rate) {
   const int ct = time_column(table);
   if (ct < 0 && !(rate > 0))
     throw InputError(table.file, 1,
-                     "no time column (t, t_s, time, time_s or timestamp): give the sample rate with --rate HZ");
+                     words("no time column (t, t_s, time, time_s or timestamp): give the sample rate with {rate HZ}"));
   for (const char* c : {"ix", "iy", "iz"})
     if (!table.has(c))
       throw InputError(table.file, 1, std::string("missing column '") + c + "' (a raw log needs ix,iy,iz)");

@@ -5,6 +5,7 @@
 
 #include "numeric/export/formats.hpp"
 #include "numeric/io/input_error.hpp"
+#include "numeric/io/option_words.hpp"
 
 namespace scalcal {
 
@@ -55,7 +56,7 @@ ExportOutput export_with(const ExportFormat& format, const ExportInput& in) {
     throw InputError(in.file, 0,
                      "it is a thermal calibration (" + in.thermal->model.name() + "), and the " +
                          std::string(format.name) + " format carries no temperature drift: " + carriers +
-                         " carry its offsets' (export --format px4 or ardupilot)");
+                         words(" carry its offsets' (export {format px4} or ardupilot)"));
   }
   if (!in.correction.matrix.allFinite() || !in.correction.offset.allFinite())
     throw InputError(in.file, 0, "its offset or matrix holds a value that is not finite");

@@ -7,6 +7,7 @@
 
 #include "numeric/export/matrix_forms.hpp"
 #include "numeric/io/input_error.hpp"
+#include "numeric/io/option_words.hpp"
 
 namespace scalcal {
 namespace {
@@ -53,7 +54,7 @@ TargetCorrection in_target_units(const ExportInput& in, const Unit& target, std:
     if (in.instrument != Instrument::mag)
       throw InputError(in.file, 0,
                        "it was calibrated with the magnitude unknown (auto), which leaves the " +
-                           std::string(instrument_noun(in.instrument)) + "'s gain unknown; --format " +
+                           std::string(instrument_noun(in.instrument)) + words("'s gain unknown; {format} ") +
                            std::string(format) + " needs it: calibrate with the known magnitude");
     if (!(in.units.field_strength > 0))
       throw InputError(in.file, 0,

@@ -11,6 +11,7 @@
 #include "numeric/calibration/model_choice.hpp"
 #include "numeric/gyro/grouped_least_squares.hpp"
 #include "numeric/io/input_error.hpp"
+#include "numeric/io/option_words.hpp"
 #include "numeric/model/paper9.hpp"
 
 namespace scalcal::gyro {
@@ -149,7 +150,7 @@ KnownModulusCalibration calibrate_known_moduli(const std::string& file, const st
   if (n == 0 || observations < L.free)
     throw InputError(file, 0,
                      "found " + std::to_string(n) + " segments or turns and " + std::to_string(rests.size()) +
-                         " rests; --model " + L.name + " needs at least " + std::to_string(L.free) +
+                         words(" rests; {model} ") + L.name + " needs at least " + std::to_string(L.free) +
                          " of them (the rests count as 3, for the offset)");
   const Full x0 = start_of(items, rests);
   const double gain0 = std::cbrt(std::abs(x0(3) * x0(4) * x0(5)));  // raw units per physical unit

@@ -13,6 +13,7 @@
 #include "numeric/criteria/evaluation.hpp"
 #include "numeric/criteria/identifiability.hpp"
 #include "numeric/io/input_error.hpp"
+#include "numeric/io/option_words.hpp"
 #include "numeric/model/direction.hpp"
 #include "numeric/program/program_csv.hpp"
 
@@ -20,7 +21,7 @@ namespace scalcal {
 namespace {
 
 [[noreturn]] void bad_spec(const std::string& spec, const std::string& reason) {
-  throw InputError("--region", 0, "'" + display_name(spec) + "': " + reason);
+  throw InputError(option_word("region"), 0, "'" + display_name(spec) + "': " + reason);
 }
 
 std::vector<std::string> split(const std::string& s, char sep) {
@@ -297,7 +298,8 @@ Region inset_region(const Region& region, double margin_deg) {
     if (!(z.min_tilt_deg < z.max_tilt_deg)) {
       char text[64];
       std::snprintf(text, sizeof text, "%.6g", margin_deg);
-      throw InputError("--margin", 0, std::string(text) + " degrees leaves nothing of the region " + region.text());
+      throw InputError(option_word("margin"), 0,
+                       std::string(text) + " degrees leaves nothing of the region " + region.text());
     }
   }
   return r;
@@ -332,12 +334,12 @@ double check_region_identifiable(const Region& region) {
   grid.positions = region.grid(region.grid_step_for(500, 0.001, 4.0));
   constexpr int kParameters = 9;  // the paper's model, which evaluate() fits
   if (grid.size() < kParameters)
-    throw InputError("--region", 0,
+    throw InputError(option_word("region"), 0,
                      "'" + display_name(region.text()) + "' has only " + std::to_string(grid.size()) +
                          " distinct positions; the model needs at least 9");
   const Evaluation ev = evaluate(grid);
   if (!ev.full_rank())
-    throw InputError("--region", 0,
+    throw InputError(option_word("region"), 0,
                      "no program on '" + display_name(region.text()) + "' is rank 9: " + rank_deficiency(ev));
   return ev.condition;
 }

@@ -9,6 +9,7 @@
 #include <Eigen/Eigenvalues>
 
 #include "numeric/calibration/meter_model.hpp"
+#include "numeric/io/option_words.hpp"
 
 namespace scalcal {
 namespace {
@@ -45,7 +46,7 @@ std::string identifiability(const std::vector<ThermalPose>& poses, const Thermal
            " set-points at least; record more set-points or fit a lower degree";
   if (static_cast<int>(poses.size()) <= m.parameters())
     return std::to_string(poses.size()) + " poses for " + std::to_string(m.parameters()) + " parameters of " +
-           m.name() + ": record more poses (`scalcal optimize --model " + m.name() + "` designs them)";
+           m.name() + words(": record more poses (`scalcal optimize {model} ") + m.name() + "` designs them)";
   return "";
 }
 

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "numeric/calibration/meter_model.hpp"
+#include "numeric/io/option_words.hpp"
 
 namespace scalcal {
 namespace {
@@ -44,7 +45,7 @@ ThermalRehearsal rehearse_thermal(const ThermalRehearsalRequest& q) {
   const bool ramp = q.ramp_c_per_min > 0;
   if (thermal_rehearsal_samples(q) > kMaxThermalRehearsalSamples)
     throw std::invalid_argument(ramp ? "the ramp's log would have more than 2e7 samples: a faster ramp or a lower rate"
-                                     : "the log would have more than 2e7 samples: lower --rate or --dwell");
+                                     : words("the log would have more than 2e7 samples: lower {rate} or {dwell}"));
   ThermalRehearsal r;
   GaussianSource gauss(q.seed);
   r.truth.resize(q.model.parameters());

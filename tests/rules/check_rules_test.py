@@ -50,5 +50,18 @@ class Includes(unittest.TestCase):
         self.assertIsNone(cr.include_breach("commands/a.cpp", "symbolic/b.hpp"))
 
 
+class Flags(unittest.TestCase):
+    def test_a_flag_in_message_text_is_a_breach(self):
+        text = r'''throw UsageError("optimize: --positions " + n);
+x = words("give {log FILE}");
+v.text("--log");  // "--in a comment"
+out << "# scalcal export --format px4";
+auto r = R"(a raw --literal)";
+char c = '\"'; s = "a --b";
+'''
+        found = cr.flag_breaches_in(text)
+        self.assertEqual([line for line, _ in found], [1, 5, 6])
+
+
 if __name__ == "__main__":
     unittest.main()
