@@ -169,8 +169,7 @@ std::string moving_log_message(const LogMotion& m, const IntervalDetection& d, c
          " still intervals were found (" + need +
          words(
              "). An accelerometer measures gravity only at rest: record still poses of a second or more; a "
-             "magnetometer's "
-             "log is calibrated sample by sample ({instrument mag})");
+             "magnetometer's log is calibrated sample by sample ({instrument mag})");
 }
 
 // det(covariance)^(1/P) of the noise-based errors of the calibration a detection's positions give
@@ -209,7 +208,7 @@ void choose_for_log(const CalibrateRequest& o, const CalibrationStream& stream, 
     for (const char* name : {"paper9", "axis6", "bias3"}) models.push_back(*parse_model(name));
   for (const ModelKind model : models) {
     const auto chosen =
-        stream.choose([&](const IntervalDetection& d) { return detection_score(*in.log, d, o, model); });
+        stream.choose([&](const IntervalDetection& d) { return detection_score(stream.log(), d, o, model); });
     if (!chosen) continue;
     in.chosen = chosen;
     in.detection = chosen->detection;
@@ -217,35 +216,51 @@ void choose_for_log(const CalibrateRequest& o, const CalibrationStream& stream, 
   }
 }
 
-// The log through the stream's detection: as one last chunk (the batch), or in chunks of
-// --chunk rows as a logger delivers them; with the adaptive choice's candidates unless the
-// detection's options were given.
-CalibrationStream stream_of(const RawLog& log, const CalibrateRequest& o, int& chunks) {
+// The log through the stream's detection: as one last chunk (the batch: the log itself, not a copy),
+// or in chunks of --chunk rows as a logger delivers them; with the adaptive choice's candidates
+// unless the detection's options were given.
+CalibrationStream stream_of(RawLog&& log, const CalibrateRequest& o) {
   CalibrationStream stream(log.file, o.intervals, !o.intervals_given);
-  const int rows = o.chunk_rows > 0 ? o.chunk_rows : std::max(log.size(), 1);
-  for (int begin = 0; begin < log.size(); begin += rows) {
-    const int end = std::min(log.size(), begin + rows);
+  if (log.size() == 0) return stream;  // no chunk at all, as a logger that never sent one
+  if (o.chunk_rows <= 0 || o.chunk_rows >= log.size()) {
+    stream.add(std::move(log), true);
+    return stream;
+  }
+  for (int begin = 0; begin < log.size(); begin += o.chunk_rows) {
+    const int end = std::min(log.size(), begin + o.chunk_rows);
     RawLog chunk;
     chunk.file = log.file;
     chunk.t.assign(log.t.begin() + begin, log.t.begin() + end);
     chunk.samples.assign(log.samples.begin() + begin, log.samples.begin() + end);
     chunk.lines.assign(log.lines.begin() + begin, log.lines.begin() + end);
-    stream.add(chunk, end == log.size());
+    stream.add(std::move(chunk), end == log.size());
   }
-  chunks = stream.chunks();
   return stream;
 }
+
+// What the stream's log gives calibrate, all but the log itself (the caller copies or takes it).
+CalibrationInput input_of(const CalibrationStream& stream, const CalibrateRequest& o);
 
 }  // namespace
 
 CalibrationInput calibration_input(RawLog log, const CalibrateRequest& o) {
   if (o.modulus == Modulus::projection)
     throw InputError(o.file, 0, "a raw log has no nominal directions: the projection modulus needs them");
-  int chunks = 0;
-  return calibration_input(stream_of(log, o, chunks), o);
+  CalibrationStream stream = stream_of(std::move(log), o);
+  CalibrationInput in = input_of(stream, o);
+  in.log = std::move(stream).release_log();
+  return in;
 }
 
 CalibrationInput calibration_input(const CalibrationStream& stream, const CalibrateRequest& o) {
+  CalibrationInput in = input_of(stream, o);
+  in.log = stream.log();
+  return in;
+}
+
+namespace {
+
+CalibrationInput input_of(const CalibrationStream& stream, const CalibrateRequest& o) {
   // --model auto takes the richest model the positions carry, down to offsets only.
   const int needed = o.model ? model_parameters(*o.model) : model_parameters(*parse_model("bias3"));
   const std::string need = o.model ? words("{model} ") + std::string(model_name(*o.model)) + " needs at least " +
@@ -253,8 +268,8 @@ CalibrationInput calibration_input(const CalibrationStream& stream, const Calibr
                                    : "paper9 needs at least 9 positions (axis6 6, bias3 3)";
   if (o.modulus == Modulus::projection)
     throw InputError(o.file, 0, "a raw log has no nominal directions: the projection modulus needs them");
+  const RawLog& log = stream.log();
   CalibrationInput in;
-  in.log = stream.log();
   in.chunks = stream.chunks();
   in.detection = stream.detection();
   const auto& d = in.detection;
@@ -268,10 +283,10 @@ CalibrationInput calibration_input(const CalibrationStream& stream, const Calibr
                      " samples sit at an output's extreme in runs of three or more (saturated) and are "
                      "not used (lines " +
                      lines_text(d.saturated_lines, d.saturated) + ")"});
-  in.motion = judge_motion(*in.log, d);
+  in.motion = judge_motion(log, d);
   decide_instrument(o, in);
   if (in.every_sample) {
-    in.data = sample_positions(*in.log, d.usable, in.sample_index);
+    in.data = sample_positions(log, d.usable, in.sample_index);
     if (in.data.size() < static_cast<std::size_t>(needed))
       throw InputError(o.file, 0, std::to_string(in.data.size()) + " usable samples; " + need);
     return in;
@@ -290,9 +305,11 @@ CalibrationInput calibration_input(const CalibrationStream& stream, const Calibr
     throw InputError(o.file, 0,
                      moving_log_message(in.motion, d, need) + "; its quietest windows vary " +
                          shortest(d.still_variance / white) + " times as much as one sample's noise");
-  in.data = interval_positions(*in.log, in.detection);
+  in.data = interval_positions(log, in.detection);
   return in;
 }
+
+}  // namespace
 
 std::string magnitude_problem(const std::string& s) {
   if (s == "auto") return "";

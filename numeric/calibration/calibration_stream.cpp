@@ -1,6 +1,9 @@
 // Calibration as a stream: the log's stage and every detector fed chunk by chunk (calibration_stream.hpp).
 #include "numeric/calibration/calibration_stream.hpp"
 
+#include <algorithm>
+#include <memory>
+
 namespace scalcal {
 
 CalibrationStream::CalibrationStream(std::string file, const StaticIntervalOptions& options, bool adaptive)
@@ -9,11 +12,30 @@ CalibrationStream::CalibrationStream(std::string file, const StaticIntervalOptio
     detectors_.emplace_back(options);
     return;
   }
-  for (const StaticIntervalOptions& o : detection_candidates(options)) detectors_.emplace_back(o);
+  // One moving variance per window length, shared by the detectors of that window (exact: theirs
+  // were the same numbers computed again; 4 windows for 37 detectors).
+  std::vector<std::shared_ptr<MovingVariance>> windows;
+  for (const StaticIntervalOptions& o : detection_candidates(options)) {
+    auto shared = std::find_if(windows.begin(), windows.end(),
+                               [&](const auto& w) { return w->window_seconds() == o.window_seconds; });
+    if (shared == windows.end())
+      shared =
+          windows.insert(windows.end(), std::make_shared<MovingVariance>(o.window_seconds, !(o.still_seconds > 0)));
+    detectors_.emplace_back(o, *shared);
+  }
 }
 
 void CalibrationStream::add(const RawLog& chunk, bool last) {
   stream_.add(chunk, last);
+  advance();
+}
+
+void CalibrationStream::add(RawLog&& chunk, bool last) {
+  stream_.add(std::move(chunk), last);
+  advance();
+}
+
+void CalibrationStream::advance() {
   for (StillPoseDetector& d : detectors_) d.advance(stream_);
   ++chunks_;
 }

@@ -7,6 +7,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "numeric/calibration/adaptive_detection.hpp"
@@ -29,8 +30,10 @@ class CalibrationStream {
   CalibrationStream(std::string file, const StaticIntervalOptions& options, bool adaptive);
   // Appends a chunk and settles what it allows; `last`: the log ends with it.
   void add(const RawLog& chunk, bool last = false);
+  void add(RawLog&& chunk, bool last = false);  // a first chunk becomes the log without a copy
   int chunks() const { return chunks_; }
   const RawLog& log() const { return stream_.log(); }
+  RawLog release_log() && { return std::move(stream_).release(); }  // for a caller done with the stream
 
   // The poses under the given options so far (throws as detect_static_intervals once the log ended).
   IntervalDetection detection() const { return detectors_.front().detection(stream_); }
@@ -43,6 +46,8 @@ class CalibrationStream {
       const std::function<std::optional<double>(const IntervalDetection&)>& score) const;
 
  private:
+  void advance();  // the detectors over the rows just taken
+
   LogStream stream_;
   std::vector<StillPoseDetector> detectors_;  // the options', then the candidates' in choose_detection's order
   int chunks_ = 0;

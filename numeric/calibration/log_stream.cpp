@@ -47,22 +47,46 @@ LogStream::LogStream(std::string file)
 
 void LogStream::add(const RawLog& chunk, bool last) {
   if (ended_) throw InputError(log_.file, 0, "the log has ended: no chunk can follow its last");
-  for (int i = 0; i < chunk.size(); ++i) {
-    const auto k = static_cast<std::size_t>(i);
-    const int index = log_.size();
-    log_.t.push_back(chunk.t[k]);
-    log_.samples.push_back(chunk.samples[k]);
-    log_.lines.push_back(chunk.lines.empty() ? index + 1 : chunk.lines[k]);
+  const int from = log_.size();
+  log_.t.insert(log_.t.end(), chunk.t.begin(), chunk.t.end());
+  log_.samples.insert(log_.samples.end(), chunk.samples.begin(), chunk.samples.end());
+  if (chunk.lines.empty())
+    for (int i = 0; i < chunk.size(); ++i) log_.lines.push_back(from + i + 1);
+  else
+    log_.lines.insert(log_.lines.end(), chunk.lines.begin(), chunk.lines.end());
+  take_rows(from, last);
+}
+
+// The first chunk is the log's storage itself (the batch's one chunk: the log is not copied).
+void LogStream::add(RawLog&& chunk, bool last) {
+  if (ended_ || log_.size() > 0) {
+    add(static_cast<const RawLog&>(chunk), last);
+    return;
+  }
+  std::string file = std::move(log_.file);
+  log_ = std::move(chunk);
+  log_.file = std::move(file);
+  if (log_.lines.empty())
+    for (int i = 0; i < log_.size(); ++i) log_.lines.push_back(i + 1);
+  take_rows(0, last);
+}
+
+RawLog LogStream::release() && { return std::move(log_); }
+
+// The rows from `from` on: their steps and extremes, then which samples are decided.
+void LogStream::take_rows(int from, bool last) {
+  for (int index = from; index < log_.size(); ++index) {
+    const auto k = static_cast<std::size_t>(index);
     if (!log_.finite(index)) continue;
     if (previous_finite_ >= 0) {
-      const double step = log_.t[static_cast<std::size_t>(index)] - log_.t[static_cast<std::size_t>(previous_finite_)];
+      const double step = log_.t[k] - log_.t[static_cast<std::size_t>(previous_finite_)];
       if (!(step > 0))
-        throw InputError(log_.file, log_.lines.back(), "time does not increase from the previous finite row's");
+        throw InputError(log_.file, log_.lines[k], "time does not increase from the previous finite row's");
       steps_.push_back(step);
     }
     previous_finite_ = index;
-    finite_lo_ = finite_lo_.cwiseMin(log_.samples.back());
-    finite_hi_ = finite_hi_.cwiseMax(log_.samples.back());
+    finite_lo_ = finite_lo_.cwiseMin(log_.samples[k]);
+    finite_hi_ = finite_hi_.cwiseMax(log_.samples[k]);
   }
   ended_ = last;
   decide_usable(ended_ ? log_.size() : log_.size() - 2);
@@ -142,8 +166,7 @@ double LogStream::window_variance(int i, int h) const {
 bool LogStream::window_white(int i, int h) const {
   const auto a = static_cast<std::size_t>(i - h), b = static_cast<std::size_t>(i + h + 1);
   const int w = 2 * h + 1;
-  const Vec3 m = (ps_[b] - ps_[a]) / w;
-  const double trace = ((ps2_[b] - ps2_[a]) / w - m.cwiseProduct(m)).cwiseMax(0.0).sum();
+  const double trace = window_axis_variances(ps_[b] - ps_[a], ps2_[b] - ps2_[a], w).sum();
   return (steps2_[b] - steps2_[a + 1]) / (w - 1) >= 0.5 * trace;
 }
 

@@ -6,6 +6,7 @@
 #pragma once
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "numeric/calibration/raw_log.hpp"
@@ -21,8 +22,10 @@ class LogStream {
   // Appends a chunk's rows (times increasing from the last chunk's); `last`: the log ends here.
   // Throws InputError for time that does not increase across chunks and for overflowing values.
   void add(const RawLog& chunk, bool last);
+  void add(RawLog&& chunk, bool last);  // the same; a first chunk becomes the log without a copy
 
   const RawLog& log() const { return log_; }
+  RawLog release() &&;  // the log, for a caller done with the stream
   bool ended() const { return ended_; }
   // Samples whose usability is decided (a saturated run needs two samples after it).
   int decided() const { return static_cast<int>(usable_.size()); }
@@ -45,6 +48,7 @@ class LogStream {
   void describe(IntervalDetection& d) const;
 
  private:
+  void take_rows(int from, bool last);
   void decide_usable(int upto);
   bool saturated(int k) const;
 

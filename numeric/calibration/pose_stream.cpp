@@ -17,30 +17,6 @@ std::string seconds(double v) {
   return s.str();
 }
 
-// The noise floor from the windows: the median of the quiet ones, those below 3 times the 5 %
-// quantile of all windows' variance norms. A quantised quiet output can make most quiet windows
-// exactly zero: the positive ones set the floor then.
-double quiet_floor(std::vector<double> v) {
-  const auto quantile = [](std::vector<double>& x, double q) {
-    const auto k = static_cast<std::size_t>(q * static_cast<double>(x.size() - 1));
-    std::nth_element(x.begin(), x.begin() + static_cast<std::ptrdiff_t>(k), x.end());
-    return x[k];
-  };
-  double low = quantile(v, 0.05);
-  if (!(low > 0)) {
-    std::vector<double> positive;
-    for (double x : v)
-      if (x > 0) positive.push_back(x);
-    if (positive.empty()) return 0;
-    v = positive;
-    low = quantile(v, 0.05);
-  }
-  std::vector<double> quiet;
-  for (double x : v)
-    if (x <= 3 * low) quiet.push_back(x);
-  return quantile(quiet, 0.5);
-}
-
 // The mean of the usable samples i..j less `shift`, and their count.
 Vec3 mean_of(const LogStream& stream, int i, int j, const Vec3& shift, int& count) {
   Vec3 s = Vec3::Zero();
@@ -71,35 +47,10 @@ bool drifts(const LogStream& stream, int i, int j) {
 
 }  // namespace
 
-StillPoseDetector::StillPoseDetector(StaticIntervalOptions options) : options_(options) {
+StillPoseDetector::StillPoseDetector(StaticIntervalOptions options, std::shared_ptr<MovingVariance> windows)
+    : options_(options), windows_(std::move(windows)) {
   floor_from_still_ = options_.still_seconds > 0;
-}
-
-// The window in samples, once the stream's period is fixed: window_seconds of samples, at least
-// 11, odd, at most the log so far (which only binds on a log shorter than one window).
-bool StillPoseDetector::fix_window(const LogStream& stream) {
-  if (window_ > 0) return true;
-  const double period = stream.period_for(options_.window_seconds);
-  if (!(period > 0)) return false;
-  const int n = stream.log().size();
-  if (!stream.ended() && static_cast<double>(n) < options_.window_seconds / period)
-    return false;  // a window's span yet
-  // In doubles first: a log whose time steps are tiny would overflow an int.
-  const double window = std::clamp(options_.window_seconds / period, 11.0, static_cast<double>(std::max(n, 11)));
-  window_ = std::max(11, static_cast<int>(std::lround(window)) | 1);
-  return true;
-}
-
-void StillPoseDetector::extend_variances(const LogStream& stream) {
-  const int h = window_ / 2, n = stream.log().size();
-  const int upto = stream.ended() ? n : stream.decided() - h;
-  for (int i = static_cast<int>(variances_.size()); i < upto; ++i) {
-    const double v = i + h < stream.decided() ? stream.window_variance(i, h) : NAN;
-    variances_.push_back(v);
-    if (!std::isfinite(v)) continue;
-    finite_.push_back(v);
-    if (stream.window_white(i, h)) ++white_;
-  }
+  if (!windows_) windows_ = std::make_shared<MovingVariance>(options_.window_seconds, !floor_from_still_);
 }
 
 // The initial still period (--still), once the stream is past it: its usable samples and, when they
@@ -121,36 +72,29 @@ bool StillPoseDetector::settle_still_period(const LogStream& stream) {
   if (i == stream.decided() && !stream.ended()) return false;
   still_settled_ = true;
   still_samples_ = count;
-  if (count < window_) return true;  // detection() says why
+  if (count < windows_->window()) return true;  // detection() says why
   const Vec3 mean = sum / count;
   floor_ = (sum2 / count - mean.cwiseProduct(mean)).cwiseMax(0.0).norm();
   return true;
 }
 
 // The floor: the initial still period's variance (--still), once the stream is past it; else the
-// quiet windows' median, recomputed as the windows grow by a sixty-fourth (the whole log at its end),
-// and trusted once white windows make up the 5 % of the windows whose quantile it starts from (and at
-// least a window's worth): before, the quietest windows could be a slow motion's.
+// quiet windows' (MovingVariance::floor).
 bool StillPoseDetector::update_floor(const LogStream& stream) {
   if (floor_from_still_) {
     if (!still_settled_ && !settle_still_period(stream)) return false;  // the still period goes on
-  } else if (!finite_.empty() && finite_.size() != floor_windows_) {
-    const bool trusted = white_ >= kFloorWhiteWindows * window_ && 20.0 * white_ >= static_cast<double>(finite_.size());
-    if (!stream.ended() &&
-        (!trusted || finite_.size() < floor_windows_ + std::max<std::size_t>(1, floor_windows_ / 64)))
-      return floor_ > 0;
-    floor_ = quiet_floor(finite_);
-    floor_windows_ = finite_.size();
+  } else {
+    floor_ = windows_->floor();
   }
   threshold_ = options_.threshold_factor * floor_;
   return floor_ > 0;
 }
 
 void StillPoseDetector::advance(const LogStream& stream) {
-  if (!fix_window(stream)) return;
-  extend_variances(stream);
+  windows_->advance(stream);  // shared: only the first detector's call of a chunk does the work
+  if (windows_->window() == 0) return;
   if (!update_floor(stream)) return;
-  judge(stream, static_cast<int>(variances_.size()));
+  judge(stream, static_cast<int>(windows_->variances().size()));
   if (!stream.ended()) return;
   if (run_) close_run(stream);
   if (pending_) settle_pending(stream);
@@ -161,7 +105,7 @@ void StillPoseDetector::advance(const LogStream& stream) {
 void StillPoseDetector::judge(const LogStream& stream, int upto) {
   const int gap = longest_break(stream);
   for (int i = judged_; i < upto; ++i) {
-    const double v = variances_[static_cast<std::size_t>(i)];
+    const double v = windows_->variances()[static_cast<std::size_t>(i)];
     if (std::isfinite(v) && v < threshold_) {
       if (run_)
         run_->second = i;
@@ -237,15 +181,15 @@ IntervalDetection StillPoseDetector::detection(const LogStream& stream) const {
                            ? words("the initial still period ({still} ") + seconds(options_.still_seconds) +
                                  " s) holds no usable sample (every row is non-finite or saturated)"
                            : "no usable sample (every row is non-finite or saturated)");
-    if (finite_.empty())
+    if (!windows_->any_complete_window())
       throw InputError(log.file, 0,
-                       "the log holds no complete window of " + std::to_string(window_) +
+                       "the log holds no complete window of " + std::to_string(windows_->window()) +
                            words(" usable samples; shorten {window}"));
-    if (floor_from_still_ && still_samples_ < window_)
+    if (floor_from_still_ && still_samples_ < windows_->window())
       throw InputError(log.file, 0,
                        words("the initial still period ({still} ") + seconds(options_.still_seconds) + " s) holds " +
                            std::to_string(still_samples_) + " usable samples, fewer than one variance window (" +
-                           std::to_string(window_) +
+                           std::to_string(windows_->window()) +
                            words("); lengthen {still}, shorten {window}, or drop {still} (the noise "
                                  "floor then comes from the log's quiet windows)"));
     if (!(floor_ > 0))
@@ -258,7 +202,7 @@ IntervalDetection StillPoseDetector::detection(const LogStream& stream) const {
   stream.describe(d);
   d.intervals = intervals_;
   d.sample_period = stream.period();
-  d.window = window_;
+  d.window = windows_->window();
   d.still_variance = floor_;
   d.floor_from_still = floor_from_still_;
   d.threshold = threshold_;

@@ -9,23 +9,23 @@
 // library's detector judges), make up the 5 % of the windows the floor's quantile starts from, it
 // decides nothing, so a log that starts in slow motion does not take that motion for the floor.
 #pragma once
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "numeric/calibration/log_stream.hpp"
+#include "numeric/calibration/moving_variance.hpp"
 #include "numeric/calibration/static_intervals.hpp"
 
 namespace scalcal {
 
-// White windows seen before a stream's floor is trusted, in windows: one window's worth of windows
-// (a still stretch of two windows' length).
-inline constexpr int kFloorWhiteWindows = 1;
-
 // The still poses of one set of options, judged as the log stream's samples are decided.
 class StillPoseDetector {
  public:
-  explicit StillPoseDetector(StaticIntervalOptions options);
+  // `windows`: the moving variance of the options' window, shared with other detectors of that window
+  // (null: its own).
+  explicit StillPoseDetector(StaticIntervalOptions options, std::shared_ptr<MovingVariance> windows = nullptr);
   // Judges what the stream's samples decided so far allow (everything once the stream ended).
   void advance(const LogStream& stream);
   // The poses judged so far. Once the stream has ended it throws InputError where the batch
@@ -34,8 +34,6 @@ class StillPoseDetector {
   const StaticIntervalOptions& options() const { return options_; }
 
  private:
-  bool fix_window(const LogStream& stream);
-  void extend_variances(const LogStream& stream);
   bool settle_still_period(const LogStream& stream);
   bool update_floor(const LogStream& stream);
   void judge(const LogStream& stream, int upto);
@@ -43,11 +41,7 @@ class StillPoseDetector {
   void settle_pending(const LogStream& stream);
 
   StaticIntervalOptions options_;
-  int window_ = 0;                 // samples, 0 until fixed
-  std::vector<double> variances_;  // per sample, as far as computed
-  std::vector<double> finite_;     // the finite ones, in order: the floor's data
-  std::size_t floor_windows_ = 0;  // finite_.size() when the floor was last computed
-  int white_ = 0;                  // white windows seen
+  std::shared_ptr<MovingVariance> windows_;
   double floor_ = 0, threshold_ = 0;
   bool floor_from_still_ = false;
   bool still_settled_ = false;  // --still: the period is past (still_samples_ usable samples in it)

@@ -7,12 +7,15 @@
 
 namespace scalcal {
 
-double window_variance_norm(const Vec3& sum, const Vec3& sum2, int w) {
+Vec3 window_axis_variances(const Vec3& sum, const Vec3& sum2, int w) {
   const Vec3 m = sum / w;
-  const Vec3 var = sum2 / w - m.cwiseProduct(m);
+  return (sum2 / w - m.cwiseProduct(m)).cwiseMax(0.0);
+}
+
+double window_variance_norm(const Vec3& sum, const Vec3& sum2, int w) {
   // The norm squares the variances again: beyond 1e150 it is taken scaled (it would overflow),
   // below unchanged (the same bits as always).
-  const Vec3 v = var.cwiseMax(0.0);
+  const Vec3 v = window_axis_variances(sum, sum2, w);
   const double largest = v.maxCoeff();
   return largest > 1e150 ? largest * (v / largest).norm() : v.norm();
 }

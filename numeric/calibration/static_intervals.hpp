@@ -69,7 +69,9 @@ struct IntervalDetection {
 // by `shift`, a sample of the log, for accuracy); NaN where the window is incomplete or holds an
 // unusable sample.
 std::vector<double> window_variances(const RawLog& log, const std::vector<char>& usable, int w, const Vec3& shift);
-// The variance norm of a window of w samples from their (shifted) sum and sum of squares.
+// Each axis' variance over a window of w samples from their (shifted) sum and sum of squares (rounding
+// below 0 taken as 0), and the norm of the three, which the detection compares with its floor.
+Vec3 window_axis_variances(const Vec3& sum, const Vec3& sum2, int w);
 double window_variance_norm(const Vec3& sum, const Vec3& sum2, int w);
 
 // The whole log as one last chunk of the stream's detection (pose_stream.hpp). Throws InputError
