@@ -137,6 +137,7 @@ refused() {
 refused family octahedral
 refused jig cube
 refused help family
+refused schema family
 refused evaluate jig:cube
 "$off" --help | grep -q 'not in this build (made with -DSCALCAL_WITH_GINAC=OFF, without GiNaC): family, jig' ||
   fail "--help does not name the lacking commands"

@@ -2,6 +2,7 @@
 // (commands/core/request_json.hpp); docs/schema/ holds every command's, checked against this by ctest.
 #include <iostream>
 
+#include "commands/core/build_features.hpp"
 #include "commands/core/request_json.hpp"
 #include "experiments/cli/command.hpp"
 #include "experiments/cli/output_file.hpp"
@@ -24,6 +25,8 @@ int run(const commands::Values& v) {
     }
     return 0;
   }
+  for (const commands::LackingCommand& c : commands::lacking_commands())
+    if (c.name == name) throw UsageError("schema: " + commands::lacking_message(c));
   throw UsageError("schema: no command '" + name + "' (scalcal help lists them)");
 }
 
