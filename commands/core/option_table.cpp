@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "numeric/io/option_words.hpp"
+
 namespace scalcal::commands {
 namespace {
 
@@ -44,21 +46,7 @@ bool read_number(const std::string& s, double& x) {
   return !s.empty() && ec == std::errc() && ptr == end && std::isfinite(x);
 }
 
-std::string Option::python_name() const {
-  std::string out;
-  for (char c : name) {
-    if (c == '-' && out.empty()) continue;  // the leading dashes
-    out += c == '-' ? '_' : static_cast<char>(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
-  }
-  // A Python keyword takes a trailing underscore, as PEP 8 has it: --from is from_.
-  static const char* const keywords[] = {
-      "and",      "as",     "assert",  "async", "await", "break",  "class", "continue", "def",  "del",  "elif",
-      "else",     "except", "finally", "for",   "from",  "global", "if",    "import",   "in",   "is",   "lambda",
-      "nonlocal", "not",    "or",      "pass",  "raise", "return", "try",   "while",    "with", "yield"};
-  for (const char* k : keywords)
-    if (out == k) return out + "_";
-  return out;
-}
+std::string Option::python_name() const { return python_keyword(name); }
 
 std::string Option::help() const {
   if (kind == OptionKind::positional || kind == OptionKind::flag) return what;

@@ -15,11 +15,21 @@ bool name_char(char c, bool first) {
   return (c >= 'a' && c <= 'z') || (!first && ((c >= '0' && c <= '9') || c == '-'));
 }
 
-// Python's keyword for an option name without dashes; the same rule as Option::python_name
-// (commands/core/option_table.cpp), which the front end's arguments use.
+std::string render(std::string_view name, std::string_view value, bool has_value) {
+  if (option_style() == OptionStyle::cli)
+    return "--" + std::string(name) + (has_value ? " " + std::string(value) : std::string());
+  return python_keyword(name) + "=" + std::string(value);
+}
+
+}  // namespace
+
 std::string python_keyword(std::string_view name) {
   std::string out;
-  for (char c : name) out += c == '-' ? '_' : c;
+  for (char c : name) {
+    if (c == '-' && out.empty()) continue;  // the leading dashes
+    out += c == '-' ? '_' : static_cast<char>(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
+  }
+  // A Python keyword takes a trailing underscore, as PEP 8 has it: --from is from_.
   static const char* const keywords[] = {
       "and",      "as",     "assert",  "async", "await", "break",  "class", "continue", "def",  "del",  "elif",
       "else",     "except", "finally", "for",   "from",  "global", "if",    "import",   "in",   "is",   "lambda",
@@ -28,14 +38,6 @@ std::string python_keyword(std::string_view name) {
     if (out == k) return out + "_";
   return out;
 }
-
-std::string render(std::string_view name, std::string_view value, bool has_value) {
-  if (option_style() == OptionStyle::cli)
-    return "--" + std::string(name) + (has_value ? " " + std::string(value) : std::string());
-  return python_keyword(name) + "=" + std::string(value);
-}
-
-}  // namespace
 
 void set_option_style(OptionStyle style) { style_slot().store(style, std::memory_order_relaxed); }
 

@@ -21,6 +21,10 @@ OptionStyle option_style();
 // "{name} " (its value follows, appended by the caller) renders "name=" without the space.
 std::string words(std::string_view text);
 
+// Python's keyword for an option ("--threshold-factor" -> "threshold_factor", "PROGRAM" -> "program", "--from" ->
+// "from_": a Python keyword takes a trailing underscore, as PEP 8 has it). The front ends' arguments use it too.
+std::string python_keyword(std::string_view name);
+
 // One option as the field an error is about ("threshold-factor" or "--threshold-factor"): the shell's
 // "--threshold-factor", Python's "threshold_factor" (as Python names a bad argument: "region: 'cap:500': ...").
 std::string option_word(std::string_view name);
