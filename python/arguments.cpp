@@ -6,7 +6,6 @@
 
 #include "commands/core/usage_error.hpp"
 #include "numeric/io/csv_table.hpp"
-#include "numeric/io/option_words.hpp"
 #include "python/from_numpy.hpp"
 
 namespace py = pybind11;
@@ -86,36 +85,29 @@ CsvTable table_of_columns(const std::string& argument, const py::dict& columns) 
 }
 
 void set(commands::Values& values, const Option& o, py::handle v) {
-  try {
-    if (o.kind == OptionKind::flag) {
-      if (!py::isinstance<py::bool_>(v)) wrong_type(o, "a bool", v);
-      values.set_flag(o.name, v.cast<bool>());
-    } else if (o.kind == OptionKind::repeated && !py::isinstance<py::str>(v) && py::isinstance<py::sequence>(v)) {
-      for (const auto& item : v.cast<py::sequence>()) values.set(o.name, value_text(o, item));
-    } else if (o.takes_columns && py::isinstance<py::dict>(v)) {
-      values.tables[o.name] = table_of_columns(o.python_name(), v.cast<py::dict>());
-      values.set(o.name, o.python_name());
-    } else if (o.takes_document && py::isinstance<py::dict>(v)) {
-      // NumPy arrays and scalars as JSON lists and numbers (a calibration straight from calibrate()).
-      const py::cpp_function plain([](py::handle x) -> py::object {
-        if (py::hasattr(x, "tolist")) return x.attr("tolist")();
-        throw py::type_error("not a JSON value: " + type_name(x));
-      });
-      const std::string text =
-          py::str(py::module_::import("json").attr("dumps")(v, py::arg("default") = plain)).cast<std::string>();
-      values.documents[o.name] = commands::parse_json_file_text(text, o.python_name());
-      values.set(o.name, o.python_name());
-    } else if (o.takes_positions && !py::isinstance<py::str>(v) && !py::hasattr(v, "__fspath__")) {
-      values.program = program_of(v, o.python_name());  // an (N, 3) array of directions
-      values.set(o.name, "positions");
-    } else {
-      values.set(o.name, value_text(o, v));
-    }
-  } catch (const UsageError& e) {
-    // "positions: must be ..." from the table's check (option_word), named as Python names the argument.
-    const std::string m = e.what(), prefix = option_word(o.name) + ": ";
-    if (m.rfind(prefix, 0) == 0) throw UsageError(o.python_name() + ": " + m.substr(prefix.size()));
-    throw;
+  if (o.kind == OptionKind::flag) {
+    if (!py::isinstance<py::bool_>(v)) wrong_type(o, "a bool", v);
+    values.set_flag(o.name, v.cast<bool>());
+  } else if (o.kind == OptionKind::repeated && !py::isinstance<py::str>(v) && py::isinstance<py::sequence>(v)) {
+    for (const auto& item : v.cast<py::sequence>()) values.set(o.name, value_text(o, item));
+  } else if (o.takes_columns && py::isinstance<py::dict>(v)) {
+    values.tables[o.name] = table_of_columns(o.python_name(), v.cast<py::dict>());
+    values.set(o.name, o.python_name());
+  } else if (o.takes_document && py::isinstance<py::dict>(v)) {
+    // NumPy arrays and scalars as JSON lists and numbers (a calibration straight from calibrate()).
+    const py::cpp_function plain([](py::handle x) -> py::object {
+      if (py::hasattr(x, "tolist")) return x.attr("tolist")();
+      throw py::type_error("not a JSON value: " + type_name(x));
+    });
+    const std::string text =
+        py::str(py::module_::import("json").attr("dumps")(v, py::arg("default") = plain)).cast<std::string>();
+    values.documents[o.name] = commands::parse_json_file_text(text, o.python_name());
+    values.set(o.name, o.python_name());
+  } else if (o.takes_positions && !py::isinstance<py::str>(v) && !py::hasattr(v, "__fspath__")) {
+    values.program = program_of(v, o.python_name());  // an (N, 3) array of directions
+    values.set(o.name, "positions");
+  } else {
+    values.set(o.name, value_text(o, v));
   }
 }
 

@@ -50,8 +50,7 @@ GyroCalibrateRequest gyro_calibrate_request(const Values& v) {
   // Options of an accelerometer's calibration that a gyro's does not take.
   for (const char* o :
        {"--modulus", "--weights", "--keep-outliers", "--suggest", "--criterion", "--region", "--program"})
-    if (v.given(o))
-      throw UsageError(std::string(words("calibrate {instrument gyro}: ")) + o + " is an accelerometer's option");
+    if (v.given(o)) throw UsageError(words("calibrate {instrument gyro}: ") + o + " is an accelerometer's option");
   q.sensor = v.text("--sensor");
   q.physical_units = "";
   if (const std::string units = v.text("--units"); !units.empty()) {

@@ -37,8 +37,7 @@ CertifyCommandResult certify(const CertifyRequest& q, const Progress&) {
   try {
     r.certificate = scalcal::certify(q.program, q.criterion, CertifyOptions{q.digits});
   } catch (const NoKnownLimit& e) {
-    throw UsageError(std::string(words("certify: {criterion} ")) + std::string(criterion_name(q.criterion)) + ": " +
-                     e.what());
+    throw UsageError(words("certify: {criterion} ") + std::string(criterion_name(q.criterion)) + ": " + e.what());
   } catch (const std::invalid_argument& e) {
     throw UsageError(q.name + ": " + e.what());
   }

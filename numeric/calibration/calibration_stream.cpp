@@ -16,11 +16,12 @@ CalibrationStream::CalibrationStream(std::string file, const StaticIntervalOptio
   // were the same numbers computed again; 4 windows for 37 detectors).
   std::vector<std::shared_ptr<MovingVariance>> windows;
   for (const StaticIntervalOptions& o : detection_candidates(options)) {
-    auto shared = std::find_if(windows.begin(), windows.end(),
-                               [&](const auto& w) { return w->window_seconds() == o.window_seconds; });
+    const bool quiet_floor = !(o.still_seconds > 0);  // a floor from --still needs no quiet windows' floor
+    auto shared = std::find_if(windows.begin(), windows.end(), [&](const auto& w) {
+      return w->window_seconds() == o.window_seconds && w->quiet_floor() == quiet_floor;
+    });
     if (shared == windows.end())
-      shared =
-          windows.insert(windows.end(), std::make_shared<MovingVariance>(o.window_seconds, !(o.still_seconds > 0)));
+      shared = windows.insert(windows.end(), std::make_shared<MovingVariance>(o.window_seconds, quiet_floor));
     detectors_.emplace_back(o, *shared);
   }
 }

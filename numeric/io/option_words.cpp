@@ -58,7 +58,7 @@ std::string words(std::string_view text) {
     std::size_t close = j;
     if (j < text.size() && text[j] == ' ') close = text.find_first_of("{}", j);
     if (close == std::string_view::npos || close >= text.size() || text[close] != '}' ||
-        (close > j && close == j + 1)) {  // not an option: "{" and the text after it stay as they are
+        close == j + 1) {  // not an option: "{" and the text after it stay as they are
       out += text[i++];
       continue;
     }
