@@ -136,7 +136,7 @@ std::optional<double> Sweep::limit(CriterionKind c) const {
   return *slot;
 }
 
-SynthesisResult Sweep::compute(const SweepTask& t, int threads) const {
+SynthesisOptions Sweep::options(const SweepTask& t, int threads) const {
   SynthesisOptions opt;
   opt.positions = t.positions;
   opt.criterion = t.criterion;
@@ -144,7 +144,22 @@ SynthesisResult Sweep::compute(const SweepTask& t, int threads) const {
   opt.seed = request_.seed;
   opt.threads = threads;
   opt.model = request_.model;
-  return restricted() ? synthesize_on_region(opt, *region_) : synthesize(opt);
+  return opt;
+}
+
+SynthesisResult Sweep::compute(const SweepTask& t, int threads, std::vector<LocalResult> known) const {
+  SynthesisOptions opt = options(t, threads);
+  if (restricted()) return synthesize_on_region(opt, *region_);
+  opt.known_starts = std::move(known);
+  return synthesize(opt);
+}
+
+int Sweep::certain_starts(const SweepTask& t) const {
+  return restricted() ? 0 : scalcal::certain_starts(options(t, 1));
+}
+
+std::vector<LocalResult> Sweep::starts(const SweepTask& t, int first, int count, int threads) const {
+  return multistart_starts(options(t, threads), first, count);
 }
 
 SweepRow Sweep::row(const SweepTask& t, SynthesisResult result) const {

@@ -49,12 +49,18 @@ class Sweep {
   bool restricted() const { return region_ && !region_->is_sphere(); }
   const Warnings& warnings() const { return warnings_; }
 
-  // The synthesis of one task; `threads` overrides the request's (MPI ranks share the cores).
-  SynthesisResult compute(const SweepTask& task, int threads) const;
+  // The synthesis of one task; `threads` overrides the request's (MPI ranks share the cores). `known`:
+  // results of its first starts, run ahead by starts() (on other ranks).
+  SynthesisResult compute(const SweepTask& task, int threads, std::vector<LocalResult> known = {}) const;
+  // The starts every synthesis of the task runs whatever their results (none on a region, whose
+  // synthesis is not split), and starts first .. first + count - 1 of it.
+  int certain_starts(const SweepTask& task) const;
+  std::vector<LocalResult> starts(const SweepTask& task, int first, int count, int threads) const;
   std::optional<double> limit(CriterionKind c) const;  // computed once per criterion
   SweepRow row(const SweepTask& task, SynthesisResult result) const;
 
  private:
+  SynthesisOptions options(const SweepTask& task, int threads) const;
   SweepRequest request_;
   std::optional<Region> region_;
   std::vector<SweepTask> tasks_;

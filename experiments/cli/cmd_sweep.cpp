@@ -2,7 +2,8 @@
 // [--seed S] [--threads T] [--out FILE] [--json] [--no-timing]`: the best program for every N and
 // criterion with its ratio to the limit (commands/research/sweep.hpp), each row shown and saved as it is
 // found. --no-timing leaves out the only columns that differ between runs. Started by mpirun, the
-// tasks are spread over the ranks and rank 0 prints what a single process would.
+// tasks (and the certain starts of tasks that have many) are spread over the ranks and rank 0 prints
+// what a single process would.
 #include <cstdlib>
 #include <iostream>
 #include <optional>
@@ -12,6 +13,7 @@
 
 #include "commands/research/sweep.hpp"
 #include "commands/research/sweep_shards.hpp"
+#include "commands/research/sweep_starts.hpp"
 #include "experiments/cli/command.hpp"
 #include "experiments/cli/json_output.hpp"
 #include "experiments/cli/mpi_ranks.hpp"
@@ -25,12 +27,35 @@ using commands::Sweep;
 using commands::SweepRow;
 using commands::SweepTask;
 
-SynthesisResult compute(const Sweep& sweep, const SweepTask& t, int threads) {
+SynthesisResult compute(const Sweep& sweep, const SweepTask& t, int threads, std::vector<LocalResult> known = {}) {
   // Fault injection for the test that a failing rank is reported (tests/mpi/sweep_ranks.sh).
   if (const char* fail = std::getenv("SCALCAL_SWEEP_FAIL");
       fail && fmt::format("{}:{}", criterion_name(t.criterion), t.positions) == fail)
     throw std::runtime_error("failure injected by SCALCAL_SWEEP_FAIL");
-  return sweep.compute(t, threads);
+  return sweep.compute(t, threads, std::move(known));
+}
+
+// The certain starts of the tasks that have many (sweep_starts.hpp), in batches taken by the ranks as they
+// free up, then every rank's results on every rank. A batch that fails is left to the task's own rank,
+// which runs those starts again and reports the failure as its task's.
+std::vector<std::vector<LocalResult>> run_starts_ahead(const Sweep& sweep, Ranks& ranks, int threads) {
+  const std::vector<commands::StartRange> ranges = commands::start_ranges(sweep);
+  if (ranges.empty()) return std::vector<std::vector<LocalResult>>(sweep.tasks().size());
+  std::string mine;
+  ranks.open_counter();
+  for (auto i = static_cast<std::size_t>(ranks.next()); i < ranges.size(); i = static_cast<std::size_t>(ranks.next())) {
+    const commands::StartRange& r = ranges[i];
+    const SweepTask& t = sweep.tasks()[r.task];
+    try {
+      mine += commands::starts_line(r, sweep.starts(t, r.first, r.count, threads)) + "\n";
+    } catch (const std::exception&) {
+    }
+    if (ranks.rank() == 0 && progress_enabled())
+      std::cerr << "sweep: rank 0 ran starts " << r.first << ".." << r.first + r.count - 1 << " of "
+                << criterion_name(t.criterion) << " N = " << t.positions << "\n";
+  }
+  ranks.close_counter();
+  return commands::known_starts(sweep, ranks.all_gather(mine));
 }
 
 // Each rank takes the next task as it frees up (a shared counter: a slow synthesis no longer holds up
@@ -40,11 +65,12 @@ SynthesisResult compute(const Sweep& sweep, const SweepTask& t, int threads) {
 int run_ranks(const Sweep& sweep, Ranks& ranks, std::optional<RowSink>& sink) {
   const auto& tasks = sweep.tasks();
   const int threads = sweep.request().threads == 0 ? 1 : sweep.request().threads;  // ranks share the cores
+  std::vector<std::vector<LocalResult>> known = run_starts_ahead(sweep, ranks, threads);
   std::string mine;
   ranks.open_counter();
   for (auto k = static_cast<std::size_t>(ranks.next()); k < tasks.size(); k = static_cast<std::size_t>(ranks.next())) {
     try {
-      mine += commands::result_line(sweep, k, compute(sweep, tasks[k], threads)) + "\n";
+      mine += commands::result_line(sweep, k, compute(sweep, tasks[k], threads, std::move(known[k]))) + "\n";
     } catch (const std::exception& e) {
       mine += commands::error_line(sweep, k, e.what()) + "\n";
     }

@@ -66,6 +66,24 @@ std::vector<std::string> Ranks::gather(const std::string& text) const {
 #endif
 }
 
+std::vector<std::string> Ranks::all_gather(const std::string& text) const {
+  if (size_ == 1) return {text};
+#ifdef SCALCAL_HAVE_MPI
+  int length = static_cast<int>(text.size());
+  std::vector<int> lengths(size_), offsets(size_);
+  PMPI_Allgather(&length, 1, MPI_INT, lengths.data(), 1, MPI_INT, MPI_COMM_WORLD);
+  int total = 0;
+  for (int r = 0; r < size_; ++r) offsets[r] = total, total += lengths[r];
+  std::string all(static_cast<std::size_t>(total), '\0');
+  PMPI_Allgatherv(text.data(), length, MPI_CHAR, all.data(), lengths.data(), offsets.data(), MPI_CHAR, MPI_COMM_WORLD);
+  std::vector<std::string> out;
+  for (int r = 0; r < size_; ++r) out.push_back(all.substr(offsets[r], lengths[r]));
+  return out;
+#else
+  return {text};
+#endif
+}
+
 void Ranks::open_counter() {
   local_next_ = 0;
 #ifdef SCALCAL_HAVE_MPI

@@ -14,6 +14,8 @@ class Ranks {
   int size() const { return size_; }
   // Every rank's text, in rank order, on rank 0; an empty vector elsewhere.
   std::vector<std::string> gather(const std::string& text) const;
+  // Every rank's text, in rank order, on every rank.
+  std::vector<std::string> all_gather(const std::string& text) const;
   // A counter shared by the ranks: each call returns the next value (0, 1, 2, ...) to whichever rank
   // asks first, so the ranks take tasks as they free up instead of in a fixed round (one atomic
   // fetch-and-add on rank 0's memory, MPI_Fetch_and_op; a plain counter in one process). Collective:

@@ -8,17 +8,35 @@
 
 namespace scalcal {
 
-SynthesisResult synthesize(const SynthesisOptions& options) {
-  return visit_model(options.model, [&](auto M) -> SynthesisResult {
+namespace {
+
+// f(criterion_ops) for the options' model and criterion, or the error of a model this build left out.
+template <class Result, class F>
+Result with_ops(const SynthesisOptions& options, F&& f) {
+  return visit_model(options.model, [&](auto M) -> Result {
     using Model = decltype(M);
     if constexpr (kSynthesisBuilt<Model>) {
-      return visit_criterion(options.criterion, [&](auto C) {
-        return synthesize_with<Model>(criterion_ops<decltype(C), Model>(), options);
-      });
+      return visit_criterion(options.criterion,
+                             [&](auto C) -> Result { return f(criterion_ops<decltype(C), Model>()); });
     } else {
       throw_no_synthesis(Model::name);
     }
   });
+}
+
+}  // namespace
+
+SynthesisResult synthesize(const SynthesisOptions& options) {
+  return with_ops<SynthesisResult>(options, [&](const auto& ops) { return synthesize_with(ops, options); });
+}
+
+int certain_starts(const SynthesisOptions& options) {
+  return with_ops<int>(options, [&](const auto& ops) { return certain_starts_with(ops, options); });
+}
+
+std::vector<LocalResult> multistart_starts(const SynthesisOptions& options, int first, int count) {
+  return with_ops<std::vector<LocalResult>>(
+      options, [&](const auto& ops) { return multistart_starts_with(ops, options, first, count); });
 }
 
 }  // namespace scalcal

@@ -7,6 +7,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "numeric/criteria/registry.hpp"
 #include "numeric/model/registry.hpp"
@@ -30,6 +31,10 @@ struct SynthesisOptions {
   // Start 0 is this program instead of a random one (optimize --from: a lab's program or a family
   // member as a start); its size must be `positions`.
   std::optional<Program> first_start;
+  // Results of starts 0, 1, ... computed elsewhere (by multistart_starts, on another MPI rank): taken as
+  // they are instead of running those starts again. Each is what this run would compute, bit for bit,
+  // so the result does not depend on where they ran.
+  std::vector<LocalResult> known_starts;
 };
 
 struct SynthesisResult {
@@ -48,5 +53,11 @@ struct SynthesisResult {
 
 // Throws std::invalid_argument when positions < the model's P or starts < 0.
 SynthesisResult synthesize(const SynthesisOptions& options);
+
+// How many starts every multistart of these options runs, whatever their results (its first batch: the
+// criterion's minimum at a deceptive N, or --starts' count), and starts first .. first + count - 1 of it:
+// work that can be split among processes ahead of synthesize (SynthesisOptions::known_starts).
+int certain_starts(const SynthesisOptions& options);
+std::vector<LocalResult> multistart_starts(const SynthesisOptions& options, int first, int count);
 
 }  // namespace scalcal

@@ -6,9 +6,11 @@
 // depends on scheduling. synthesize_with<Model> is compiled once per model (the criterion is a CriterionOps), in the
 // model's synthesis unit; synthesize<C, Model> is its name for one criterion type.
 #pragma once
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <functional>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -219,28 +221,47 @@ void finish_best(const CriterionOps<Model>& criterion, const SynthesisOptions& o
   }
 }
 
-// The multistart of one criterion under the model (compiled once per model).
+// The starts of one multistart. Start k is a function of k alone (its seed, or the rounded measure or
+// --from program at k = 0), so any process can run any of them: the synthesis itself, or another MPI
+// rank ahead of it, whose results come back as SynthesisOptions::known_starts.
 template <class Model>
-SynthesisResult synthesize_with(const CriterionOps<Model>& criterion, const SynthesisOptions& options) {
-  check_synthesis_options<Model>(options);
-  const auto t0 = std::chrono::steady_clock::now();
+struct MultistartStarts {
+  const CriterionOps<Model>& criterion;
+  const SynthesisOptions& options;
   // --starts forces a count; otherwise the criterion's default is a cap and the stopping rule may
   // end the run sooner.
-  const bool forced = options.starts > 0;
-  const std::optional<Program> rounded = rounded_start<Model>(criterion, options);
-  const bool rounding_starts =
-      rounded && asks_for_rounding_starts(ModelKind(kModelIndex<Model>), criterion_name(*criterion.kind));
-  const int cap = forced            ? options.starts
-                  : rounding_starts ? std::min(kRoundingStarts, criterion.default_starts(options.positions))
-                                    : criterion.default_starts(options.positions);
-  const StoppingRule rule;
-  const int workers = thread_count(options.threads);
+  bool forced = false;
+  std::optional<Program> rounded;
+  bool rounding_starts = false;
+  int cap = 0;
   // Ipopt from a rounding converged in 12-39 iterations (cubic12's S at N = 49, 61, 100, 150); the rare
   // start that wanders (2 of 40 at N = 150, 300 iterations, 11 s each, ending at 27.31 and 66.3) is
   // abandoned sooner.
   LocalOptions rounding_polish;
-  rounding_polish.max_iterations = kRoundingIterations;
-  const auto start_at = [&](int k) {
+
+  MultistartStarts(const CriterionOps<Model>& c, const SynthesisOptions& o)
+      : criterion(c), options(o), forced(o.starts > 0), rounded(rounded_start<Model>(c, o)) {
+    rounding_starts = rounded && asks_for_rounding_starts(ModelKind(kModelIndex<Model>), criterion_name(*c.kind));
+    cap = forced            ? o.starts
+          : rounding_starts ? std::min(kRoundingStarts, c.default_starts(o.positions))
+                            : c.default_starts(o.positions);
+    rounding_polish.max_iterations = kRoundingIterations;
+  }
+
+  // The size of the first batch (no batch ends the run before the criterion's minimum number of starts,
+  // so the starts up to it run as one batch: the same starts and results, without a wait for the slowest
+  // start of every batch of 8 and two forks each; E at N = 9: 256 starts, 32 batches).
+  int batch_at(int offset) const {
+    if (forced) return cap;
+    const int batch = std::min(StoppingRule{}.batch, cap - offset);
+    return std::max(batch, std::min(cap, criterion.minimum_starts(options.positions)) - offset);
+  }
+
+  // How many starts every run of these options makes, whatever their results: the first batch, unless the
+  // rounded measure runs alone first and may end the run by itself (then none is certain).
+  int certain() const { return rounded && !forced ? 0 : batch_at(0); }
+
+  LocalResult operator()(int k) const {
     if (k == 0 && options.first_start) return local_start<Model>(criterion, *options.first_start, options.local);
     if (k == 0 && rounded) return local_start<Model>(criterion, *rounded, options.local);
     // A model that asks for them (ModelLimit::rounding_starts) starts again from randomised roundings of
@@ -259,18 +280,60 @@ SynthesisResult synthesize_with(const CriterionOps<Model>& criterion, const Synt
     if (kModelIndex < Model >> 0 && criterion.form == CriterionForm::Smooth && criterion.kind && k % 2 == 1)
       start = exchanged_start(*criterion.kind, ModelKind(kModelIndex<Model>), start);
     return local_start<Model>(criterion, start, options.local);
-  };
-  const bool in_processes = starts_need_ipopt<Model>(criterion, options.local, options.positions);
+  }
+
+  // Starts first .. first + count - 1: those options.known_starts holds are taken from it, the others run
+  // in worker processes (the starts call Ipopt) or threads; progress counts from `first`.
+  std::vector<LocalResult> run(int first, int count, const std::function<void(int, int)>& progress) const {
+    const int held = std::clamp(static_cast<int>(options.known_starts.size()) - first, 0, count);
+    std::vector<LocalResult> out(options.known_starts.begin() + first, options.known_starts.begin() + first + held);
+    if (held == count) return out;
+    std::function<void(int, int)> shifted;
+    if (progress) shifted = [&](int done, int) { progress(first + held + done, cap); };
+    const auto task = [&](int k) { return (*this)(first + held + k); };
+    const int workers = thread_count(options.threads);
+    const std::vector<LocalResult> done = starts_need_ipopt<Model>(criterion, options.local, options.positions)
+                                              ? run_in_workers(count - held, workers, options.positions, task, shifted)
+                                              : run_in_threads(count - held, workers, task, shifted);
+    out.insert(out.end(), done.begin(), done.end());
+    return out;
+  }
+};
+
+// Starts first .. first + count - 1 of the multistart of these options, as synthesize_with would run them
+// (compiled once per model).
+template <class Model>
+std::vector<LocalResult> multistart_starts_with(const CriterionOps<Model>& criterion, const SynthesisOptions& options,
+                                                int first, int count) {
+  check_synthesis_options<Model>(options);
+  return MultistartStarts<Model>(criterion, options).run(first, count, {});
+}
+
+template <class Model>
+int certain_starts_with(const CriterionOps<Model>& criterion, const SynthesisOptions& options) {
+  check_synthesis_options<Model>(options);
+  return MultistartStarts<Model>(criterion, options).certain();
+}
+
+// The multistart of one criterion under the model (compiled once per model).
+template <class Model>
+SynthesisResult synthesize_with(const CriterionOps<Model>& criterion, const SynthesisOptions& options) {
+  check_synthesis_options<Model>(options);
+  const auto t0 = std::chrono::steady_clock::now();
+  const MultistartStarts<Model> starts(criterion, options);
+  const int cap = starts.cap;
+  const bool forced = starts.forced;
+  const StoppingRule rule;
+  std::function<void(int, int)> progress;
+  if (options.progress) progress = [&](int done, int) { options.progress(done, cap); };
   std::vector<LocalResult> results;
   std::string stopping = forced ? "forced " + std::to_string(cap) : "cap " + std::to_string(cap);
   const std::optional<double> proven_limit = stated_proven_limit<Model>(criterion);
   bool near_limit = false;
-  if (rounded && !forced) {
+  if (starts.rounded && !forced) {
     // The rounded start alone first: within kNearLimit of the proven limit, it ends the run.
-    std::function<void(int, int)> progress;
-    if (options.progress) progress = [&](int done, int) { options.progress(done, cap); };
     results = run_in_workers(
-        1, 1, options.positions, [&](int) { return start_at(0); }, progress);
+        1, 1, options.positions, [&](int) { return starts(0); }, progress);
     if (proven_limit && results[0].value <= *proven_limit * (1 + kNearLimit)) {
       near_limit = true;
       char text[120];
@@ -281,17 +344,7 @@ SynthesisResult synthesize_with(const CriterionOps<Model>& criterion, const Synt
   }
   while (!near_limit && static_cast<int>(results.size()) < cap) {
     const int offset = static_cast<int>(results.size());
-    int batch = forced ? cap : std::min(rule.batch, cap - offset);
-    // No batch ends the run before the criterion's minimum number of starts, so the starts up to it
-    // run as one batch: the same starts and results, without a wait for the slowest start of every
-    // batch of 8 (E at N = 9: 256 starts, 32 batches) and two forks each.
-    if (!forced) batch = std::max(batch, std::min(cap, criterion.minimum_starts(options.positions)) - offset);
-    std::function<void(int, int)> progress;
-    if (options.progress) progress = [&](int done, int) { options.progress(offset + done, cap); };
-    const auto task = [&](int k) { return start_at(offset + k); };
-    const std::vector<LocalResult> done = in_processes
-                                              ? run_in_workers(batch, workers, options.positions, task, progress)
-                                              : run_in_threads(batch, workers, task, progress);
+    const std::vector<LocalResult> done = starts.run(offset, starts.batch_at(offset), progress);
     results.insert(results.end(), done.begin(), done.end());
     const bool enough = static_cast<int>(results.size()) >= criterion.minimum_starts(options.positions);
     if (!forced && proven_limit && enough && static_cast<int>(results.size()) < cap &&
@@ -304,9 +357,9 @@ SynthesisResult synthesize_with(const CriterionOps<Model>& criterion, const Synt
       break;
     }
   }
-  const int starts = static_cast<int>(results.size());
+  const int starts_run = static_cast<int>(results.size());
   SynthesisResult out = best_of_starts(results);
-  out.starts = starts;
+  out.starts = starts_run;
   out.stopping = stopping;
   finish_best<Model>(criterion, options, out);
   count_hits(results, criterion.symmetry, out);
@@ -319,9 +372,12 @@ SynthesisResult synthesize(const SynthesisOptions& options) {
   return synthesize_with<Model>(criterion_ops<C, Model>(), options);
 }
 
-#define SCALCAL_SYNTHESIZE_INSTANCES(prefix, M)                                                    \
-  prefix template LocalResult local_start<M>(const CriterionOps<M>&, const Program&, LocalSolver); \
-  prefix template SynthesisResult synthesize_with<M>(const CriterionOps<M>&, const SynthesisOptions&);
+#define SCALCAL_SYNTHESIZE_INSTANCES(prefix, M)                                                                       \
+  prefix template LocalResult local_start<M>(const CriterionOps<M>&, const Program&, LocalSolver);                    \
+  prefix template SynthesisResult synthesize_with<M>(const CriterionOps<M>&, const SynthesisOptions&);                \
+  prefix template std::vector<LocalResult> multistart_starts_with<M>(const CriterionOps<M>&, const SynthesisOptions&, \
+                                                                     int, int);                                       \
+  prefix template int certain_starts_with<M>(const CriterionOps<M>&, const SynthesisOptions&);
 #define SCALCAL_EXTERN_SYNTHESIZE(M) SCALCAL_SYNTHESIZE_INSTANCES(extern, M)
 SCALCAL_FOR_EACH_SYNTHESIS_MODEL(SCALCAL_EXTERN_SYNTHESIZE)
 #undef SCALCAL_EXTERN_SYNTHESIZE

@@ -79,6 +79,50 @@ TEST(AdaptiveStarts, EForcesItsStartsOnlyWhereTheModelHasATrap) {
   EXPECT_NEAR(evaluate(o.model, axis6.program).value(CriterionKind::E), axis6.value, 1e-9 * axis6.value);
 }
 
+// The starts every run makes whatever their results, which an MPI sweep runs ahead on other ranks: the
+// first batch of 8, all 256 where E has its trap (N = 9, as the test above shows at N = 10 under axis6),
+// --starts' count when forced, none where a rounded optimal measure runs alone first and may end the run.
+TEST(KnownStarts, CertainStartsAreTheFirstBatch) {
+  SynthesisOptions o;
+  o.positions = 30;
+  o.criterion = CriterionKind::D;
+  EXPECT_EQ(certain_starts(o), 8);
+  o.starts = 5;
+  EXPECT_EQ(certain_starts(o), 5);
+  o.starts = 0;
+  o.positions = 9;
+  o.criterion = CriterionKind::E;
+  EXPECT_EQ(certain_starts(o), 256);
+  o.criterion = CriterionKind::S;
+  o.model = *parse_model("cubic12");
+  o.positions = 20;  // cubic12 asks for randomised roundings of its S measure at every N
+  EXPECT_EQ(certain_starts(o), 0);
+  o.starts = 12;
+  EXPECT_EQ(certain_starts(o), 12);
+}
+
+// Starts run in two pieces elsewhere and handed in give the run's own result bit for bit (D at N = 15
+// runs 19 starts to its cap: the known 8 and 11 of its own); and they are taken as they are, not run
+// again: a known start 0 made better than any start can be wins.
+TEST(KnownStarts, AreTakenAsTheRunWouldComputeThem) {
+  SynthesisOptions o;
+  o.positions = 15;
+  o.criterion = CriterionKind::D;
+  const SynthesisResult own = synthesize(o);
+  std::vector<LocalResult> known = multistart_starts(o, 0, 3);
+  const std::vector<LocalResult> rest = multistart_starts(o, 3, 5);
+  known.insert(known.end(), rest.begin(), rest.end());
+  ASSERT_EQ(known.size(), 8u);
+  o.known_starts = known;
+  const SynthesisResult split = synthesize(o);
+  EXPECT_EQ(split.starts, own.starts);
+  EXPECT_EQ(split.value, own.value);
+  EXPECT_EQ(split.hits, own.hits);
+  EXPECT_EQ(split.program.positions, own.program.positions);
+  o.known_starts[0].value = own.value / 2;
+  EXPECT_EQ(synthesize(o).value, own.value / 2);
+}
+
 TEST(SphereLbfgs, ReachesTheDAndALimitsAtLargeN) {
   const double d_limit = 61509375.0 / 4.0, a_limit = 45 + 18 * std::sqrt(2.0);
   for (const int n : {40, 120}) {
