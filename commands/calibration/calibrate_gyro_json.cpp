@@ -87,7 +87,8 @@ void add_scalar(const GyroCalibrateResult& r, Json& j) {
     program["efficiency"] = eff;
     j["program"] = program;
     Json suggested = Json::array();
-    for (const Vec3& x : r.suggested) suggested.push_back(triple(x));
+    // As calibrate's suggestions are written: one object per position (a gyro's has no criterion value).
+    for (const Vec3& x : r.suggested) suggested.push_back(Json{{"position", triple(x)}});
     j["suggested"] = suggested;
   }
   if (r.method == GyroMethod::known_turns) j["motions_skipped"] = r.motions_skipped;

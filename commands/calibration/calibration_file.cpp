@@ -185,9 +185,22 @@ double thermal_condition(CalibrationFile& c) {
   return worst;
 }
 
+// 'linear' repeats what the model implies (cubic12's correction is not a matrix); a file that says otherwise
+// was edited by hand or not written by calibrate, and which of the two to believe is not ours to guess.
+void check_linear(const Json& d, const std::string& file, const CalibrationFile& c) {
+  if (!d.contains("linear")) return;
+  if (!d["linear"].is_boolean()) throw InputError(file, 0, "'linear' must be true or false");
+  if (d["linear"].get<bool>() == c.nonlinear)
+    throw InputError(file, 0,
+                     std::string("'linear' is ") + (c.nonlinear ? "true" : "false") + " but " +
+                         (c.model.empty() ? std::string("the file names no model") : "model " + c.model) +
+                         (c.nonlinear ? " corrects nonlinearly" : " corrects by a matrix"));
+}
+
 // The offset and matrix, and the matrix's condition.
 double read_correction(const Json& d, const std::string& file, CalibrationFile& c) {
   if (c.thermal) return thermal_condition(c);
+  check_linear(d, file, c);
   if (!d.contains("offset") || (!d.contains("matrix") && !c.nonlinear))
     throw InputError(file, 0,
                      words("needs the keys 'offset' and 'matrix' (write it with `scalcal calibrate ... {out FILE}`)"));

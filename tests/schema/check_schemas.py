@@ -39,7 +39,7 @@ for c in commands:
     except jsonschema.SchemaError as e:
         failures.append(f"schema {c} is not a valid draft 2020-12 schema: {e.message}")
 # A build without plots (SCALCAL_BUILD_PLOTS=OFF) has no `plot` and `reproduce`; their schemas stay published.
-extra = sorted(set(f[:-5] for f in os.listdir(os.path.join(source, "docs", "schema"))) - set(commands)
+extra = sorted(set(f[:-5] for f in os.listdir(os.path.join(source, "docs", "schema")) if f.endswith(".json")) - set(commands)
                - {"plot", "reproduce"})
 if extra:
     failures.append(f"docs/schema/ has schemas of no command: {extra}")
