@@ -28,22 +28,6 @@ Json parameters_json(const CalibrateResult& r, const Eigen::VectorXd& values) {
   return j;
 }
 
-// Each parameter's value in the reported units: bias in file units, scale deviation relative to
-// the nominal gain, non-orthogonality in rad, cubic as c |I|.
-Eigen::VectorXd reported_values(const CalibrateResult& r) {
-  const AnyUnitsCalibration& a = r.fit;
-  const std::vector<int> index = meter_indices(r.model);
-  Eigen::VectorXd v(static_cast<Eigen::Index>(index.size()));
-  for (std::size_t k = 0; k < index.size(); ++k) {
-    const int m = index[k];
-    v(static_cast<Eigen::Index>(k)) = m < 3   ? a.correction.offset(m)
-                                      : m < 6 ? a.scale_deviation(m - 3)
-                                      : m < 9 ? a.correction.nonorthogonality(m - 6)
-                                              : a.estimate.X(static_cast<Eigen::Index>(k));
-  }
-  return v;
-}
-
 Json std_from(const CalibrateResult& r) {
   const AnyUnitsCalibration& a = r.fit;
   Json j = Json::object();
@@ -201,7 +185,7 @@ Json to_json(const CalibrateResult& r) {
          {"bias_std", triple(a.bias_std)},
          {"scale_deviation_std", triple(a.scale_deviation_std)},
          {"nonorthogonality_std", triple(a.nonorthogonality_std)},
-         {"parameters", parameters_json(r, reported_values(r))},
+         {"parameters", parameters_json(r, reported_values(r.fit))},
          {"predicted_std", parameters_json(r, a.predicted_std)},
          {"achieved_std", parameters_json(r, a.achieved_std)},
          {"model_std", a.model_std.size() ? parameters_json(r, a.model_std) : Json()},

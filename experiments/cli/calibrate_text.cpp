@@ -67,15 +67,13 @@ void parameters(const CalibrateResult& r, std::ostream& t) {
   const auto& a = r.fit;
   const auto& names = r.program.evaluation.parameter_names;
   const std::vector<int> index = meter_indices(r.model);
+  const Eigen::VectorXd values = reported_values(a);
   const bool small_dof = a.dof > 0 && a.dof < 5;
   t << std::setprecision(6);
   for (std::size_t k = 0; k < names.size(); ++k) {
     const auto i = static_cast<Eigen::Index>(k);
-    const int m = index[k];
-    const double v = m < 3   ? a.correction.offset(m)
-                     : m < 6 ? a.scale_deviation(m - 3)
-                     : m < 9 ? a.correction.nonorthogonality(m - 6)
-                             : a.estimate.X(i);
+    const ParameterGroup group = ModelMeter::kParameters[static_cast<std::size_t>(index[k])].group;
+    const double v = values(i);
     const double p = a.predicted_std(i), q = a.achieved_std(i), s = a.standard_error(i);
     t << "  " << std::left << std::setw(11) << names[k] << std::right << std::setw(14) << v;
     if (std::isfinite(s)) {
@@ -90,7 +88,11 @@ void parameters(const CalibrateResult& r, std::ostream& t) {
         << ")";
       if (small_dof) t << "  95 %: +- " << or_na(r.t95 * s, 3);
     }
-    t << (m < 3 ? "  file units" : m < 6 ? "  of the nominal gain" : m < 9 ? "  rad" : "  c |I|") << "\n";
+    t << (group == ParameterGroup::bias      ? "  file units"
+          : group == ParameterGroup::scale   ? "  of the nominal gain"
+          : group == ParameterGroup::nonorth ? "  rad"
+                                             : "  c |I|")
+      << "\n";
   }
   t << "gain (file units per "
     << (r.request.magnitude == "auto" ? "unit field: the field as each axis sees it" : "physical unit") << "):";

@@ -32,19 +32,6 @@ double median_modulus_ratio(const std::vector<PositionSamples>& data, double mag
   return r[r.size() / 2];
 }
 
-bool has_meter_parameter(const std::vector<int>& index, int meter_parameter) {
-  return std::find(index.begin(), index.end(), meter_parameter) != index.end();
-}
-
-// The model's positions of the meter parameters first..first+2 (bias 0, scale 3), or empty.
-std::vector<int> block_of(const std::vector<int>& index, int first) {
-  std::vector<int> out;
-  for (int m = first; m < first + 3; ++m)
-    for (std::size_t k = 0; k < index.size(); ++k)
-      if (index[k] == m) out.push_back(static_cast<int>(k));
-  return out.size() == 3 ? out : std::vector<int>{};
-}
-
 Mat3 block(const Eigen::MatrixXd& cov, const std::vector<int>& at) {
   Mat3 b;
   for (int i = 0; i < 3; ++i)
@@ -57,12 +44,12 @@ Mat3 block(const Eigen::MatrixXd& cov, const std::vector<int>& at) {
 // map), scale deviations relative to their geometric mean when the start set the nominal gain.
 Eigen::VectorXd reported_std(const Eigen::MatrixXd& cov, const std::vector<int>& index, const AnyUnitsCalibration& a) {
   Eigen::VectorXd out = cov.diagonal().cwiseMax(0.0).cwiseSqrt();
-  if (const auto b = block_of(index, 0); !b.empty()) {
+  if (const auto b = meter_group(index, ParameterGroup::bias); !b.empty()) {
     const Mat3 T_inverse = a.started ? Mat3(a.start.matrix.inverse()) : Mat3::Identity();
     const Mat3 c = a.magnitude * a.magnitude * T_inverse * block(cov, b) * T_inverse.transpose();
     for (int i = 0; i < 3; ++i) out(b[static_cast<std::size_t>(i)]) = std::sqrt(std::max(c(i, i), 0.0));
   }
-  if (const auto s = block_of(index, 3); !s.empty() && a.started) {
+  if (const auto s = meter_group(index, ParameterGroup::scale); !s.empty() && a.started) {
     const Mat3 P = Mat3::Identity() - Mat3::Constant(1.0 / 3);
     const Mat3 c = P * block(cov, s) * P.transpose();
     for (int i = 0; i < 3; ++i) out(s[static_cast<std::size_t>(i)]) = std::sqrt(std::max(c(i, i), 0.0));
@@ -87,14 +74,14 @@ std::vector<PositionSamples> started_data(const std::string& file, const std::ve
         "the measured modulus is " + std::to_string(ratio) +
             words(" times {magnitude}; the projection modulus needs data in the field's units (use the norm "
                   "modulus, which starts from an ellipsoid fit in any units)"));
-  if (has_meter_parameter(index, 9))
+  if (!corrects_linearly(index))
     throw InputError(file, 0,
                      "the measured modulus is " + std::to_string(ratio) + words(" times {magnitude}: {model} ") + name +
                          " calibrates data in the field's units only (its cubic term is relative to |I|); the linear "
                          "models start from an ellipsoid fit in any units");
-  const EllipsoidShape shape = has_meter_parameter(index, 6)   ? EllipsoidShape::general
-                               : has_meter_parameter(index, 3) ? EllipsoidShape::axis_aligned
-                                                               : EllipsoidShape::sphere;
+  const EllipsoidShape shape = has_meter_group(index, ParameterGroup::nonorth) ? EllipsoidShape::general
+                               : has_meter_group(index, ParameterGroup::scale) ? EllipsoidShape::axis_aligned
+                                                                               : EllipsoidShape::sphere;
   std::vector<Vec3> means;
   for (const auto& p : data) means.push_back(p.mean());
   const auto start = fit_ellipsoid(means, out.magnitude, shape);
@@ -152,7 +139,7 @@ double larger(double p, double a) { return std::isnan(p) ? a : std::isnan(a) ? p
 // var = 1^T C 1 / 9. Each the larger of the two covariances given (empty: not estimable).
 void gain_errors(AnyUnitsCalibration& out, const std::vector<int>& index, const Eigen::MatrixXd& predicted,
                  const Eigen::MatrixXd& achieved) {
-  const auto sb = block_of(index, 3);
+  const auto sb = meter_group(index, ParameterGroup::scale);
   if (sb.empty()) return;
   const auto gain_std = [&](const Eigen::MatrixXd& cov) {
     if (cov.size() == 0) return Vec3(Vec3::Constant(NAN));
@@ -182,18 +169,33 @@ void assign_errors(AnyUnitsCalibration& out, const Eigen::MatrixXd& predicted, c
       model.size() ? out.model_std
                    : out.predicted_std.binaryExpr(out.achieved_std, [](double p, double a) { return larger(p, a); });
   for (Eigen::Index k = 0; k < P; ++k) {
-    const int m = index[static_cast<std::size_t>(k)];
-    if (m < 3)
-      out.bias_std(m) = out.standard_error(k);
-    else if (m < 6)
-      out.scale_deviation_std(m - 3) = out.standard_error(k);
-    else if (m < 9)
-      out.nonorthogonality_std(m - 6) = out.standard_error(k);
+    const ModelMeter::Parameter& m =
+        ModelMeter::kParameters[static_cast<std::size_t>(index[static_cast<std::size_t>(k)])];
+    if (m.group == ParameterGroup::bias)
+      out.bias_std(m.axis) = out.standard_error(k);
+    else if (m.group == ParameterGroup::scale)
+      out.scale_deviation_std(m.axis) = out.standard_error(k);
+    else if (m.group == ParameterGroup::nonorth)
+      out.nonorthogonality_std(m.axis) = out.standard_error(k);
   }
   if (model.size())
     gain_errors(out, index, model, Eigen::MatrixXd());
   else
     gain_errors(out, index, predicted, achieved);
+}
+
+Eigen::VectorXd reported_values(const AnyUnitsCalibration& a) {
+  const std::vector<int> index = meter_indices(a.model);
+  Eigen::VectorXd v(static_cast<Eigen::Index>(index.size()));
+  for (std::size_t k = 0; k < index.size(); ++k) {
+    const ModelMeter::Parameter& m = ModelMeter::kParameters[static_cast<std::size_t>(index[k])];
+    const auto i = static_cast<Eigen::Index>(k);
+    v(i) = m.group == ParameterGroup::bias      ? a.correction.offset(m.axis)
+           : m.group == ParameterGroup::scale   ? a.scale_deviation(m.axis)
+           : m.group == ParameterGroup::nonorth ? a.correction.nonorthogonality(m.axis)
+                                                : a.estimate.X(i);
+  }
+  return v;
 }
 
 AnyUnitsCalibration calibrate_any_units(const std::string& file, const std::vector<PositionSamples>& data,
@@ -219,7 +221,7 @@ AnyUnitsCalibration calibrate_any_units(const std::string& file, const std::vect
   co.weight_by_samples = options.weight_by_samples;
   out.estimate = calibrate_model(options.model, y, co);
   const ModelCalibration& r = out.estimate;
-  out.linear = r.meter.cubic.isZero() && !has_meter_parameter(index, 9);
+  out.linear = corrects_linearly(index);
   compose(file, out);
   if (!options.sample_noise.isZero()) {
     const Mat3 S = out.started ? Mat3(out.start.matrix * options.sample_noise * out.start.matrix.transpose())

@@ -87,6 +87,10 @@ struct AnyUnitsCalibration {
   Eigen::MatrixXd covariance;
 };
 
+// Each of the model's parameters (model order) in the reported units, by its group in the meter: bias in file
+// units, scale deviation relative to the nominal gain, non-orthogonality in rad, cubic as c |I|.
+Eigen::VectorXd reported_values(const AnyUnitsCalibration& fit);
+
 // Throws InputError (file, 0, reason): fewer positions than parameters, no start (no ellipsoid
 // through the means), the projection modulus or cubic12 on data not in the field's units, a
 // rank-deficient or ill-conditioned layout (beyond kIllConditioned), a degenerate correction.

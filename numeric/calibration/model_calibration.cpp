@@ -47,17 +47,28 @@ ModelMeter ModelMeter::from_parameters(const Vec12& X, double magnitude) {
 
 std::vector<int> meter_indices(ModelKind model) {
   return visit_model(model, [&](auto M) {
-    using Model = decltype(M);
-    std::vector<int> out;
-    for (std::string_view name : Model::parameter_names) {
-      int k = 0;
-      while (k < 12 && kMeterParameterNames[static_cast<std::size_t>(k)] != name) ++k;
-      if (k == 12)
-        throw std::invalid_argument("model " + std::string(Model::name) + ": the meter model has no parameter '" +
-                                    std::string(name) + "'");
-      out.push_back(k);
-    }
-    return out;
+    constexpr auto index = meter_index_of<decltype(M)>();
+    return std::vector<int>(index.begin(), index.end());
+  });
+}
+
+std::vector<int> meter_group(const std::vector<int>& index, ParameterGroup g) {
+  std::vector<int> out(3, -1);
+  for (std::size_t k = 0; k < index.size(); ++k) {
+    const ModelMeter::Parameter& p = ModelMeter::kParameters[static_cast<std::size_t>(index[k])];
+    if (p.group == g) out[static_cast<std::size_t>(p.axis)] = static_cast<int>(k);
+  }
+  return std::count(out.begin(), out.end(), -1) == 0 ? out : std::vector<int>{};
+}
+
+bool has_meter_group(const std::vector<int>& index, ParameterGroup g) {
+  return std::any_of(index.begin(), index.end(),
+                     [g](int m) { return ModelMeter::kParameters[static_cast<std::size_t>(m)].group == g; });
+}
+
+bool corrects_linearly(const std::vector<int>& index) {
+  return std::all_of(index.begin(), index.end(), [](int m) {
+    return ModelMeter::linear_group(ModelMeter::kParameters[static_cast<std::size_t>(m)].group);
   });
 }
 
