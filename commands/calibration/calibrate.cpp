@@ -38,13 +38,13 @@ std::string not_estimated_text(ModelKind model) {
 // otherwise), or the richest the layout carries.
 void choose(const CalibrateRequest& q, const std::vector<PositionSamples>& data, double magnitude,
             CalibrateResult& out) {
-  const auto directions = layout_directions(data, magnitude, q.magnitude == "auto", q.modulus);
+  const auto directions = layout_directions(data, magnitude, !q.magnitude, q.modulus);
   if (!directions)
     throw InputError(q.file, 0,
                      "no ellipsoid passes near the " + std::to_string(data.size()) +
                          " positions' means: they are too few or too flat to judge the layout");
   const Program layout{*directions};
-  const bool gain = gain_estimated(data, magnitude, q.magnitude == "auto", q.modulus);
+  const bool gain = gain_estimated(data, magnitude, !q.magnitude, q.modulus);
   const auto automatic = choose_model(layout, gain);
   if (!q.model) {
     if (!automatic)
@@ -264,9 +264,7 @@ void fit_model(const CalibrateRequest& q, CalibrationInput& in, AnyUnitsOptions 
 }
 
 // Whether the fit estimated the field's gain with the offsets (judge_layout's gain_estimated).
-bool gain_fitted(const CalibrateRequest& q, const CalibrateResult& out) {
-  return q.magnitude == "auto" || out.fit.started;
-}
+bool gain_fitted(const CalibrateRequest& q, const CalibrateResult& out) { return !q.magnitude || out.fit.started; }
 
 // --model auto judged the layout at its starting ellipsoid's directions; after the fit it is judged
 // again at the fitted ones. A model that is not identified there, or that did not converge where a
@@ -318,7 +316,7 @@ void fit_with_fallback(const CalibrateRequest& q, CalibrationInput& in, const An
 // The calibration's units: as given (--units), or where the data and the Earth fix them.
 void resolve_units(const CalibrateRequest& q, CalibrateResult& out) {
   CalibrationUnits& u = out.units;
-  const bool magnitude_auto = q.magnitude == "auto";
+  const bool magnitude_auto = !q.magnitude;
   u.unit_modulus = magnitude_auto;
   u.field_strength = out.field_strength;
   if (!q.raw_units.empty()) {
@@ -329,11 +327,11 @@ void resolve_units(const CalibrateRequest& q, CalibrateResult& out) {
     u.physical = parse_unit(q.physical_units);
     out.units_reason = words("given ({units})");
   } else if (!magnitude_auto && out.instrument) {
-    u.physical = unit_of_earth_magnitude(*out.instrument, std::stod(q.magnitude));
+    u.physical = unit_of_earth_magnitude(*out.instrument, *q.magnitude);
     if (u.physical)
-      out.units_reason = "physical units " + std::string(u.physical->name) + words(" from {magnitude} ") + q.magnitude +
-                         " (the Earth's " + (*out.instrument == Instrument::accel ? "gravity" : "field") +
-                         " in those units)";
+      out.units_reason = "physical units " + std::string(u.physical->name) + words(" from {magnitude} ") +
+                         magnitude_text(q.magnitude) + " (the Earth's " +
+                         (*out.instrument == Instrument::accel ? "gravity" : "field") + " in those units)";
   }
   if (!u.raw && !out.raw_counts && !out.fit.started && u.physical) {
     u.raw = u.physical;
@@ -364,8 +362,8 @@ void thermal_units(const CalibrateRequest& q, double magnitude, CalibrateResult&
     r.units.raw = r.units.physical = unit_of_earth_magnitude(*q.instrument, magnitude);
     if (r.units.raw)
       r.units_reason = "raw and physical units " + std::string(r.units.raw->name) + words(" from {magnitude} ") +
-                       q.magnitude + " (the Earth's " + (*q.instrument == Instrument::accel ? "gravity" : "field") +
-                       " in those units)";
+                       magnitude_text(q.magnitude) + " (the Earth's " +
+                       (*q.instrument == Instrument::accel ? "gravity" : "field") + " in those units)";
   }
 }
 
@@ -380,9 +378,9 @@ CalibrateResult calibrate(const CalibrateRequest& q, CalibrationInput in, const 
   out.warnings.insert(out.warnings.end(), in.warnings.begin(), in.warnings.end());
   out.instrument = in.instrument;
   out.instrument_reason = in.instrument_reason;
-  const bool magnitude_auto = q.magnitude == "auto";
-  const double magnitude = magnitude_auto ? 1.0 : std::stod(q.magnitude);
-  out.weight_by_samples = q.weights == "samples" || (q.weights == "auto" && !in.log);
+  const bool magnitude_auto = !q.magnitude;
+  const double magnitude = q.magnitude.value_or(1.0);
+  out.weight_by_samples = q.weights ? *q.weights == PositionWeights::samples : !in.log;
   if (!q.keep_outliers && !in.every_sample) out.excluded = exclude_outlier_samples(in.data);
   if (!out.excluded.empty()) out.warnings.push_back({q.file, outlier_warning(out.excluded)});
   if (progress) progress("model", 0, 3);
@@ -428,9 +426,7 @@ CalibrateResult calibrate(const CalibrateRequest& q, CalibrationInput in, const 
 
 CalibrateResult calibrate(const CalibrateRequest& q, const Progress& progress) {
   if (q.thermal) {
-    char* end = nullptr;
-    const double magnitude = std::strtod(q.magnitude.c_str(), &end);
-    if (q.magnitude == "auto" || *end != '\0')
+    if (!q.magnitude)
       throw UsageError(
           words("calibrate: a thermal model needs {magnitude M}, the field's modulus in the log's units (not auto)"));
     CalibrateResult r;
@@ -438,9 +434,9 @@ CalibrateResult calibrate(const CalibrateRequest& q, const Progress& progress) {
     r.request = q;
     const CsvTable table = q.table ? *q.table : read_csv(q.file);
     r.thermal = std::make_shared<ThermalCalibration>(
-        calibrate_thermal(q.file, table, *q.thermal, q.temperature, magnitude, q.intervals));
+        calibrate_thermal(q.file, table, *q.thermal, q.temperature, *q.magnitude, q.intervals));
     r.warnings = r.thermal->warnings;
-    thermal_units(q, magnitude, r);
+    thermal_units(q, *q.magnitude, r);
     return r;
   }
   check_calibrate_request(q);

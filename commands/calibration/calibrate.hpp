@@ -33,16 +33,20 @@ namespace scalcal::commands {
 inline constexpr int kMaxSuggestions = 100;  // positions to suggest adding, at most
 inline constexpr double kOutlierSigmas = 5;  // a position's standardised residual above this is flagged
 
+// --weights: each position's weight in the least squares, by its samples (the paper's bench data) or one each (a
+// raw log's poses: how long the meter was held still says nothing about a position's worth).
+enum class PositionWeights { samples, positions };
+
 struct CalibrateRequest {
-  std::string file;                // the data's name in messages (and the file calibrate(request) reads)
-  std::string magnitude = "auto";  // |I| as the user wrote it (a positive number), or "auto"
+  std::string file;                 // the data's name in messages (and the file calibrate(request) reads)
+  std::optional<double> magnitude;  // |I| in physical units; none: auto (the correction maps the field to modulus 1)
   Modulus modulus = Modulus::norm;
-  std::string format = "auto";      // of the file: auto, csv or text
-  double rate = 0;                  // Hz: a raw log whose row k is at k / rate (0: its time column)
-  StaticIntervalOptions intervals;  // for a raw log
-  bool intervals_given = false;     // --window, --threshold-factor, --min-interval or --still given: no choosing
-  int chunk_rows = 0;               // --chunk: a raw log taken in chunks of this many rows (0: whole)
-  std::string weights = "auto";     // auto, samples or positions
+  LogFormat format = LogFormat::automatic;  // of the file
+  double rate = 0;                          // Hz: a raw log whose row k is at k / rate (0: its time column)
+  StaticIntervalOptions intervals;          // for a raw log
+  bool intervals_given = false;            // --window, --threshold-factor, --min-interval or --still given: no choosing
+  int chunk_rows = 0;                      // --chunk: a raw log taken in chunks of this many rows (0: whole)
+  std::optional<PositionWeights> weights;  // none: auto (a raw log's positions count once each, bench data by samples)
   bool keep_outliers = false;
   int suggest = 3;  // positions to suggest adding
   CriterionKind criterion = CriterionKind::D;
@@ -150,8 +154,11 @@ struct CalibrateResult {
   int status() const { return converged() ? 0 : 1; }  // the CLI's exit status
 };
 
-// Why a --magnitude text is refused ("" when it is a positive number or "auto").
+// Why a --magnitude text is refused ("" when it is a positive number or "auto"), and the value it gives (none: auto).
 std::string magnitude_problem(const std::string& magnitude);
+std::optional<double> magnitude_value(const std::string& magnitude);
+// A magnitude as the reports quote it: the shortest text that reads back to it, or "auto".
+std::string magnitude_text(const std::optional<double>& magnitude);
 // UsageError for a bad magnitude or options the model does not take (checked before any file is read).
 void check_calibrate_request(const CalibrateRequest& request);
 // From request.file: grouped samples (strict CSV) or a raw log (a time column, a text log, or
@@ -171,7 +178,7 @@ const CommandTable& calibrate_table();
 CalibrateRequest calibrate_request(const Values& values);
 // The raw log's options (--format, --rate, --still, --window, --threshold-factor, --min-interval), read
 // alike for an accelerometer's log and a gyro's (calibrate_gyro_request).
-void read_log_options(const Values& values, std::string& format, double& rate, StaticIntervalOptions& intervals);
+void read_log_options(const Values& values, LogFormat& format, double& rate, StaticIntervalOptions& intervals);
 
 // UsageError: an explicit model the layout cannot carry (naming the parameters and the model that
 // would work). InputError: data that cannot be calibrated, or a fit that is not finite.

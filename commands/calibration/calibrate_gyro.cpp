@@ -204,9 +204,11 @@ void known_turns(const GyroCalibrateRequest& q, const RawLog& log, GyroCalibrate
 }
 
 void hand_rotations(const GyroCalibrateRequest& q, const RawLog& log, GyroCalibrateResult& r) {
+  if (const std::string problem = magnitude_problem(q.accelerometer_magnitude); !problem.empty())
+    throw UsageError(words("calibrate: {accelerometer-magnitude} ") + problem);
   CalibrateRequest a;
   a.file = q.accelerometer;
-  a.magnitude = q.accelerometer_magnitude;
+  a.magnitude = magnitude_value(q.accelerometer_magnitude);
   a.format = q.format;
   a.rate = q.rate;
   a.intervals = q.intervals;
@@ -259,11 +261,7 @@ GyroCalibrateResult calibrate_gyro(const GyroCalibrateRequest& q) {
   r.method = gyro_method(q);
   if (r.request.physical_units.empty() && r.method != GyroMethod::rate_table) r.request.physical_units = "rad/s";
   r.warnings = q.warnings;
-  const RawLog log = read_raw_log(q.file,
-                                  q.format == "csv"    ? LogFormat::csv
-                                  : q.format == "text" ? LogFormat::text
-                                                       : LogFormat::automatic,
-                                  q.rate);
+  const RawLog log = read_raw_log(q.file, q.format, q.rate);
   r.rows = log.size();
   if (r.method == GyroMethod::rate_table) rate_table(q, log, r);
   if (r.method == GyroMethod::known_turns) known_turns(q, log, r);

@@ -24,8 +24,8 @@ enum class GyroMethod { rate_table, known_turns, hand_rotations };
 const char* gyro_method_name(GyroMethod m);
 
 struct GyroCalibrateRequest {
-  std::string file;                 // the gyro's log
-  std::string format = "auto";      // auto, csv or text
+  std::string file;  // the gyro's log
+  LogFormat format = LogFormat::automatic;
   double rate = 0;                  // Hz: row k at k / rate (0: the time column)
   StaticIntervalOptions intervals;  // rests, constant-rate segments (and the accelerometer's poses)
   std::string magnitude;            // rate table: the table's rate (a number), auto, or column:NAME (signed, per row)

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "commands/calibration/calibrate.hpp"
+#include "commands/core/common_options.hpp"
 #include "commands/core/usage_error.hpp"
 #include "numeric/calibration/calibration_stream.hpp"
 #include "numeric/calibration/measurements_csv.hpp"
@@ -90,7 +91,7 @@ CalibrationInput read_calibration_input(const CalibrateRequest& o) {
   if (o.table) return input_from_table(o, *o.table);
   const bool need_nominal = o.modulus == Modulus::projection;
   const std::string text = read_text_file(o.file);
-  if (o.format == "text" || (o.format == "auto" && looks_like_text_log(text)))
+  if (o.format == LogFormat::text || (o.format == LogFormat::automatic && looks_like_text_log(text)))
     return calibration_input(parse_raw_log(text, o.file, LogFormat::text, o.rate), o);
   TableFormat lenient;  // a raw log's dropouts are counted, not refused
   lenient.nonfinite_allowed = true;
@@ -126,16 +127,16 @@ void decide_instrument(const CalibrateRequest& o, CalibrationInput& in) {
   if (o.instrument) {
     in.instrument = o.instrument;
     in.instrument_reason = "given";
-  } else if (o.magnitude == "auto") {
+  } else if (!o.magnitude) {
     in.instrument = Instrument::mag;
     in.instrument_reason = words("a field of unknown strength ({magnitude auto})");
   } else {
-    const double magnitude = std::stod(o.magnitude);
+    const double magnitude = *o.magnitude;
     for (Instrument i : {Instrument::accel, Instrument::mag})
       if (unit_of_earth_magnitude(i, magnitude)) {
         in.instrument = i;
         in.instrument_reason = std::string(i == Instrument::accel ? "gravity" : "the geomagnetic field") +
-                               words("'s strength ({magnitude} ") + o.magnitude + ")";
+                               words("'s strength ({magnitude} ") + magnitude_text(o.magnitude) + ")";
       }
     if (!in.instrument && tumbling) {
       in.instrument = Instrument::mag;
@@ -179,9 +180,9 @@ std::optional<double> detection_score(const RawLog& log, const IntervalDetection
   if (static_cast<int>(d.intervals.size()) < model_parameters(model) + 1) return std::nullopt;
   AnyUnitsOptions ao;
   ao.modulus = o.modulus;
-  ao.magnitude_auto = o.magnitude == "auto";
-  ao.magnitude = ao.magnitude_auto ? 1.0 : std::stod(o.magnitude);
-  ao.weight_by_samples = o.weights == "samples";
+  ao.magnitude_auto = !o.magnitude;
+  ao.magnitude = o.magnitude.value_or(1.0);
+  ao.weight_by_samples = o.weights == PositionWeights::samples;
   ao.model = model;
   try {
     const AnyUnitsCalibration fit = calibrate_any_units(o.file, interval_positions(log, d), ao);
@@ -311,6 +312,15 @@ CalibrationInput input_of(const CalibrationStream& stream, const CalibrateReques
 
 }  // namespace
 
+std::optional<double> magnitude_value(const std::string& s) {
+  if (s == "auto") return std::nullopt;
+  return std::stod(s);
+}
+
+std::string magnitude_text(const std::optional<double>& magnitude) {
+  return magnitude ? shortest_text(*magnitude) : "auto";
+}
+
 std::string magnitude_problem(const std::string& s) {
   if (s == "auto") return "";
   try {
@@ -323,9 +333,10 @@ std::string magnitude_problem(const std::string& s) {
 }
 
 void check_calibrate_request(const CalibrateRequest& o) {
-  if (const std::string problem = magnitude_problem(o.magnitude); !problem.empty())
-    throw UsageError(words("calibrate: {magnitude} ") + problem);
-  if (o.model && model_name(*o.model) == "cubic12" && o.magnitude == "auto")
+  if (o.magnitude && !(std::isfinite(*o.magnitude) && *o.magnitude > 0))
+    throw UsageError(words("calibrate: {magnitude} must be a positive number or auto, got '") +
+                     magnitude_text(o.magnitude) + "'");
+  if (o.model && model_name(*o.model) == "cubic12" && !o.magnitude)
     throw UsageError(
         words("calibrate: {magnitude auto} does not work with {model cubic12}: its cubic term is relative to "
               "|I|, which would be one more unknown; give |I|"));

@@ -212,7 +212,7 @@ Json to_json(const CalibrateResult& r) {
          {"positions", e.positions},
          {"samples", e.samples},
          {"modulus", r.request.modulus == Modulus::norm ? "norm" : "projection"},
-         {"magnitude", r.request.magnitude == "auto" ? Json("auto") : Json(a.magnitude)},
+         {"magnitude", r.request.magnitude ? Json(a.magnitude) : Json("auto")},
          {"start", a.started ? "ellipsoid" : "none"},
          {"weights", r.weight_by_samples ? "samples" : "positions"}};
   Json lines = Json::array();

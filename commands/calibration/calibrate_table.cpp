@@ -47,7 +47,7 @@ void read_units(const Values& v, CalibrateRequest& q) {
     throw UsageError(words("{units}: ") + q.physical_units + " is not a unit of " +
                      std::string(quantity_name(quantity_of(*q.instrument))) + ", which a " +
                      std::string(instrument_noun(*q.instrument)) + " measures");
-  if (q.magnitude == "auto")
+  if (!q.magnitude)
     throw UsageError(words("{units}: with {magnitude auto} the correction maps the field to modulus 1, not to ") +
                      q.physical_units + words("; give the field's strength as {magnitude} to calibrate in ") +
                      q.physical_units + words(" (the raw units alone: {units} ") + q.raw_units + "," +
@@ -197,8 +197,8 @@ const CommandTable& calibrate_table() {
   return table;
 }
 
-void read_log_options(const Values& v, std::string& format, double& rate, StaticIntervalOptions& intervals) {
-  format = v.text("--format");
+void read_log_options(const Values& v, LogFormat& format, double& rate, StaticIntervalOptions& intervals) {
+  format = log_format_named(v.text("--format"));
   if (v.given("--rate")) rate = v.number("--rate");
   if (v.given("--still")) intervals.still_seconds = v.number("--still");
   intervals.window_seconds = v.number("--window");
@@ -216,15 +216,19 @@ CalibrateRequest calibrate_request(const Values& v) {
               "{accelerometer} instead)"));
   for (const char* o : {"--turn-angle", "--accelerometer", "--accelerometer-magnitude", "--latitude", "--table-axis"})
     if (v.given(o)) throw UsageError(option_word(o) + words(" belongs to {instrument gyro}"));
-  q.magnitude = v.text("--magnitude");
-  if (q.magnitude.rfind("column:", 0) == 0)
+  const std::string magnitude = v.text("--magnitude");
+  if (magnitude.rfind("column:", 0) == 0)
     throw UsageError(words("{magnitude column:NAME} is a rate table's ({instrument gyro})"));
+  if (const std::string problem = magnitude_problem(magnitude); !problem.empty())
+    throw UsageError(words("calibrate: {magnitude} ") + problem);
+  q.magnitude = magnitude_value(magnitude);
   q.modulus = v.text("--modulus") == "projection" ? Modulus::projection : Modulus::norm;
   read_log_options(v, q.format, q.rate, q.intervals);
   if (v.given("--chunk")) q.chunk_rows = static_cast<int>(v.integer("--chunk"));
   q.intervals_given =
       v.given("--window") || v.given("--threshold-factor") || v.given("--min-interval") || v.given("--still");
-  q.weights = v.text("--weights");
+  if (v.text("--weights") != "auto")
+    q.weights = v.text("--weights") == "samples" ? PositionWeights::samples : PositionWeights::positions;
   q.keep_outliers = v.flag("--keep-outliers");
   q.suggest = static_cast<int>(v.integer("--suggest"));
   q.criterion = criterion_of(v);

@@ -31,7 +31,7 @@ CsvTable read_data(const CorrectRequest& q) {
   const std::string text = read_text_file(q.file);
   TableFormat f;
   f.nonfinite_allowed = true;
-  if (q.format == "text" || (q.format == "auto" && looks_like_text_log(text))) {
+  if (q.format == LogFormat::text || (q.format == LogFormat::automatic && looks_like_text_log(text))) {
     f.whitespace = true;
     f.columns = {"t", "ix", "iy", "iz"};
   }
@@ -68,7 +68,7 @@ CorrectRequest correct_request(const Values& v) {
   CorrectRequest q;
   q.calibration = v.text("--calibration");
   q.file = v.text("--measurements");
-  q.format = v.text("--format");
+  q.format = log_format_named(v.text("--format"));
   q.force = v.flag("--force");
   if (const auto it = v.documents.find("--calibration"); it != v.documents.end()) q.calibration_document = it->second;
   if (const auto it = v.tables.find("--measurements"); it != v.tables.end()) q.table = it->second;

@@ -16,14 +16,15 @@
 #include "commands/core/values.hpp"
 #include "commands/core/warning.hpp"
 #include "numeric/calibration/full_correction.hpp"
+#include "numeric/calibration/raw_log.hpp"
 #include "numeric/io/csv_table.hpp"
 
 namespace scalcal::commands {
 
 struct CorrectRequest {
-  std::string calibration;                   // the file written by `calibrate --out`
-  std::string file;                          // the raw data
-  std::string format = "auto";               // auto, csv or text
+  std::string calibration;  // the file written by `calibrate --out`
+  std::string file;         // the raw data
+  LogFormat format = LogFormat::automatic;
   bool force = false;                        // apply a calibration that would be refused, with a warning
   std::optional<Json> calibration_document;  // the calibration given as an object (Python), not read
   std::optional<CsvTable> table;             // the raw data given as columns (Python), not read

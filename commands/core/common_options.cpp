@@ -26,6 +26,10 @@ std::vector<std::string> model_names() {
 
 std::vector<std::string> local_solver_names() { return {"auto", "newton", "lbfgs", "ipopt"}; }
 
+LogFormat log_format_named(const std::string& name) {
+  return name == "text" ? LogFormat::text : name == "csv" ? LogFormat::csv : LogFormat::automatic;
+}
+
 std::string shortest_text(double x) {
   char buffer[32];
   const auto end = std::to_chars(buffer, buffer + sizeof buffer, x).ptr;

@@ -6,6 +6,7 @@
 
 #include "commands/core/option_table.hpp"
 #include "commands/core/values.hpp"
+#include "numeric/calibration/raw_log.hpp"
 #include "numeric/criteria/registry.hpp"
 #include "numeric/model/registry.hpp"
 #include "numeric/synthesis/local_result.hpp"
@@ -19,9 +20,10 @@ inline constexpr IntegerRange kSeeds{0, 1LL << 62}, kStarts{1, 1000000}, kThread
 
 std::vector<std::string> criterion_names();  // the registry's, in its order
 std::vector<std::string> model_names();
-std::vector<std::string> local_solver_names();  // auto, newton, lbfgs, ipopt
-std::string criterion_names_text();             // "D, A, E, S"
-std::string shortest_text(double x);            // the shortest text that reads back to x ("0.5")
+std::vector<std::string> local_solver_names();        // auto, newton, lbfgs, ipopt
+std::string criterion_names_text();                   // "D, A, E, S"
+std::string shortest_text(double x);                  // the shortest text that reads back to x ("0.5")
+LogFormat log_format_named(const std::string& name);  // --format's choice (auto, csv, text)
 
 // --criterion: every registered criterion, with its normalised form in the help ("D = N^9 det K").
 Option criterion_option(const std::string& fallback = "D");

@@ -22,7 +22,8 @@ std::string or_na(double v, int digits = 6) {
 void header(const CalibrateResult& r, std::ostream& t) {
   const auto& a = r.fit;
   t << "scalar calibration of " << r.file << " (modulus "
-    << (r.request.modulus == Modulus::norm ? "norm" : "projection") << ", |I| = " << r.request.magnitude << ")\n";
+    << (r.request.modulus == Modulus::norm ? "norm" : "projection")
+    << ", |I| = " << commands::magnitude_text(r.request.magnitude) << ")\n";
   if (r.instrument) t << "instrument " << instrument_name(*r.instrument) << ": " << r.instrument_reason << "\n";
   if (r.tumbling) {
     const auto& u = *r.tumbling;
@@ -95,7 +96,7 @@ void parameters(const CalibrateResult& r, std::ostream& t) {
       << "\n";
   }
   t << "gain (file units per "
-    << (r.request.magnitude == "auto" ? "unit field: the field as each axis sees it" : "physical unit") << "):";
+    << (!r.request.magnitude ? "unit field: the field as each axis sees it" : "physical unit") << "):";
   for (int i = 0; i < 3; ++i) t << " " << or_na(a.gain(i)) << " +- " << or_na(a.gain_std(i), 3);
   t << "\n";
   if (std::isfinite(r.field_strength))

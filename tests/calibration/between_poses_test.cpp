@@ -72,7 +72,7 @@ TEST_P(HeldOutPose, NinetyFivePercentIntervalsCoverAboutNinetyFivePercent) {
   if (path.empty()) GTEST_SKIP() << log.file << " is in neither data/ nor ../shared/data";
   commands::CalibrateRequest q;
   q.file = path;
-  q.magnitude = log.magnitude;
+  q.magnitude = commands::magnitude_value(log.magnitude);
   q.rate = log.rate;
   q.suggest = 0;
   const commands::CalibrationInput in = commands::read_calibration_input(q);
@@ -80,7 +80,7 @@ TEST_P(HeldOutPose, NinetyFivePercentIntervalsCoverAboutNinetyFivePercent) {
   ASSERT_TRUE(all.converged());
   AnyUnitsOptions o;
   o.magnitude = all.fit.magnitude;
-  o.magnitude_auto = q.magnitude == "auto";
+  o.magnitude_auto = !q.magnitude;
   o.weight_by_samples = all.weight_by_samples;
   o.model = all.model;
   int covered = 0, held = 0;

@@ -30,7 +30,7 @@ constexpr double kSigmas = 4;  // the truth within this many reported standard e
 CalibrateRequest request(const std::string& magnitude) {
   CalibrateRequest q;
   q.file = "simulated";
-  q.magnitude = magnitude;
+  q.magnitude = commands::magnitude_value(magnitude);
   q.suggest = 0;
   return q;
 }

@@ -44,7 +44,7 @@ TEST_P(RealLog, AsGoodAsTheIndependentFit) {
   if (path.empty()) GTEST_SKIP() << fit["file"] << " is in neither data/ nor ../shared/data";
   commands::CalibrateRequest q;
   q.file = path;
-  q.magnitude = fit["magnitude"].is_null() ? "auto" : std::to_string(fit["magnitude"].get<double>());
+  if (!fit["magnitude"].is_null()) q.magnitude = fit["magnitude"].get<double>();
   q.rate = fit["rate"].is_null() ? 0.0 : fit["rate"].get<double>();
   q.suggest = 0;
   q.intervals_given = true;  // the default detection, as the script's
@@ -75,7 +75,7 @@ TEST_P(StreamedRealLog, AsGoodAsTheIndependentFit) {
   for (int chunk : {7, 100}) {
     commands::CalibrateRequest q;
     q.file = path;
-    q.magnitude = fit["magnitude"].is_null() ? "auto" : std::to_string(fit["magnitude"].get<double>());
+    if (!fit["magnitude"].is_null()) q.magnitude = fit["magnitude"].get<double>();
     q.rate = fit["rate"].is_null() ? 0.0 : fit["rate"].get<double>();
     q.suggest = 0;
     q.intervals_given = true;

@@ -262,6 +262,16 @@ std::vector<Case> files_written() {
        },
        E::error,
        {"cal_b.json", "log_a.csv", "another log's calibration"}});
+  // A gyro's accelerometer magnitude that is not a number reached std::stod unchecked ("internal error: stod",
+  // exit 1) until the calibrate request held its magnitude as a number.
+  out.push_back({"GyroAccelerometerMagnitudeText",
+                 [] {
+                   const std::string data = std::string(SCALCAL_SOURCE_DIR) + "/data/";
+                   return "calibrate --instrument gyro --measurements " + quote(data + "xsens_gyro.txt") +
+                          " --accelerometer " + quote(data + "xsens_acc.txt") + " --accelerometer-magnitude xyz";
+                 },
+                 E::error,
+                 {"--accelerometer-magnitude", "positive number or auto", "'xyz'"}});
   return out;
 }
 
