@@ -67,6 +67,9 @@ GyroCalibrateRequest gyro_calibrate_request(const Values& v) {
     if (!model)
       throw UsageError(words("{instrument gyro}: {model} ") + v.text("--model") +
                        " is no gyro model (thermal models are the accelerometer's and magnetometer's)");
+    if (!model_supports(*model, ModelCapability::auto_choice))
+      throw UsageError(words("{instrument gyro}: {model} ") + v.text("--model") + ": a gyro is calibrated under " +
+                       models_supporting(ModelCapability::auto_choice) + " (offsets, gains and non-orthogonality)");
     q.model = *model;
   }
   gyro_method(q);  // refuses a contradictory set of options before any file is read

@@ -85,7 +85,7 @@ LayoutVerdict judge_layout(ModelKind model, const Program& directions, bool gain
 }
 
 std::optional<ModelChoice> choose_model(const Program& directions, bool gain_estimated) {
-  const ModelKind candidates[] = {*parse_model("paper9"), *parse_model("axis6"), *parse_model("bias3")};
+  const std::vector<ModelKind> candidates = auto_choice_models();
   const LayoutVerdict richest = judge_layout(candidates[0], directions, gain_estimated);
   std::ostringstream s;
   s << std::setprecision(3);
@@ -95,12 +95,12 @@ std::optional<ModelChoice> choose_model(const Program& directions, bool gain_est
     ModelChoice c;
     c.model = m;
     if (m == candidates[0]) {
-      s << "the " << directions.size() << " positions identify all " << model_parameters(m)
-        << " parameters of paper9 (condition " << v.condition << ")";
+      s << "the " << directions.size() << " positions identify all " << model_parameters(m) << " parameters of "
+        << model_name(m) << " (condition " << v.condition << ")";
     } else {
-      s << "the " << directions.size() << " positions cannot carry paper9 (" << richest.why << "); " << model_name(m)
-        << " is the richest model they carry (condition " << v.condition << ")";
-      // What the chosen model leaves out of paper9 is what the layout could not identify.
+      s << "the " << directions.size() << " positions cannot carry " << model_name(candidates[0]) << " (" << richest.why
+        << "); " << model_name(m) << " is the richest model they carry (condition " << v.condition << ")";
+      // What the chosen model leaves out of the richest is what the layout could not identify.
       const int P = model_parameters(m);
       const ModelEvaluation full = evaluate(candidates[0], directions);
       for (int k = P; k < full.parameters; ++k)

@@ -8,6 +8,7 @@
 
 #include <Eigen/Dense>
 
+#include "numeric/calibration/model_calibration.hpp"
 #include "numeric/calibration/model_choice.hpp"
 #include "numeric/gyro/grouped_least_squares.hpp"
 #include "numeric/io/input_error.hpp"
@@ -53,29 +54,32 @@ namespace {
 
 using Full = Eigen::Matrix<double, 9, 1>;
 
-// Which of the nine (o, k, gamma) a model frees: paper9 all; axis6 o and k; bias3 o and one gain.
+// Which of the nine (o, k, gamma) a model frees, by its parameters' groups in the meter: the offsets always; a
+// gain per axis with its scale factors, else one gain for the three (bias3: offsets only, so the rate's scale is
+// one unknown); the gammas with its non-orthogonality. paper9 frees 9, axis6 6, bias3 4.
 struct Layout {
   std::string name;
+  bool gains = true, gammas = true;
   int free = 9;
   Full expand(const Eigen::VectorXd& p) const {
     Full x = Full::Zero();
     x.head<3>() = p.head<3>();
-    if (name == "bias3") {
+    if (!gains) {
       x.segment<3>(3).setConstant(p(3));
     } else {
       x.segment<3>(3) = p.segment<3>(3);
-      if (name == "paper9") x.tail<3>() = p.tail<3>();
+      if (gammas) x.tail<3>() = p.tail<3>();
     }
     return x;
   }
   Eigen::VectorXd reduce(const Full& x) const {
     Eigen::VectorXd p(free);
     p.head<3>() = x.head<3>();
-    if (name == "bias3") {
+    if (!gains) {
       p(3) = std::cbrt(x(3) * x(4) * x(5));
     } else {
       p.segment<3>(3) = x.segment<3>(3);
-      if (name == "paper9") p.tail<3>() = x.tail<3>();
+      if (gammas) p.tail<3>() = x.tail<3>();
     }
     return p;
   }
@@ -83,19 +87,34 @@ struct Layout {
   Eigen::MatrixXd map() const {
     Eigen::MatrixXd M = Eigen::MatrixXd::Zero(9, free);
     for (int i = 0; i < 3; ++i) M(i, i) = 1;
-    for (int i = 0; i < 3; ++i) M(3 + i, name == "bias3" ? 3 : 3 + i) = 1;
-    if (name == "paper9")
+    for (int i = 0; i < 3; ++i) M(3 + i, gains ? 3 + i : 3) = 1;
+    if (gammas)
       for (int i = 0; i < 3; ++i) M(6 + i, 6 + i) = 1;
     return M;
   }
 };
 
+// The linear models --model auto chooses among, as "paper9, axis6 and bias3".
+std::string linear_model_names() {
+  const std::vector<ModelKind> models = auto_choice_models();
+  std::string out;
+  for (std::size_t i = 0; i < models.size(); ++i)
+    out += (i == 0 ? "" : i + 1 == models.size() ? " and " : ", ") + std::string(model_name(models[i]));
+  return out;
+}
+
 Layout layout_of(ModelKind model) {
-  const std::string name(model_name(model));
-  if (name == "paper9") return {name, 9};
-  if (name == "axis6") return {name, 6};
-  if (name == "bias3") return {name, 4};
-  throw std::invalid_argument("a gyro's rate table or turns take the models paper9, axis6 and bias3, not " + name);
+  const std::vector<int> index = meter_indices(model);
+  Layout L;
+  L.name = model_name(model);
+  L.gains = has_meter_group(index, ParameterGroup::scale);
+  L.gammas = has_meter_group(index, ParameterGroup::nonorth);
+  const bool offsets = meter_group(index, ParameterGroup::bias).size() == 3;
+  if (!offsets || !corrects_linearly(index) || (L.gammas && !L.gains))
+    throw std::invalid_argument("a gyro's rate table or turns take the models " + linear_model_names() + ", not " +
+                                L.name);
+  L.free = 3 + (L.gains ? 3 : 1) + (L.gammas ? 3 : 0);
+  return L;
 }
 
 Meter meter_of(const Full& x) {
@@ -243,12 +262,13 @@ namespace {
 // A model's design at the items' directions, with the rests' rows when there are rests (they observe
 // the three offsets directly, as much as the items together): the rows (x, y, z, x^2, ..., zx) of
 // paper9, (x, y, z, x^2, y^2, z^2) of axis6, (x, y, z, 1) of the gyro's bias3 (offsets and one gain).
-Eigen::MatrixXd gyro_information(const std::string& model, const std::vector<Vec3>& eta, bool rests) {
-  const int P = model == "paper9" ? 9 : model == "axis6" ? 6 : 4;
+Eigen::MatrixXd gyro_information(ModelKind model, const std::vector<Vec3>& eta, bool rests) {
+  const Layout L = layout_of(model);
+  const int P = L.free;
   Eigen::MatrixXd M = Eigen::MatrixXd::Zero(P, P);
   for (const Vec3& e : eta) {
     Eigen::VectorXd h(P);
-    if (model == "bias3")
+    if (!L.gains)
       h << e, 1;
     else
       h = Paper9Model::row(e).head(P);
@@ -268,8 +288,9 @@ KnownModulusCalibration calibrate_known_moduli_auto(const std::string& file, con
       std::to_string(items.size()) + (rests.empty() ? " segments or turns" : " segments or turns and the rests");
   std::ostringstream why;
   why.precision(3);
-  for (const char* name : {"paper9", "axis6", "bias3"}) {
-    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(gyro_information(name, eta, !rests.empty()),
+  for (const ModelKind model : auto_choice_models()) {
+    const std::string_view name = model_name(model);
+    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(gyro_information(model, eta, !rests.empty()),
                                                       Eigen::EigenvaluesOnly);
     const double lo = es.eigenvalues().minCoeff(), hi = es.eigenvalues().maxCoeff();
     const double condition = lo > 1e-12 * hi ? hi / lo : INFINITY;
@@ -284,7 +305,7 @@ KnownModulusCalibration calibrate_known_moduli_auto(const std::string& file, con
     if (why.tellp() > 0) r << "; " << why.str();
     reason = r.str();
     KnownModulusOptions o;
-    o.model = *parse_model(name);
+    o.model = model;
     return calibrate_known_moduli(file, items, rests, o);
   }
   throw InputError(file, 0, "the " + what + " carry no model: " + why.str());

@@ -17,6 +17,7 @@ struct Paper9Model {
   static constexpr bool region_limits = true;
   static constexpr bool polish_digits = true;
   static constexpr bool thermal_base = true;
+  static constexpr bool auto_choice = true;
   static constexpr std::array<std::string_view, 9> parameter_names = {
       "bias_x", "bias_y", "bias_z", "scale_x", "scale_y", "scale_z", "nonorth_xy", "nonorth_yz", "nonorth_zx"};
   static constexpr std::array<ParameterGroup, 9> parameter_groups = {

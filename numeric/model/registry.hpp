@@ -2,12 +2,14 @@
 // handle (an index into that list) for the CLI and for results; visit_model() turns it back into
 // the model's type, the one place where the CLI's --model meets the templated core.
 #pragma once
+#include <algorithm>
 #include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
 #include <type_traits>
 #include <utility>
+#include <vector>
 
 #include "numeric/model/axis6.hpp"
 #include "numeric/model/bias3.hpp"
@@ -98,8 +100,9 @@ inline constexpr bool is_default_model(ModelKind m) { return m.index() == 0; }
 // What a model supports beyond the CalibrationModel concept: a static constexpr bool of that name on its type,
 // absent meaning no. criteria_native: the criteria's own kernels and exact sphere limits (symbolic/limits.hpp)
 // are its (the paper's rows); region_limits: limits and synthesis on a region; polish_digits: the MPFR polish
-// (optimize --digits); thermal_base: the base of a thermal model BASE+Tk (its meter drifts, numeric/thermal/).
-enum class ModelCapability { criteria_native, region_limits, polish_digits, thermal_base };
+// (optimize --digits); thermal_base: the base of a thermal model BASE+Tk (its meter drifts, numeric/thermal/);
+// auto_choice: one of the linear models `--model auto` chooses among, the richest the positions carry.
+enum class ModelCapability { criteria_native, region_limits, polish_digits, thermal_base, auto_choice };
 
 template <class M>
 constexpr bool model_supports(ModelCapability c) {
@@ -116,6 +119,9 @@ constexpr bool model_supports(ModelCapability c) {
     case ModelCapability::thermal_base:
       if constexpr (requires { M::thermal_base; }) return M::thermal_base;
       return false;
+    case ModelCapability::auto_choice:
+      if constexpr (requires { M::auto_choice; }) return M::auto_choice;
+      return false;
   }
   return false;
 }
@@ -129,6 +135,16 @@ inline std::string models_supporting(ModelCapability c) {
   std::string out;
   for (int i = 0; i < kModelCount; ++i)
     if (model_supports(ModelKind(i), c)) out += (out.empty() ? "" : ", ") + std::string(model_name(ModelKind(i)));
+  return out;
+}
+
+// The models `--model auto` chooses among, richest first (most parameters; registration order between equals).
+inline std::vector<ModelKind> auto_choice_models() {
+  std::vector<ModelKind> out;
+  for (int i = 0; i < kModelCount; ++i)
+    if (model_supports(ModelKind(i), ModelCapability::auto_choice)) out.push_back(ModelKind(i));
+  std::stable_sort(out.begin(), out.end(),
+                   [](ModelKind a, ModelKind b) { return model_parameters(a) > model_parameters(b); });
   return out;
 }
 
