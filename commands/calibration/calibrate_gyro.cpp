@@ -25,10 +25,10 @@ const char* gyro_method_name(GyroMethod m) {
 
 GyroMethod gyro_method(const GyroCalibrateRequest& r) {
   if (!r.accelerometer.empty()) {
-    if (r.accelerometer_magnitude.empty())
+    if (!r.accelerometer_magnitude)
       throw UsageError(words(
           "calibrate: {accelerometer} needs {accelerometer-magnitude} (|g| in the accelerometer's units, or auto)"));
-    if (!r.magnitude.empty() || r.turn_angle_deg)
+    if (r.magnitude || r.turn_angle_deg)
       throw UsageError(
           words("calibrate: hand rotations ({accelerometer}) take no {magnitude} or {turn-angle}: the gyro's "
                 "rates come from the accelerometer's poses"));
@@ -36,10 +36,10 @@ GyroMethod gyro_method(const GyroCalibrateRequest& r) {
       throw UsageError(words("calibrate: {latitude} is for a rate table ({magnitude}), not hand rotations"));
     return GyroMethod::hand_rotations;
   }
-  if (!r.accelerometer_magnitude.empty())
+  if (r.accelerometer_magnitude)
     throw UsageError(words("calibrate: {accelerometer-magnitude} needs {accelerometer ACC_LOG}"));
   if (r.turn_angle_deg) {
-    if (!r.magnitude.empty())
+    if (r.magnitude)
       throw UsageError(
           words("calibrate: {turn-angle} (known turns) and {magnitude} (a rate table) exclude each other"));
     if (!(*r.turn_angle_deg > 0) || !std::isfinite(*r.turn_angle_deg))
@@ -48,17 +48,14 @@ GyroMethod gyro_method(const GyroCalibrateRequest& r) {
       throw UsageError(words("calibrate: {latitude} is for a rate table ({magnitude}), not known turns"));
     return GyroMethod::known_turns;
   }
-  if (r.magnitude.empty())
+  if (!r.magnitude)
     throw UsageError(
         words("calibrate {instrument gyro}: say how the gyro was turned: {magnitude RATE|auto|column:NAME} (a rate "
               "table), {turn-angle DEG} (known turns) or {accelerometer ACC_LOG} {accelerometer-magnitude G} (hand "
               "rotations)"));
-  if (r.magnitude.rfind("column:", 0) != 0) {
-    if (const std::string problem = magnitude_problem(r.magnitude); !problem.empty())
-      throw UsageError(words("calibrate: {magnitude} ") + problem + " (or column:NAME)");
-  } else if (r.magnitude.size() == 7) {
-    throw UsageError(words("calibrate: {magnitude column:NAME} needs the column's name"));
-  }
+  if (r.magnitude->rate && !(std::isfinite(*r.magnitude->rate) && *r.magnitude->rate > 0))
+    throw UsageError(words("calibrate: {magnitude} must be a positive number or auto, got '") +
+                     magnitude_text(r.magnitude->rate) + "' (or column:NAME)");
   if (r.latitude_deg && !(std::abs(*r.latitude_deg) <= 90))
     throw UsageError(words("calibrate: {latitude} must be in [-90, 90] degrees"));
   return GyroMethod::rate_table;
@@ -143,8 +140,8 @@ void rate_table(const GyroCalibrateRequest& q, const RawLog& log, GyroCalibrateR
   r.detection = s.detection;
   r.rests = s.rests;
   std::vector<double> rates, senses;
-  if (q.magnitude.rfind("column:", 0) == 0) {
-    const auto column = column_by_line(q.file, q.magnitude.substr(7));
+  if (!q.magnitude->column.empty()) {
+    const auto column = column_by_line(q.file, q.magnitude->column);
     for (const auto& seg : s.segments) {
       std::vector<double> v;
       for (int i = seg.span.begin; i <= seg.span.end; ++i) {
@@ -159,7 +156,7 @@ void rate_table(const GyroCalibrateRequest& q, const RawLog& log, GyroCalibrateR
       senses.push_back(m > 0 ? 1 : -1);
     }
   } else {
-    rates.assign(s.segments.size(), q.magnitude == "auto" ? 1.0 : std::stod(q.magnitude));
+    rates.assign(s.segments.size(), q.magnitude->rate.value_or(1.0));
   }
   if (q.latitude_deg) {
     if (senses.empty())
@@ -204,11 +201,9 @@ void known_turns(const GyroCalibrateRequest& q, const RawLog& log, GyroCalibrate
 }
 
 void hand_rotations(const GyroCalibrateRequest& q, const RawLog& log, GyroCalibrateResult& r) {
-  if (const std::string problem = magnitude_problem(q.accelerometer_magnitude); !problem.empty())
-    throw UsageError(words("calibrate: {accelerometer-magnitude} ") + problem);
   CalibrateRequest a;
   a.file = q.accelerometer;
-  a.magnitude = magnitude_value(q.accelerometer_magnitude);
+  a.magnitude = *q.accelerometer_magnitude;
   a.format = q.format;
   a.rate = q.rate;
   a.intervals = q.intervals;

@@ -23,15 +23,23 @@ namespace scalcal::commands {
 enum class GyroMethod { rate_table, known_turns, hand_rotations };
 const char* gyro_method_name(GyroMethod m);
 
+// A rate table's --magnitude: the table's rate, auto (the rate unknown: one gain for the three axes' scale), or
+// column:NAME (each row's signed rate from that column of the log).
+struct TableRate {
+  std::optional<double> rate;  // none: auto, or a column
+  std::string column;          // the column's name; "" when the rate is not a column
+  bool automatic() const { return !rate && column.empty(); }
+};
+
 struct GyroCalibrateRequest {
   std::string file;  // the gyro's log
   LogFormat format = LogFormat::automatic;
-  double rate = 0;                  // Hz: row k at k / rate (0: the time column)
-  StaticIntervalOptions intervals;  // rests, constant-rate segments (and the accelerometer's poses)
-  std::string magnitude;            // rate table: the table's rate (a number), auto, or column:NAME (signed, per row)
-  std::optional<double> turn_angle_deg;           // known turns: each turn's angle
-  std::string accelerometer;                      // hand rotations: the accelerometer's log, same rows as the gyro's
-  std::string accelerometer_magnitude;            // its |g| (a number, or auto)
+  double rate = 0;                       // Hz: row k at k / rate (0: the time column)
+  StaticIntervalOptions intervals;       // rests, constant-rate segments (and the accelerometer's poses)
+  std::optional<TableRate> magnitude;    // a rate table's; none: not a rate table
+  std::optional<double> turn_angle_deg;  // known turns: each turn's angle
+  std::string accelerometer;             // hand rotations: the accelerometer's log, same rows as the gyro's
+  std::optional<std::optional<double>> accelerometer_magnitude;  // its |g| (none inside: auto); none: not given
   std::optional<double> latitude_deg;             // rate table: add the Earth's rate along the table's axis
   Vec3 table_axis = Vec3::UnitZ();                // that axis in east, north, up (--table-axis), unit length
   std::optional<ModelKind> model;                 // rate table and turns: empty = auto

@@ -141,7 +141,7 @@ Json gyro_calibration_file_json(const GyroCalibrateResult& r) {
     counts = !units.raw;
   }
   if (!r.request.physical_units.empty()) units.physical = parse_unit(r.request.physical_units);
-  units.unit_modulus = r.request.magnitude == "auto";
+  units.unit_modulus = r.request.magnitude && r.request.magnitude->automatic();
   Json j{{"format_version", kCalibrationFormatVersion},
          {"created", utc_now_iso8601()},
          {"tool", Json{{"name", "scalcal"}, {"version", tool_version()}, {"commit", tool_commit()}}},
@@ -157,8 +157,8 @@ Json gyro_calibration_file_json(const GyroCalibrateResult& r) {
          {"noise_floor", number_or_null(r.detection.still_variance)},
          {"sample_rate", r.detection.sample_period > 0 ? Json(1 / r.detection.sample_period) : Json()},
          {"noise", number_or_null(r.noise)}};
-  if (r.scalar && !r.request.magnitude.empty() && r.request.magnitude.rfind("column:", 0) != 0)
-    j["magnitude"] = r.request.magnitude == "auto" ? Json("auto") : Json(std::stod(r.request.magnitude));
+  if (r.scalar && r.request.magnitude && r.request.magnitude->column.empty())
+    j["magnitude"] = r.request.magnitude->rate ? Json(*r.request.magnitude->rate) : Json("auto");
   if (r.paper_form) j["bias"] = triple(r.paper_form->offset);
   Json rests = Json::array();
   for (const auto& x : r.rests)

@@ -31,16 +31,35 @@ Vec3 table_axis(const std::string& text) {
   return a.normalized();
 }
 
+// --magnitude RATE|auto|column:NAME.
+TableRate table_rate(const std::string& text) {
+  TableRate out;
+  if (text.rfind("column:", 0) == 0) {
+    out.column = text.substr(7);
+    if (out.column.empty()) throw UsageError(words("calibrate: {magnitude column:NAME} needs the column's name"));
+    return out;
+  }
+  if (const std::string problem = magnitude_problem(text); !problem.empty())
+    throw UsageError(words("calibrate: {magnitude} ") + problem + " (or column:NAME)");
+  out.rate = magnitude_value(text);
+  return out;
+}
+
 }  // namespace
 
 GyroCalibrateRequest gyro_calibrate_request(const Values& v) {
   GyroCalibrateRequest q;
   q.file = v.text("--measurements");
   read_log_options(v, q.format, q.rate, q.intervals);
-  if (v.given("--magnitude")) q.magnitude = v.text("--magnitude");
+  if (v.given("--magnitude")) q.magnitude = table_rate(v.text("--magnitude"));
   if (v.given("--turn-angle")) q.turn_angle_deg = v.number("--turn-angle");
   q.accelerometer = v.text("--accelerometer");
-  if (v.given("--accelerometer-magnitude")) q.accelerometer_magnitude = v.text("--accelerometer-magnitude");
+  if (v.given("--accelerometer-magnitude")) {
+    const std::string g = v.text("--accelerometer-magnitude");
+    if (const std::string problem = magnitude_problem(g); !problem.empty())
+      throw UsageError(words("calibrate: {accelerometer-magnitude} ") + problem);
+    q.accelerometer_magnitude = magnitude_value(g);
+  }
   if (v.given("--latitude")) q.latitude_deg = v.number("--latitude");
   if (v.given("--table-axis")) {
     if (!q.latitude_deg)
