@@ -50,10 +50,7 @@ void LogStream::add(const RawLog& chunk, bool last) {
   const int from = log_.size();
   log_.t.insert(log_.t.end(), chunk.t.begin(), chunk.t.end());
   log_.samples.insert(log_.samples.end(), chunk.samples.begin(), chunk.samples.end());
-  if (chunk.lines.empty())
-    for (int i = 0; i < chunk.size(); ++i) log_.lines.push_back(from + i + 1);
-  else
-    log_.lines.insert(log_.lines.end(), chunk.lines.begin(), chunk.lines.end());
+  log_.lines.insert(log_.lines.end(), chunk.lines.begin(), chunk.lines.end());
   take_rows(from, last);
 }
 
@@ -66,8 +63,6 @@ void LogStream::add(RawLog&& chunk, bool last) {
   std::string file = std::move(log_.file);
   log_ = std::move(chunk);
   log_.file = std::move(file);
-  if (log_.lines.empty())
-    for (int i = 0; i < log_.size(); ++i) log_.lines.push_back(i + 1);
   take_rows(0, last);
 }
 
@@ -75,6 +70,9 @@ RawLog LogStream::release() && { return std::move(log_); }
 
 // The rows from `from` on: their steps and extremes, then which samples are decided.
 void LogStream::take_rows(int from, bool last) {
+  // A chunk without line numbers (a caller's samples, not a file's) numbers its rows from 1 on.
+  while (static_cast<int>(log_.lines.size()) < log_.size())
+    log_.lines.push_back(static_cast<int>(log_.lines.size()) + 1);
   for (int index = from; index < log_.size(); ++index) {
     const auto k = static_cast<std::size_t>(index);
     if (!log_.finite(index)) continue;
