@@ -189,11 +189,14 @@ double thermal_condition(CalibrationFile& c) {
 void check_linear(const Json& d, const std::string& file, const CalibrationFile& c) {
   if (!d.contains("linear")) return;
   if (!d["linear"].is_boolean()) throw InputError(file, 0, "'linear' must be true or false");
-  if (d["linear"].get<bool>() == c.nonlinear)
+  if (d["linear"].get<bool>() != c.nonlinear) return;
+  if (c.model.empty())
     throw InputError(file, 0,
-                     std::string("'linear' is ") + (c.nonlinear ? "true" : "false") + " but " +
-                         (c.model.empty() ? std::string("the file names no model") : "model " + c.model) +
-                         (c.nonlinear ? " corrects nonlinearly" : " corrects by a matrix"));
+                     "'linear' is false but the file names no model, and only a model's cubic terms make a "
+                     "correction nonlinear");
+  throw InputError(file, 0,
+                   std::string("'linear' is ") + (c.nonlinear ? "true" : "false") + " but model " + c.model +
+                       (c.nonlinear ? " corrects nonlinearly" : " corrects by a matrix"));
 }
 
 // The offset and matrix, and the matrix's condition.
