@@ -242,11 +242,17 @@ CalibrationStream stream_of(RawLog&& log, const CalibrateRequest& o) {
 // What the stream's log gives calibrate, all but the log itself (the caller copies or takes it).
 CalibrationInput input_of(const CalibrationStream& stream, const CalibrateRequest& o);
 
+// A raw log's positions are found, not given, so no nominal direction comes with them: said before the log is
+// streamed, by both entries.
+void refuse_projection(const CalibrateRequest& o) {
+  if (o.modulus == Modulus::projection)
+    throw InputError(o.file, 0, "a raw log has no nominal directions: the projection modulus needs them");
+}
+
 }  // namespace
 
 CalibrationInput calibration_input(RawLog log, const CalibrateRequest& o) {
-  if (o.modulus == Modulus::projection)
-    throw InputError(o.file, 0, "a raw log has no nominal directions: the projection modulus needs them");
+  refuse_projection(o);
   CalibrationStream stream = stream_of(std::move(log), o);
   CalibrationInput in = input_of(stream, o);
   in.log = std::move(stream).release_log();
@@ -254,6 +260,7 @@ CalibrationInput calibration_input(RawLog log, const CalibrateRequest& o) {
 }
 
 CalibrationInput calibration_input(const CalibrationStream& stream, const CalibrateRequest& o) {
+  refuse_projection(o);
   CalibrationInput in = input_of(stream, o);
   in.log = stream.log();
   return in;
@@ -267,8 +274,6 @@ CalibrationInput input_of(const CalibrationStream& stream, const CalibrateReques
   const std::string need = o.model ? words("{model} ") + std::string(model_name(*o.model)) + " needs at least " +
                                          std::to_string(needed) + " positions"
                                    : "paper9 needs at least 9 positions (axis6 6, bias3 3)";
-  if (o.modulus == Modulus::projection)
-    throw InputError(o.file, 0, "a raw log has no nominal directions: the projection modulus needs them");
   const RawLog& log = stream.log();
   CalibrationInput in;
   in.chunks = stream.chunks();
