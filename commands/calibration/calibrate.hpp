@@ -156,6 +156,7 @@ struct CalibrateResult {
 
 // Why a --magnitude text is refused ("" when it is a positive number or "auto"), and the value it gives (none: auto).
 std::string magnitude_problem(const std::string& magnitude);
+std::string magnitude_problem(const std::optional<double>& magnitude);  // a typed one (none: auto)
 std::optional<double> magnitude_value(const std::string& magnitude);
 // A magnitude as the reports quote it: the shortest text that reads back to it, or "auto".
 std::string magnitude_text(const std::optional<double>& magnitude);

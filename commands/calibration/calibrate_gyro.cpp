@@ -53,9 +53,8 @@ GyroMethod gyro_method(const GyroCalibrateRequest& r) {
         words("calibrate {instrument gyro}: say how the gyro was turned: {magnitude RATE|auto|column:NAME} (a rate "
               "table), {turn-angle DEG} (known turns) or {accelerometer ACC_LOG} {accelerometer-magnitude G} (hand "
               "rotations)"));
-  if (r.magnitude->rate && !(std::isfinite(*r.magnitude->rate) && *r.magnitude->rate > 0))
-    throw UsageError(words("calibrate: {magnitude} must be a positive number or auto, got '") +
-                     magnitude_text(r.magnitude->rate) + "' (or column:NAME)");
+  if (const std::string problem = magnitude_problem(r.magnitude->rate); !problem.empty())
+    throw UsageError(words("calibrate: {magnitude} ") + problem + " (or column:NAME)");
   if (r.latitude_deg && !(std::abs(*r.latitude_deg) <= 90))
     throw UsageError(words("calibrate: {latitude} must be in [-90, 90] degrees"));
   return GyroMethod::rate_table;

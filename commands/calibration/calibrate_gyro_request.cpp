@@ -39,9 +39,7 @@ TableRate table_rate(const std::string& text) {
     if (out.column.empty()) throw UsageError(words("calibrate: {magnitude column:NAME} needs the column's name"));
     return out;
   }
-  if (const std::string problem = magnitude_problem(text); !problem.empty())
-    throw UsageError(words("calibrate: {magnitude} ") + problem + " (or column:NAME)");
-  out.rate = magnitude_value(text);
+  out.rate = magnitude_value(text);  // a positive number or auto: the option's why_bad saw to it
   return out;
 }
 
@@ -54,12 +52,8 @@ GyroCalibrateRequest gyro_calibrate_request(const Values& v) {
   if (v.given("--magnitude")) q.magnitude = table_rate(v.text("--magnitude"));
   if (v.given("--turn-angle")) q.turn_angle_deg = v.number("--turn-angle");
   q.accelerometer = v.text("--accelerometer");
-  if (v.given("--accelerometer-magnitude")) {
-    const std::string g = v.text("--accelerometer-magnitude");
-    if (const std::string problem = magnitude_problem(g); !problem.empty())
-      throw UsageError(words("calibrate: {accelerometer-magnitude} ") + problem);
-    q.accelerometer_magnitude = magnitude_value(g);
-  }
+  if (v.given("--accelerometer-magnitude"))
+    q.accelerometer_magnitude = magnitude_value(v.text("--accelerometer-magnitude"));
   if (v.given("--latitude")) q.latitude_deg = v.number("--latitude");
   if (v.given("--table-axis")) {
     if (!q.latitude_deg)

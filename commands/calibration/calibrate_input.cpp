@@ -9,6 +9,7 @@
 #include "commands/core/usage_error.hpp"
 #include "numeric/calibration/calibration_stream.hpp"
 #include "numeric/calibration/measurements_csv.hpp"
+#include "numeric/calibration/model_calibration.hpp"
 #include "numeric/calibration/model_choice.hpp"
 
 #include <Eigen/Dense>
@@ -317,6 +318,12 @@ CalibrationInput input_of(const CalibrationStream& stream, const CalibrateReques
 
 }  // namespace
 
+namespace {
+
+std::string not_a_magnitude(const std::string& text) { return "must be a positive number or auto, got '" + text + "'"; }
+
+}  // namespace
+
 std::optional<double> magnitude_value(const std::string& s) {
   if (s == "auto") return std::nullopt;
   return std::stod(s);
@@ -331,17 +338,21 @@ std::string magnitude_problem(const std::string& s) {
   try {
     std::size_t used = 0;
     const double v = std::stod(s, &used);
-    if (used == s.size() && std::isfinite(v) && v > 0) return "";
+    if (used == s.size()) return magnitude_problem(std::optional<double>(v)).empty() ? "" : not_a_magnitude(s);
   } catch (...) {
   }
-  return "must be a positive number or auto, got '" + s + "'";
+  return not_a_magnitude(s);
+}
+
+std::string magnitude_problem(const std::optional<double>& magnitude) {
+  return !magnitude || (std::isfinite(*magnitude) && *magnitude > 0) ? "" : not_a_magnitude(magnitude_text(magnitude));
 }
 
 void check_calibrate_request(const CalibrateRequest& o) {
-  if (o.magnitude && !(std::isfinite(*o.magnitude) && *o.magnitude > 0))
-    throw UsageError(words("calibrate: {magnitude} must be a positive number or auto, got '") +
-                     magnitude_text(o.magnitude) + "'");
-  if (o.model && model_name(*o.model) == "cubic12" && !o.magnitude)
+  if (const std::string problem = magnitude_problem(o.magnitude); !problem.empty())
+    throw UsageError(words("calibrate: {magnitude} ") + problem);
+  // A model whose correction is not linear has a cubic term relative to |I| (cubic12).
+  if (o.model && !corrects_linearly(meter_indices(*o.model)) && !o.magnitude)
     throw UsageError(
         words("calibrate: {magnitude auto} does not work with {model cubic12}: its cubic term is relative to "
               "|I|, which would be one more unknown; give |I|"));

@@ -100,6 +100,15 @@ Option magnitude_option() {
   return o;
 }
 
+// --accelerometer-magnitude: refused as --magnitude is, by the option table (in every front end's words).
+Option accelerometer_magnitude_option() {
+  Option o =
+      text_option("--accelerometer-magnitude", "G|auto",
+                  words("hand rotations ({instrument gyro}): the accelerometer's |g|"), "the accelerometer's units");
+  o.why_bad = [](const std::string& g) { return magnitude_problem(g); };
+  return o;
+}
+
 }  // namespace
 
 const CommandTable& calibrate_table() {
@@ -181,8 +190,7 @@ const CommandTable& calibrate_table() {
            words("hand rotations ({instrument gyro}): the log of an accelerometer moved with the gyro (the same "
                  "rows); it is calibrated first and the gyro's matrix maps into its corrected frame"),
            "file path"),
-       text_option("--accelerometer-magnitude", "G|auto",
-                   words("hand rotations ({instrument gyro}): the accelerometer's |g|"), "the accelerometer's units"),
+       accelerometer_magnitude_option(),
        number_option(
            "--latitude", -90, 90,
            words("a rate table ({instrument gyro}): add the Earth's rate to each segment's (its part along the "
@@ -219,9 +227,7 @@ CalibrateRequest calibrate_request(const Values& v) {
   const std::string magnitude = v.text("--magnitude");
   if (magnitude.rfind("column:", 0) == 0)
     throw UsageError(words("{magnitude column:NAME} is a rate table's ({instrument gyro})"));
-  if (const std::string problem = magnitude_problem(magnitude); !problem.empty())
-    throw UsageError(words("calibrate: {magnitude} ") + problem);
-  q.magnitude = magnitude_value(magnitude);
+  q.magnitude = magnitude_value(magnitude);  // a positive number or auto: the option's why_bad saw to it
   q.modulus = v.text("--modulus") == "projection" ? Modulus::projection : Modulus::norm;
   read_log_options(v, q.format, q.rate, q.intervals);
   if (v.given("--chunk")) q.chunk_rows = static_cast<int>(v.integer("--chunk"));
