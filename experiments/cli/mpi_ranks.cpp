@@ -20,6 +20,24 @@ bool launched_by_mpirun() {
   return false;
 }
 
+#ifdef SCALCAL_HAVE_MPI
+// Where each rank's text starts in the gathered text, the total last (one entry, 0, for no rank: a rank
+// that receives nothing).
+std::vector<int> offsets_of(const std::vector<int>& lengths) {
+  std::vector<int> at(lengths.size() + 1, 0);
+  for (std::size_t r = 0; r < lengths.size(); ++r) at[r + 1] = at[r] + lengths[r];
+  return at;
+}
+
+// The gathered text cut back into each rank's.
+std::vector<std::string> pieces(const std::string& all, const std::vector<int>& offsets) {
+  std::vector<std::string> out;
+  for (std::size_t r = 0; r + 1 < offsets.size(); ++r)
+    out.push_back(all.substr(offsets[r], offsets[r + 1] - offsets[r]));
+  return out;
+}
+#endif
+
 }  // namespace
 
 Ranks& Ranks::world() {
@@ -49,18 +67,12 @@ std::vector<std::string> Ranks::gather(const std::string& text) const {
   if (size_ == 1) return {text};
 #ifdef SCALCAL_HAVE_MPI
   int length = static_cast<int>(text.size());
-  std::vector<int> lengths(rank_ == 0 ? size_ : 0), offsets(rank_ == 0 ? size_ : 0);
+  std::vector<int> lengths(rank_ == 0 ? size_ : 0);
   PMPI_Gather(&length, 1, MPI_INT, lengths.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
-  std::string all;
-  if (rank_ == 0) {
-    int total = 0;
-    for (int r = 0; r < size_; ++r) offsets[r] = total, total += lengths[r];
-    all.resize(total);
-  }
+  std::vector<int> offsets = offsets_of(lengths);
+  std::string all(static_cast<std::size_t>(offsets.back()), '\0');
   PMPI_Gatherv(text.data(), length, MPI_CHAR, all.data(), lengths.data(), offsets.data(), MPI_CHAR, 0, MPI_COMM_WORLD);
-  std::vector<std::string> out;
-  for (int r = 0; rank_ == 0 && r < size_; ++r) out.push_back(all.substr(offsets[r], lengths[r]));
-  return out;
+  return pieces(all, offsets);
 #else
   return {text};
 #endif
@@ -70,15 +82,12 @@ std::vector<std::string> Ranks::all_gather(const std::string& text) const {
   if (size_ == 1) return {text};
 #ifdef SCALCAL_HAVE_MPI
   int length = static_cast<int>(text.size());
-  std::vector<int> lengths(size_), offsets(size_);
+  std::vector<int> lengths(size_);
   PMPI_Allgather(&length, 1, MPI_INT, lengths.data(), 1, MPI_INT, MPI_COMM_WORLD);
-  int total = 0;
-  for (int r = 0; r < size_; ++r) offsets[r] = total, total += lengths[r];
-  std::string all(static_cast<std::size_t>(total), '\0');
+  std::vector<int> offsets = offsets_of(lengths);
+  std::string all(static_cast<std::size_t>(offsets.back()), '\0');
   PMPI_Allgatherv(text.data(), length, MPI_CHAR, all.data(), lengths.data(), offsets.data(), MPI_CHAR, MPI_COMM_WORLD);
-  std::vector<std::string> out;
-  for (int r = 0; r < size_; ++r) out.push_back(all.substr(offsets[r], lengths[r]));
-  return out;
+  return pieces(all, offsets);
 #else
   return {text};
 #endif
