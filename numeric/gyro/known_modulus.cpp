@@ -94,15 +94,6 @@ struct Layout {
   }
 };
 
-// The linear models --model auto chooses among, as "paper9, axis6 and bias3".
-std::string linear_model_names() {
-  const std::vector<ModelKind> models = auto_choice_models();
-  std::string out;
-  for (std::size_t i = 0; i < models.size(); ++i)
-    out += (i == 0 ? "" : i + 1 == models.size() ? " and " : ", ") + std::string(model_name(models[i]));
-  return out;
-}
-
 Layout layout_of(ModelKind model) {
   const std::vector<int> index = meter_indices(model);
   Layout L;
@@ -111,8 +102,8 @@ Layout layout_of(ModelKind model) {
   L.gammas = has_meter_group(index, ParameterGroup::nonorth);
   const bool offsets = meter_group(index, ParameterGroup::bias).size() == 3;
   if (!offsets || !corrects_linearly(index) || (L.gammas && !L.gains))
-    throw std::invalid_argument("a gyro's rate table or turns take the models " + linear_model_names() + ", not " +
-                                L.name);
+    throw std::invalid_argument("a gyro's rate table or turns take the models " +
+                                models_supporting(ModelCapability::auto_choice) + ", not " + L.name);
   L.free = 3 + (L.gains ? 3 : 1) + (L.gammas ? 3 : 0);
   return L;
 }
