@@ -1,10 +1,12 @@
-"""The calibration file's JSON Schema (docs/schema/files/calibration_file.json) against the files calibrate writes.
+"""The calibration file's JSON Schema (docs/schema/files/calibration_file.json) against the files calibrate writes,
+and calibrate's --json result's (docs/schema/results/calibrate.json, the file's keys) against what it prints.
 
 Writes calibration files of every kind the tool has (the paper's model, axis6, bias3 and cubic12; raw counts with
 units and a sensor label; a log read in chunks; a simulated tumbling magnetometer; a thermal fit; a gyro on a rate
 table, by known turns and by hand rotations against an accelerometer; the public MPU-6050 and QMC5883L logs when
 ../shared/data is there), then checks, with python3-jsonschema as the independent judge:
-- the schema is a valid draft 2020-12 schema, and every file is valid by it;
+- the schemas are valid draft 2020-12 schemas, every file is valid by the file's, and what each run prints with
+  --json by the result's (an accelerometer's without the file's header, a gyroscope's with it);
 - every key a file holds is declared (the schema refuses undeclared keys), and every declared key appears in
   some file: the schema and the writers cannot drift apart unnoticed;
 - the reader agrees: a file the schema refuses for a wrong shape (offset of two numbers, a matrix row of two, a
@@ -24,6 +26,12 @@ scalcal, source = os.path.abspath(sys.argv[1]), os.path.abspath(sys.argv[2])
 schema = json.load(open(os.path.join(source, "docs", "schema", "files", "calibration_file.json")))
 jsonschema.Draft202012Validator.check_schema(schema)
 validator = jsonschema.Draft202012Validator(schema)
+result_schema = json.load(open(os.path.join(source, "docs", "schema", "results", "calibrate.json")))
+jsonschema.Draft202012Validator.check_schema(result_schema)
+result_validator = jsonschema.Draft202012Validator(
+    result_schema, resolver=jsonschema.RefResolver.from_schema(result_schema, store={schema["$id"]: schema}))
+fields = schema["$defs"]["fields"]["properties"]
+HEADER = ["format_version", "created", "tool", "sensor", "units", "units_reason", "region"]
 shared = os.path.join(os.path.dirname(os.path.abspath(source)), "shared", "data")
 failures = []
 
@@ -68,7 +76,7 @@ MUTATIONS = {
 
 with tempfile.TemporaryDirectory() as work:
     os.symlink(os.path.join(source, "data"), os.path.join(work, "data"))
-    files = {}
+    files, printed = {}, {}
     for name, command in RUNS:
         args = command.split()
         if name:
@@ -78,12 +86,29 @@ with tempfile.TemporaryDirectory() as work:
             failures.append(f"scalcal {command}: exit {r.returncode}: {r.stderr.strip()[-300:]}")
         elif name:
             files[name] = json.load(open(os.path.join(work, name + ".json")))
+            r = subprocess.run([scalcal, *command.split(), "--json"], cwd=work, capture_output=True, text=True)
+            printed[name] = json.loads(r.stdout) if r.returncode == 0 else None
     seen = set()
     for name, document in files.items():
         seen |= set(document)
         for e in validator.iter_errors(document):
             failures.append(f"{name}: {'/'.join(map(str, e.absolute_path)) or '(top)'}: {e.message[:200]}")
-    never = sorted(set(schema["properties"]) - seen)
+    for name, document in printed.items():
+        if document is None:
+            failures.append(f"{name}: calibrate --json failed")
+            continue
+        for e in result_validator.iter_errors(document):
+            failures.append(f"{name} --json: {'/'.join(map(str, e.absolute_path)) or '(top)'}: {e.message[:200]}")
+        # What --json prints is the file's result: the same keys, less the header for an accelerometer (whose
+        # instrument a thermal fit names in the header only).
+        header = set() if files[name].get("instrument") == "gyro" else set(HEADER) | {"instrument"}
+        if not set(document) <= set(files[name]) or not set(files[name]) - set(document) <= header:
+            failures.append(f"{name} --json: keys differ from the file's: {sorted(set(document) ^ set(files[name]))}")
+    if "paper9" in printed and printed["paper9"]:
+        for key, value in [("format_version", 2), ("colour", 1)]:
+            if result_validator.is_valid({**printed["paper9"], key: value}):
+                failures.append(f"the result schema accepts an accelerometer's --json with '{key}'")
+    never = sorted(set(fields) - seen)
     if never:
         failures.append(f"declared but written by none of the {len(files)} files: {', '.join(never)}")
     # The reader against the schema, on the paper's file as written and mutated.
@@ -111,4 +136,4 @@ for f in failures:
 if failures:
     sys.exit(1)
 print(f"calibration file schema: {len(files)} files of {len(RUNS) - sum(1 for n, _ in RUNS if not n)} kinds valid, "
-      f"{len(schema['properties'])} keys declared and all written, {len(MUTATIONS)} malformed files refused by both")
+      f"{len(fields)} keys declared and all written; calibrate --json valid on {len(printed)} runs, {len(MUTATIONS)} malformed files refused by both")
