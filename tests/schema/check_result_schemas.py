@@ -289,7 +289,8 @@ def main():
     folder = os.path.join(source, "docs", "schema", "results")
     schemas = {}
     for f in sorted(os.listdir(folder)):
-        if f.endswith(".json"):
+        # calibrate's result is the calibration file's keys: check_calibration_schema.py checks it with the file's.
+        if f.endswith(".json") and f != "calibrate.json":
             schemas[f[:-5]] = json.load(open(os.path.join(folder, f)))
             jsonschema.Draft202012Validator.check_schema(schemas[f[:-5]])
     shared = os.path.join(os.path.dirname(source), "shared", "data")
