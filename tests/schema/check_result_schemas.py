@@ -282,6 +282,20 @@ def negative_controls(schemas, outputs, failures):
     return done + 2
 
 
+def complete(scalcal, source, schemas, outputs, failures):
+    """Every command whose --help offers --json (the request schemas in docs/schema/ name every command) has a
+    result schema and runs here; calibrate's are the calibration test's (check_calibration_schema.py)."""
+    commands = [f[:-5] for f in os.listdir(os.path.join(source, "docs", "schema")) if f.endswith(".json")]
+    for name in sorted(commands):
+        r = subprocess.run([scalcal, name, "--help"], capture_output=True, text=True)
+        if "--json" not in r.stdout or name == "calibrate":
+            continue
+        if name not in schemas:
+            failures.append(f"{name} prints JSON (--json) but has no schema in docs/schema/results/")
+        elif name not in outputs:
+            failures.append(f"{name} has a result schema but no run in this test's table")
+
+
 def main():
     """Loads the schemas, runs the table, checks; exit 1 on any failure."""
     start = time.monotonic()
@@ -300,7 +314,8 @@ def main():
         os.symlink(os.path.join(source, "data"), os.path.join(work, "data"))
         outputs, runs = run_all(scalcal, work, shared, failures)
     checked = check(schemas, outputs, failures)
-    controls = negative_controls(schemas, outputs, failures)
+    complete(scalcal, source, schemas, outputs, failures)
+    controls = 0 if failures else negative_controls(schemas, outputs, failures)
     for f in failures:
         print(f, file=sys.stderr)
     if failures:
