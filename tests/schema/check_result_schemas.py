@@ -74,7 +74,7 @@ RUNS = [
     ("family jig:dodecahedron", 0), ("family octahedral --model bias3", 0),
     ("jig dodecahedron --criterion A", 0), ("jig dodecahedron --instrument gyro", 0),
     ("jig cuboctahedron --starts 4 --criterion S", 0),
-    ("plan dodecahedral-12 --bench gimbal:z,y,x", 0), ("plan classic18 --bench tilt:90:flip", 0),
+    ("plan dodecahedral-12 --bench gimbal:z,y,x", 0), ("plan rotation-4 --bench gimbal:z,y,x", 0), ("plan classic18 --bench tilt:90:flip", 0),
     ("plan classic18 --bench faces:45", 0), ("plan dodecahedral-12 --bench jig:dodecahedron", 0),
     ("plan dodecahedral-12 --bench rate:90:60:10:flip", 0), ("plan th.csv --bench gimbal:z,y,x --soak 30", 0),
     ("plan cap.csv --bench tilt:90 --region cap:90 --model axis6 --resolution 1", 0),
