@@ -49,6 +49,7 @@ EvaluateRequest evaluate_request(const Values& v) {
   // --instrument gyro reverses turns on the regions given here; a program file's own region line
   // (optimize --instrument gyro writes it) holds both directions already.
   q.regions = v.program ? v.list("--region") : regions_for(v.list("--region"), q.name, q.warnings);
+  q.regions_from_file = !v.given("--region") && !q.regions.empty();
   if (v.given("--region")) q.regions = instrument_regions(v, q.regions);
   q.tolerance_deg = v.number("--tolerance");
   return q;
@@ -74,19 +75,31 @@ EvaluateResult evaluate(const EvaluateRequest& q, const Progress& progress) {
     r.warnings.insert(r.warnings.end(), r.thermal->warnings.begin(), r.thermal->warnings.end());
     return r;
   }
-  if (!model_supports(q.model, ModelCapability::region_limits) && !q.regions.empty())
-    throw UsageError(words("evaluate: {region} has limits for the ") +
-                     models_supporting(ModelCapability::region_limits) + words(" model only (got {model} ") +
-                     std::string(model_name(q.model)) + ")");
   EvaluateResult r;
   r.warnings = q.warnings;
+  // A model without region limits is judged on the sphere: --region sphere restricts nothing, and a program
+  // file's region line (which optimize writes) is said and set aside; a restricted --region is refused.
+  std::vector<std::string> regions = q.regions;
+  if (!model_supports(q.model, ModelCapability::region_limits) && !regions.empty()) {
+    if (!is_sphere(regions) && !q.regions_from_file)
+      throw UsageError(words("evaluate: {region} has limits for the ") +
+                       models_supporting(ModelCapability::region_limits) + words(" model only (got {model} ") +
+                       std::string(model_name(q.model)) + ")");
+    std::string specs;
+    for (const auto& spec : regions) specs += (specs.empty() ? "" : ";") + spec;
+    if (!is_sphere(regions))
+      r.warnings.push_back({q.name, "its region line (" + specs + ") is set aside: region limits exist for the " +
+                                        models_supporting(ModelCapability::region_limits) + " model only, so " +
+                                        std::string(model_name(q.model)) + " is judged without efficiencies"});
+    regions.clear();
+  }
   r.name = q.name;
   r.program = q.program;
   r.evaluation = scalcal::evaluate(q.model, q.program);
   if (!r.evaluation.full_rank()) throw InputError(q.name, 0, rank_deficiency(r.evaluation));
   if (r.evaluation.condition > kIllConditioned) r.warnings.push_back({q.name, ill_conditioning(r.evaluation)});
-  if (q.regions.empty()) return r;
-  r.region = resolve_region(q.regions, r.warnings);
+  if (regions.empty()) return r;
+  r.region = resolve_region(regions, r.warnings);
   refuse_outside(q.name, q.program, *r.region, q.tolerance_deg);
   r.columns = region_columns(*r.region, q.program);
   for (auto c : kCriteria) {

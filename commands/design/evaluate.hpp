@@ -24,6 +24,7 @@ struct EvaluateRequest {
   Program program;
   ModelKind model = ModelKind::paper9;
   std::vector<std::string> regions;     // --region specs, else the program file's; none: the sphere (no efficiencies)
+  bool regions_from_file = false;       // regions is the program file's region line (no --region given)
   double tolerance_deg = 0.05;          // positions this far outside the region count as inside
   Warnings warnings;                    // found while reading the request (a region line replaced)
   std::optional<ThermalModel> thermal;  // --model BASE+Tk: then the program is thermal_program
@@ -49,7 +50,8 @@ const CommandTable& evaluate_table();
 EvaluateRequest evaluate_request(const Values& values);
 
 // Throws InputError for a rank-deficient program or one with positions outside the region, and
-// UsageError for regions under a model other than paper9.
+// UsageError for a restricted --region under a model without region limits (a program file's region line is then
+// set aside with a warning, and --region sphere restricts nothing).
 EvaluateResult evaluate(const EvaluateRequest& request, const Progress& progress = {});
 
 // The evaluation's JSON (evaluation_json.hpp) with `region`, `efficiency` and `limits` (each with its

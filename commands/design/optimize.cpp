@@ -27,7 +27,7 @@ void check(const OptimizeRequest& q) {
                      std::to_string(model_parameters(o.model)) + words(" parameters of {model} ") +
                      std::string(model_name(o.model)));
   // The message as it always read while one model had both (paper9); with other models it says which has which.
-  const bool regions = !q.regions.empty() && !model_supports(o.model, ModelCapability::region_limits),
+  const bool regions = !is_sphere(q.regions) && !model_supports(o.model, ModelCapability::region_limits),
              digits = q.digits > 0 && !model_supports(o.model, ModelCapability::polish_digits);
   const std::string with_regions = models_supporting(ModelCapability::region_limits),
                     with_digits = models_supporting(ModelCapability::polish_digits);
@@ -143,7 +143,9 @@ OptimizeResult optimize(const OptimizeRequest& q, const Progress& progress) {
   r.model = opt.model;
   r.positions = opt.positions;
   if (progress) opt.progress = [&](int done, int total) { progress("starts", done, total); };
-  if (!q.regions.empty()) r.region = resolve_region(q.regions, r.warnings);
+  // --region sphere restricts nothing: a model without region limits (check() refused any other) is on the sphere.
+  if (!q.regions.empty() && model_supports(opt.model, ModelCapability::region_limits))
+    r.region = resolve_region(q.regions, r.warnings);
   const bool restricted = r.region && !r.region->is_sphere();
   if (q.margin_deg > 0 && !restricted)
     throw UsageError(words("{margin} moves positions inside a restricted {region}'s boundaries; the sphere has none"));

@@ -110,10 +110,12 @@ Sweep::Sweep(const SweepRequest& q) : request_(q), limits_(kCriterionCount) {
     throw UsageError(words("sweep: {positions} ") + std::to_string(q.lo) + " is below the " +
                      std::to_string(model_parameters(q.model)) + words(" parameters of {model} ") +
                      std::string(model_name(q.model)));
-  if (!model_supports(q.model, ModelCapability::region_limits) && !q.regions.empty())
+  const bool region_limits = model_supports(q.model, ModelCapability::region_limits);
+  if (!region_limits && !is_sphere(q.regions))
     throw UsageError(words("sweep: {region} works with the ") + models_supporting(ModelCapability::region_limits) +
                      words(" model only (got {model} ") + std::string(model_name(q.model)) + ")");
-  if (!q.regions.empty()) region_ = resolve_region(q.regions, warnings_);
+  // --region sphere restricts nothing: a model without region limits sweeps the sphere with its stated limits.
+  if (!q.regions.empty() && region_limits) region_ = resolve_region(q.regions, warnings_);
   for (const CriterionKind c : q.criteria)
     for (int n = q.lo; n <= q.hi; ++n) tasks_.push_back({c, n});
 }

@@ -115,6 +115,35 @@ TEST(EvaluateCli, MissingFileAndUsageErrors) {
   EXPECT_EQ(r.status, 2);
 }
 
+// A model without region limits (axis6) is judged on the sphere: --region sphere restricts nothing, a program
+// file's region line (as optimize writes it) is said and set aside, and only a restricted --region is refused.
+TEST(EvaluateCli, ModelsWithoutRegionLimitsAreJudgedOnTheSphere) {
+  const std::string upper = "1,0,0\n-1,0,0\n0,1,0\n0,-1,0\n0,0,1\n1,1,0\n0,1,1\n1,0,1\n-1,0,1\n";
+  const auto tagged = write_file("upper_cap.csv", "# region: cap:90\nx,y,z\n" + upper);
+  const auto plain = write_file("upper_plain.csv", "x,y,z\n" + upper);
+  const auto from_file = run_cli("evaluate " + tagged + " --model axis6 --json");
+  ASSERT_EQ(from_file.status, 0) << from_file.err;
+  EXPECT_NE(from_file.err.find("its region line (cap:90) is set aside"), std::string::npos) << from_file.err;
+  EXPECT_EQ(count_lines(from_file.err), 1) << from_file.err;
+  EXPECT_EQ(from_file.out, run_cli("evaluate " + plain + " --model axis6 --json").out);
+  const auto sphere = run_cli("evaluate dodecahedral-12 --model axis6 --region sphere --json");
+  ASSERT_EQ(sphere.status, 0) << sphere.err;
+  EXPECT_EQ(sphere.out, run_cli("evaluate dodecahedral-12 --model axis6 --json").out);
+  const auto cap = run_cli("evaluate dodecahedral-12 --model axis6 --region cap:90");
+  EXPECT_EQ(cap.status, 2);
+  EXPECT_EQ(count_lines(cap.err), 1) << cap.err;
+  EXPECT_NE(cap.err.find("--region has limits for the paper9 model only"), std::string::npos) << cap.err;
+  // optimize and sweep likewise: axis6's D limit 729 (six axis directions, each N/6 times) at N = 12.
+  for (const char* command : {"optimize --positions 12", "sweep --positions 12 --criteria D"}) {
+    const auto r = run_cli(std::string(command) + " --model axis6 --region sphere --starts 2 --json");
+    ASSERT_EQ(r.status, 0) << command << ": " << r.err;
+    const auto at = r.out.find("\"value\": ");
+    ASSERT_NE(at, std::string::npos) << r.out;
+    EXPECT_NEAR(std::stod(r.out.substr(at + 9)), 729.0, 1e-6) << r.out;
+    EXPECT_EQ(run_cli(std::string(command) + " --model axis6 --region cap:90 --starts 2").status, 2) << command;
+  }
+}
+
 TEST(CatalogueCli, ListsThePaperPrograms) {
   const auto r = run_cli("catalogue");
   ASSERT_EQ(r.status, 0) << r.err;
