@@ -6,6 +6,7 @@
 
 #include "commands/core/region_request.hpp"
 #include "commands/core/work_bound.hpp"
+#include "commands/design/limits_statement.hpp"
 #include "numeric/program/catalogue.hpp"
 #include "numeric/region/region_limit.hpp"
 
@@ -63,6 +64,12 @@ AugmentResult augment(const AugmentRequest& q, const Progress& progress) {
       r.limit = limit_value(q.criterion, r.region);
       r.efficiency = efficiency(q.criterion, *r.limit, r.augmented.value);
     } catch (const std::invalid_argument&) {  // no known limit for this criterion
+    }
+  } else if (r.region.is_sphere() && std::isfinite(r.augmented.value)) {
+    // Another model on the sphere: its stated limit, as optimize and sweep judge it (none where it states none).
+    if (const auto stated = reported_limit(q.criterion, q.model, std::nullopt)) {
+      r.limit = stated->statement.value;
+      r.efficiency = efficiency(q.criterion, *r.limit, r.augmented.value, model_parameters(q.model));
     }
   }
   return r;

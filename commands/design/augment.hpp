@@ -32,7 +32,8 @@ struct AugmentResult {
   Region region;
   int given = 0;  // positions given
   AugmentedProgram augmented;
-  // The region's limit of the criterion (paper9; none when unknown) and limit / value (D: P-th root):
+  // The region's limit of the criterion (paper9; another model's stated limit on the sphere; none when unknown) and
+  // limit / value (D: P-th root):
   // how far the N + K positions are from the best any number of positions could do there.
   std::optional<double> limit, efficiency;
   std::vector<ExtraColumn> columns;  // for the program file on a one-zone region

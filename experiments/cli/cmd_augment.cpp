@@ -46,7 +46,10 @@ int run(const commands::Values& v) {
     char numbers[96];
     std::snprintf(numbers, sizeof numbers, "efficiency %.6f against the limit %.10g", *r.efficiency, *r.limit);
     std::cout << numbers << " on " << r.region.text() << " (limit / value"
-              << (r.criterion == CriterionKind::D ? ", D as its 9th root" : "") << ")\n";
+              << (r.criterion == CriterionKind::D
+                      ? ", D as its " + std::to_string(model_parameters(r.model)) + "th root"
+                      : "")
+              << ")\n";
   }
   return 0;
 }

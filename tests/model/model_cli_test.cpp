@@ -129,6 +129,9 @@ TEST(ModelCli, RandomSweepAndAugmentTakeTheModel) {
   EXPECT_EQ(aj["added"].size(), 6u);
   EXPECT_NEAR(aj["value_before"].get<double>(), 18.0, 1e-9);
   EXPECT_NEAR(aj["value"].get<double>(), 18.0, 1e-6);
+  // Judged against axis6's stated A limit on the sphere, as optimize and sweep judge it (was null).
+  EXPECT_EQ(aj["limit"].get<double>(), 18.0);
+  EXPECT_NEAR(aj["efficiency"].get<double>(), 1.0, 1e-6);
 }
 
 }  // namespace
