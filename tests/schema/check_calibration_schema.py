@@ -28,8 +28,10 @@ jsonschema.Draft202012Validator.check_schema(schema)
 validator = jsonschema.Draft202012Validator(schema)
 result_schema = json.load(open(os.path.join(source, "docs", "schema", "results", "calibrate.json")))
 jsonschema.Draft202012Validator.check_schema(result_schema)
-result_validator = jsonschema.Draft202012Validator(
-    result_schema, resolver=jsonschema.RefResolver.from_schema(result_schema, store={schema["$id"]: schema}))
+# The result's $ref names the file's schema by its $id; the validator gets the file's schema embedded (under its own
+# $id, so its "#" stays the file), so that no version of python3-jsonschema looks the $id up on the network.
+assert result_schema["$ref"] == schema["$id"] + "#/$defs/fields", result_schema["$ref"]
+result_validator = jsonschema.Draft202012Validator({**result_schema, "$defs": {"calibration_file": schema}})
 fields = schema["$defs"]["fields"]["properties"]
 HEADER = ["format_version", "created", "tool", "sensor", "units", "units_reason", "region"]
 shared = os.path.join(os.path.dirname(os.path.abspath(source)), "shared", "data")
