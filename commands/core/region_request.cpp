@@ -24,6 +24,12 @@ bool is_sphere(const std::vector<std::string>& specs) {
   return specs.empty() || (specs.size() == 1 && specs[0] == "sphere");
 }
 
+std::string specs_text(const std::vector<std::string>& specs) {
+  std::string text;
+  for (const auto& s : specs) text += (text.empty() ? "" : ";") + s;
+  return text;
+}
+
 void check_conditioning(const Region& region, Warnings& warnings, const std::string& option) {
   double condition = 0;
   try {
@@ -137,10 +143,8 @@ std::vector<std::string> regions_for(const std::vector<std::string>& given, cons
   }
   if (given.empty()) return file.specs;
   if (given != file.specs) {
-    std::string text;
-    for (const auto& s : file.specs) text += (text.empty() ? "" : ";") + s;
-    warnings.push_back({program_argument, "the program's region " + text + " (line " + std::to_string(file.line) +
-                                              words(") is replaced by {region}")});
+    warnings.push_back({program_argument, "the program's region " + specs_text(file.specs) + " (line " +
+                                              std::to_string(file.line) + words(") is replaced by {region}")});
   }
   return given;
 }

@@ -27,6 +27,9 @@ void check_conditioning(const Region& region, Warnings& warnings, const std::str
 // True when the specs name the whole sphere (none, or only "sphere").
 bool is_sphere(const std::vector<std::string>& specs);
 
+// The specs as a program file's region line holds them ("cap:90;cap:30:x"), for messages.
+std::string specs_text(const std::vector<std::string>& specs);
+
 // For a region of one cap or band: the columns tilt_deg (from its axis) and azimuth_deg (in its
 // azimuth_frame) of each position, for a program file; none otherwise.
 std::vector<ExtraColumn> region_columns(const Region& region, const Program& program);

@@ -81,16 +81,16 @@ EvaluateResult evaluate(const EvaluateRequest& q, const Progress& progress) {
   // file's region line (which optimize writes) is said and set aside; a restricted --region is refused.
   std::vector<std::string> regions = q.regions;
   if (!model_supports(q.model, ModelCapability::region_limits) && !regions.empty()) {
-    if (!is_sphere(regions) && !q.regions_from_file)
-      throw UsageError(words("evaluate: {region} has limits for the ") +
-                       models_supporting(ModelCapability::region_limits) + words(" model only (got {model} ") +
-                       std::string(model_name(q.model)) + ")");
-    std::string specs;
-    for (const auto& spec : regions) specs += (specs.empty() ? "" : ";") + spec;
-    if (!is_sphere(regions))
-      r.warnings.push_back({q.name, "its region line (" + specs + ") is set aside: region limits exist for the " +
+    if (!is_sphere(regions)) {
+      if (!q.regions_from_file)
+        throw UsageError(words("evaluate: {region} has limits for the ") +
+                         models_supporting(ModelCapability::region_limits) + words(" model only (got {model} ") +
+                         std::string(model_name(q.model)) + ")");
+      r.warnings.push_back({q.name, "its region line (" + specs_text(regions) +
+                                        ") is set aside: region limits exist for the " +
                                         models_supporting(ModelCapability::region_limits) + " model only, so " +
                                         std::string(model_name(q.model)) + " is judged without efficiencies"});
+    }
     regions.clear();
   }
   r.name = q.name;
