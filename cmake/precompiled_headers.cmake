@@ -7,11 +7,24 @@
 option(SCALCAL_PCH "precompile the headers every unit of a target includes" ON)
 set(SCALCAL_PCH_HEADERS <algorithm> <cmath> <cstdio> <functional> <iostream> <map> <memory> <optional>
     <sstream> <stdexcept> <string> <vector> <Eigen/Dense>)
+# And the project's headers that most units include (the model and criterion registries, with the Eigen
+# decompositions dense_instances.hpp declares extern, and the program): a class template they instantiate, such
+# as the four eigen-solvers the extern declarations need whole, is then instantiated once in the header instead
+# of in each of some 200 units (55 CPU-s of the CLI's build, docs/benchmarks.md). What is in the header every
+# unit of its target sees, so a unit that forgets to include one of these still compiles here:
+# -DSCALCAL_PCH_PROJECT=OFF leaves them out, as the build without GiNaC does (scripts/without_ginac.sh), where such
+# a unit fails.
+option(SCALCAL_PCH_PROJECT "precompile the project's most included headers too (with SCALCAL_PCH)" ON)
+set(SCALCAL_PCH_PROJECT_HEADERS "")
+if(SCALCAL_PCH_PROJECT)
+  set(SCALCAL_PCH_PROJECT_HEADERS [["numeric/model/registry.hpp"]] [["numeric/criteria/registry.hpp"]]
+      [["numeric/program/program.hpp"]])
+endif()
 
 # scalcal_precompile(TARGET [EXTRA_HEADER ...])
 function(scalcal_precompile target)
   if(SCALCAL_PCH)
-    target_precompile_headers(${target} PRIVATE ${SCALCAL_PCH_HEADERS} ${ARGN})
+    target_precompile_headers(${target} PRIVATE ${SCALCAL_PCH_HEADERS} ${SCALCAL_PCH_PROJECT_HEADERS} ${ARGN})
   endif()
 endfunction()
 
