@@ -183,6 +183,10 @@ OptimizeResult optimize(const OptimizeRequest& q, const Progress& progress) {
   // The polished program is the better one (its rounding to double is as close to the optimum as
   // double allows): it is the one written and printed.
   r.program = r.polished ? r.polished->program : r.synthesis.program;
+  // Its value is the one reported beside it: the polished program's in double (the same evaluation as evaluate's),
+  // not the multistart's, which differs in the last digits (D at N = 9: 18957074.258508656 against the polished
+  // 18957074.2585090838...).
+  r.value = r.polished ? evaluate(opt.model, r.program).value(opt.criterion) : r.synthesis.value;
   if (r.region) r.columns = region_columns(*r.region, r.program);
   const int P = model_parameters(opt.model);
   if (!model_supports(opt.model, ModelCapability::criteria_native) || r.region) {
@@ -191,7 +195,7 @@ OptimizeResult optimize(const OptimizeRequest& q, const Progress& progress) {
     r.limit_statement = reported_limit(opt.criterion, opt.model, r.region);  // none: no known limit
     if (r.limit_statement) r.limit = r.limit_statement->statement.value;
   }
-  if (r.limit) r.efficiency = efficiency(opt.criterion, *r.limit, r.synthesis.value, P);
+  if (r.limit) r.efficiency = efficiency(opt.criterion, *r.limit, r.value, P);
   return r;
 }
 
@@ -200,7 +204,7 @@ Json to_json(const OptimizeResult& r) {
   const SynthesisResult& s = r.synthesis;
   Json j{{"criterion", std::string(criterion_name(r.criterion))},
          {"positions", r.positions},
-         {"value", s.value},
+         {"value", r.value},
          {"program", program_json(r.program)},
          {"starts", s.starts},
          {"stopping", s.stopping},

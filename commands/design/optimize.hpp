@@ -39,7 +39,8 @@ struct OptimizeResult {
   int positions = 0;
   SynthesisResult synthesis;
   std::optional<PolishResult> polished;
-  Program program;                    // the best: the polished one when there is a polish
+  Program program;   // the best: the polished one when there is a polish
+  double value = 0;  // the criterion of `program`: the multistart's, or the polished program's evaluated in double
   std::optional<Region> region;       // with --region (as given: the limit and the program file's region line)
   std::optional<Region> designed_on;  // with --margin: the region inset by the margin, where positions lie
   std::optional<double> limit;        // the region's, or the model's stated limit; none when unknown

@@ -56,7 +56,7 @@ void print_thermal(const commands::ThermalOptimizeResult& t) {
 void print_text(const commands::OptimizeResult& r) {
   if (r.thermal) return print_thermal(*r.thermal);
   const SynthesisResult& s = r.synthesis;
-  std::cout << criterion_name(r.criterion) << " = " << std::setprecision(15) << s.value << "  (N = " << r.positions
+  std::cout << criterion_name(r.criterion) << " = " << std::setprecision(15) << r.value << "  (N = " << r.positions
             << ", " << s.hits << " of " << s.starts << " starts reached it (stopped: " << s.stopping << "), "
             << s.distinct << (s.distinct == 1 ? " program" : " distinct programs") << " up to symmetry, "
             << std::setprecision(3) << s.seconds << " s)\n";

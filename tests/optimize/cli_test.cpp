@@ -48,6 +48,22 @@ TEST(OptimizeCli, DigitsWritesThePolishedProgram) {
   EXPECT_EQ(std::stod(first_row.substr(0, first_row.find(','))), program[0][0].get<double>());
 }
 
+// With --digits, `value` is the polished program's, the one printed and written, as evaluate finds it to rounding
+// (the file's reader normalises each position again): E at N = 12, whose limit 12 the 12 edge positions attain
+// (proofs/aes_limits.md), ends the multistart 1.6e-11 above it, the polished program within 1e-14.
+TEST(OptimizeCli, DigitsValueIsThePolishedPrograms) {
+  const auto file = (scalcal::testing::scratch_dir() / "e12.csv").string();
+  const auto r = scalcal::testing::run_cli("optimize --positions 12 --criterion E --starts 4 --digits 30 --out " +
+                                           file + " --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  const auto e = scalcal::testing::run_cli("evaluate " + file + " --json");
+  ASSERT_EQ(e.status, 0) << e.err;
+  const double evaluated = nlohmann::json::parse(e.out).at("E").get<double>();
+  EXPECT_NEAR(evaluated, 12.0, 1e-13);
+  EXPECT_NEAR(j.at("value").get<double>(), evaluated, 1e-13);
+}
+
 // Without a polish, S at N = 18 ends within 1e-14 of 6 + 3 sqrt 3 (Newton on the active conditions
 // after Ipopt), and the default multistart says why it stopped.
 TEST(OptimizeCli, SReachesItsLimitToRounding) {
