@@ -78,15 +78,15 @@ int run(const commands::Values& v) {
     if (v.given("--out") && r.converged())
       write_output_file(v.text("--out"), [&](std::ostream& f) { write_json(f, commands::calibration_file_json(r)); });
     if (v.flag("--json"))
-      print_json(commands::to_json(r));
+      print_json(commands::calibration_file_json(r));
     else
       std::cout << thermal_text(*r.thermal);
     return r.status();
   }
   if (v.given("--out"))
     write_output_file(v.text("--out"), [&](std::ostream& f) { write_json(f, commands::calibration_file_json(r)); });
-  if (v.flag("--json"))
-    print_json(commands::to_json(r));
+  if (v.flag("--json"))  // the file's document, header and units included, as a gyroscope's and Python's
+    print_json(commands::calibration_file_json(r));
   else
     std::cout << calibrate_text(r);
   return r.status();
