@@ -32,6 +32,7 @@
 #include "numeric/polish/newton_least_squares.hpp"
 #include "numeric/polish/polish.hpp"
 #include "numeric/polish/polish_ops.hpp"
+#include "numeric/polish/value_text.hpp"
 
 namespace scalcal::polish_detail {
 
@@ -285,7 +286,7 @@ PolishResult polish_eigenvalue(const PolishOps<Model>& criterion, const Program&
                             ? "multiple-eigenvalue conditions solved, with a positive semidefinite dual"
                             : "no root passed the checks of a maximum; digits limited to what the residual vouches for";
   out.digits = best.digits;
-  out.value_digits = best.E.str(out.digits, std::ios_base::showpoint);
+  out.value_digits = value_text(best.E, out.digits);
   out.program = best.program.cast<double>();
   return out;
 }

@@ -16,6 +16,7 @@
 #include "numeric/polish/newton_least_squares.hpp"
 #include "numeric/polish/polish.hpp"
 #include "numeric/polish/polish_ops.hpp"
+#include "numeric/polish/value_text.hpp"
 
 namespace scalcal::polish_detail {
 
@@ -162,7 +163,7 @@ PolishResult polish_kkt(const PolishOps<Model>& criterion, const Program& progra
   const Real value = polish_value(criterion, polished);
   // A residual r moves the value by O(r) at most: claim only the digits it leaves untouched.
   out.digits = converged ? P : digits_left_by(norm, P);
-  out.value_digits = value.str(out.digits, std::ios_base::showpoint);
+  out.value_digits = value_text(value, out.digits);
   out.program = polished.template cast<double>();
   return out;
 }

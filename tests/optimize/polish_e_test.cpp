@@ -13,6 +13,8 @@
 
 #include "numeric/criteria/evaluation.hpp"
 #include "numeric/polish/polish.hpp"
+#include "numeric/polish/real.hpp"
+#include "numeric/polish/value_text.hpp"
 #include "numeric/synthesis/multistart.hpp"
 
 namespace scalcal {
@@ -123,6 +125,19 @@ TEST(PolishE, ResidualMeasuresTheFirstOrderConditions) {
     EXPECT_LT(distance_from_twelve(p), 12 * pow(mp60(10), 1 - p.digits));
     previous = p.residual;
   }
+}
+
+// value_digits's text in the polish's MPFR numbers, written by hand: the digits claimed, trailing zeros kept, no bare
+// point (MPFR's showpoint alone writes 14.7 to 1 digit as "1.e+01" and 15 to 2 as "15.").
+TEST(PolishE, ValueTextHasNoBarePoint) {
+  const polish_detail::PrecisionGuard precision(50);
+  using Real = polish_detail::Real;
+  EXPECT_EQ(value_text(Real(14.7), 1), "1e+01");
+  EXPECT_EQ(value_text(Real(15), 2), "15");
+  EXPECT_EQ(value_text(Real(15), 5), "15.000");
+  EXPECT_EQ(value_text(Real(12.187), 3), "12.2");
+  EXPECT_EQ(value_text(Real(0.5), 3), "0.500");
+  EXPECT_EQ(value_text(Real(123456), 3), "1.23e+05");
 }
 
 }  // namespace
