@@ -184,8 +184,8 @@ OptimizeResult optimize(const OptimizeRequest& q, const Progress& progress) {
   // double allows): it is the one written and printed.
   r.program = r.polished ? r.polished->program : r.synthesis.program;
   // Its value is the one reported beside it: the polished program's in double (the same evaluation as evaluate's),
-  // not the multistart's, which differs in the last digits (D at N = 9: 18957074.258508656 against the polished
-  // 18957074.2585090838...).
+  // not the multistart's, which can be further off (E at N = 12: 12.000000000016222, the polished program's
+  // 12.00000000000001).
   r.value = r.polished ? evaluate(opt.model, r.program).value(opt.criterion) : r.synthesis.value;
   if (r.region) r.columns = region_columns(*r.region, r.program);
   const int P = model_parameters(opt.model);
