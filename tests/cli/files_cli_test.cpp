@@ -112,6 +112,7 @@ TEST(FilesCli, TextPositionLabelsCalibrateAsNumbers) {
   }
   ASSERT_EQ(data_rows, 180);
   const std::string labels = write_file("bench_labelled.csv", labelled);
+  const FixedDate date;  // the two --json documents state when they were made
   const auto a = run_cli("calibrate --measurements " + numbered + " --magnitude 1 --json");
   const auto b = run_cli("calibrate --measurements " + labels + " --magnitude 1 --json");
   ASSERT_EQ(a.status, 0) << a.err;

@@ -65,4 +65,21 @@ inline CliResult run_cli(const std::vector<std::string>& args, const CliOptions&
   return run_cli(line, options);
 }
 
+// For its lifetime every run states one date: calibrate's file and its --json hold `created`, the moment of the run
+// unless SOURCE_DATE_EPOCH fixes it, so two runs compared byte for byte would differ when a second ticks between them.
+class FixedDate {
+ public:
+  FixedDate() {
+    if (const char* epoch = std::getenv("SOURCE_DATE_EPOCH")) saved_ = epoch, had_ = true;
+    ::setenv("SOURCE_DATE_EPOCH", "1700000000", 1);
+  }
+  ~FixedDate() { had_ ? ::setenv("SOURCE_DATE_EPOCH", saved_.c_str(), 1) : ::unsetenv("SOURCE_DATE_EPOCH"); }
+  FixedDate(const FixedDate&) = delete;
+  FixedDate& operator=(const FixedDate&) = delete;
+
+ private:
+  std::string saved_;
+  bool had_ = false;
+};
+
 }  // namespace scalcal::testing
