@@ -72,23 +72,17 @@ int run(const commands::Values& v) {
   const commands::CalibrateResult r =
       commands::calibrate(commands::calibrate_request(v), terminal_progress("calibrate"));
   print_warnings("calibrate", r.warnings);
-  if (r.thermal) {
-    if (!r.thermal->fit.problem.empty())
-      std::cerr << "scalcal calibrate: " << r.file << ": " << r.thermal->fit.problem << "\n";
-    if (v.given("--out") && r.converged())
-      write_output_file(v.text("--out"), [&](std::ostream& f) { write_json(f, commands::calibration_file_json(r)); });
-    if (v.flag("--json"))
-      print_json(commands::calibration_file_json(r));
-    else
-      std::cout << thermal_text(*r.thermal);
-    return r.status();
-  }
-  if (v.given("--out"))
-    write_output_file(v.text("--out"), [&](std::ostream& f) { write_json(f, commands::calibration_file_json(r)); });
-  if (v.flag("--json"))  // the file's document, header and units included, as a gyroscope's and Python's
-    print_json(commands::calibration_file_json(r));
+  if (r.thermal && !r.thermal->fit.problem.empty())
+    std::cerr << "scalcal calibrate: " << r.file << ": " << r.thermal->fit.problem << "\n";
+  // One document for --out and --json (header and units included, as a gyroscope's and Python's), so that both
+  // state the same `created`. A thermal fit that did not converge is printed, not written.
+  const commands::Json file = commands::calibration_file_json(r);
+  if (v.given("--out") && (!r.thermal || r.converged()))
+    write_output_file(v.text("--out"), [&](std::ostream& f) { write_json(f, file); });
+  if (v.flag("--json"))
+    print_json(file);
   else
-    std::cout << calibrate_text(r);
+    std::cout << (r.thermal ? thermal_text(*r.thermal) : calibrate_text(r));
   return r.status();
 }
 

@@ -76,6 +76,12 @@ MUTATIONS = {
     "'linear' false under the paper's model": lambda d: d.__setitem__("linear", False),
 }
 
+
+def undated(document):
+    """A calibration document less its `created` keys, at any depth."""
+    return {k: undated(v) if isinstance(v, dict) else v for k, v in document.items() if k != "created"}
+
+
 with tempfile.TemporaryDirectory() as work:
     os.symlink(os.path.join(source, "data"), os.path.join(work, "data"))
     files, printed = {}, {}
@@ -103,10 +109,8 @@ with tempfile.TemporaryDirectory() as work:
             failures.append(f"{name} --json: {'/'.join(map(str, e.absolute_path)) or '(top)'}: {e.message[:200]}")
         # What --json prints is the file (`created` aside, a gyroscope's accelerometer's too: the two runs are a
         # moment apart).
-        def undated(d):
-            return {k: undated(v) if isinstance(v, dict) else v for k, v in d.items() if k != "created"}
-        differ = sorted(k for k in set(document) | set(files[name])
-                        if k != "created" and undated(document).get(k) != undated(files[name]).get(k))
+        printed_doc, file_doc = undated(document), undated(files[name])
+        differ = sorted(k for k in set(printed_doc) | set(file_doc) if printed_doc.get(k) != file_doc.get(k))
         if differ or "created" not in document:
             failures.append(f"{name} --json: differs from the file it writes in {differ}")
     if "paper9" in printed and printed["paper9"]:
