@@ -13,7 +13,9 @@ namespace scalcal {
 
 void pin_blas_kernel() {
 #if defined(__x86_64__)
-  if (std::getenv("OPENBLAS_CORETYPE") != nullptr) return;
+  // An empty value counts as unset, as OpenBLAS itself takes it (it then picks the CPU's kernel).
+  const char* chosen = std::getenv("OPENBLAS_CORETYPE");
+  if (chosen != nullptr && *chosen != '\0') return;
   if (setenv("OPENBLAS_CORETYPE", kBlasKernel, 1) != 0) return;
   std::ifstream in("/proc/self/cmdline", std::ios::binary);
   const std::string all((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());

@@ -11,7 +11,7 @@ namespace scalcal {
 
 inline constexpr const char* kBlasKernel = "Prescott";
 
-// On x86-64 with OPENBLAS_CORETYPE unset: sets it to kBlasKernel and starts the process again (the
+// On x86-64 with OPENBLAS_CORETYPE unset or empty: sets it to kBlasKernel and starts the process again (the
 // kernel is chosen before main runs) with the same arguments, read from /proc/self/cmdline. Returns
 // only when nothing is to be done or the new start failed (then the CPU's kernel stays).
 void pin_blas_kernel();

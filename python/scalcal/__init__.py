@@ -16,8 +16,10 @@ import warnings as _warnings
 
 # The same numbers as the CLI on every CPU: OpenBLAS's generic kernel, which it reads when it loads
 # (numeric/io/blas_kernel.hpp); checked below, since numpy imported first has loaded it already.
-_KERNEL_CHOSEN = "OPENBLAS_CORETYPE" in _os.environ
-_os.environ.setdefault("OPENBLAS_CORETYPE", "Prescott")
+# An empty value counts as unset, as the CLI takes it (OpenBLAS would pick the CPU's kernel).
+_KERNEL_CHOSEN = bool(_os.environ.get("OPENBLAS_CORETYPE"))
+if not _KERNEL_CHOSEN:
+    _os.environ["OPENBLAS_CORETYPE"] = "Prescott"
 
 from . import _scalcal
 

@@ -390,3 +390,16 @@ def test_build_info_says_what_the_build_holds():
     assert info == {"version": scalcal.__version__, "ginac": True, "lacking": {}}
     assert "def build_info() -> dict[str, Any]: ..." in open(
         os.path.join(os.path.dirname(scalcal.__file__), "__init__.pyi")).read()
+
+
+def test_an_empty_kernel_choice_is_none():
+    # OPENBLAS_CORETYPE set but empty is no choice (OpenBLAS then picks the CPU's kernel): the module pins
+    # Prescott as when it is unset, and as the CLI does (numeric/io/blas_kernel.hpp).
+    env = dict(os.environ, OPENBLAS_CORETYPE="")
+    r = subprocess.run(["python3", "-W", "error", "-c",
+                        "import scalcal, os; print(scalcal._scalcal.blas_kernel(), os.environ['OPENBLAS_CORETYPE'])"],
+                       capture_output=True, text=True, env=env)
+    assert r.returncode == 0, r.stderr
+    kernel, variable = r.stdout.split()
+    assert variable == "Prescott"
+    assert kernel in ("Prescott",), kernel
