@@ -7,6 +7,7 @@
 #include "numeric/criteria/identifiability.hpp"
 #include "numeric/io/input_error.hpp"
 #include "numeric/io/option_words.hpp"
+#include "numeric/model/registry.hpp"
 #include "numeric/program/catalogue.hpp"
 
 namespace scalcal::commands {
@@ -22,6 +23,12 @@ std::string short_number(double v) {
 
 bool is_sphere(const std::vector<std::string>& specs) {
   return specs.empty() || (specs.size() == 1 && specs[0] == "sphere");
+}
+
+UsageError region_limits_refusal(std::string_view command, std::string_view model) {
+  return UsageError(std::string(command) + words(": {region} has limits for the ") +
+                    models_supporting(ModelCapability::region_limits) + words(" model only (got {model} ") +
+                    std::string(model) + ")");
 }
 
 std::string specs_text(const std::vector<std::string>& specs) {

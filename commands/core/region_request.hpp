@@ -3,8 +3,10 @@
 // program for a restricted bench.
 #pragma once
 #include <string>
+#include <string_view>
 #include <vector>
 
+#include "commands/core/usage_error.hpp"
 #include "commands/core/warning.hpp"
 #include "numeric/program/program_csv.hpp"
 #include "numeric/region/region.hpp"
@@ -26,6 +28,10 @@ void check_conditioning(const Region& region, Warnings& warnings, const std::str
 
 // True when the specs name the whole sphere (none, or only "sphere").
 bool is_sphere(const std::vector<std::string>& specs);
+
+// The refusal of a restricted region under a model without region limits, one sentence for every command:
+// "COMMAND: --region has limits for the paper9 model only (got --model axis6)".
+UsageError region_limits_refusal(std::string_view command, std::string_view model);
 
 // The specs as a program file's region line holds them ("cap:90;cap:30:x"), for messages.
 std::string specs_text(const std::vector<std::string>& specs);

@@ -1,6 +1,7 @@
 // `scalcal evaluate` (evaluate.hpp).
 #include "commands/design/evaluate.hpp"
 
+#include <filesystem>
 #include <stdexcept>
 
 #include "commands/core/common_options.hpp"
@@ -11,6 +12,7 @@
 #include "numeric/criteria/identifiability.hpp"
 #include "numeric/io/input_error.hpp"
 #include "numeric/io/option_words.hpp"
+#include "numeric/program/catalogue.hpp"
 #include "numeric/region/region_limit.hpp"
 
 namespace scalcal::commands {
@@ -39,6 +41,10 @@ EvaluateRequest evaluate_request(const Values& v) {
                        words(" needs {temperature T1..T2} (degrees Celsius)"));
     q.model = q.thermal->base;
     q.regions = v.list("--region");
+    // A catalogue name is a program without set-points: say so rather than fail to open a file of that name.
+    if (!std::filesystem::exists(q.name) && named_program(q.name))
+      throw UsageError(words("evaluate: ") + q.name + words(" is a catalogue program without temperatures; {model} ") +
+                       q.thermal->name() + " takes a CSV file with columns x,y,z,t_c, as optimize writes for it");
     q.thermal_program = read_thermal_program_csv(q.name);
     return q;
   }
@@ -63,9 +69,7 @@ EvaluateResult evaluate(const EvaluateRequest& q, const Progress& progress) {
     std::optional<Region> region;
     if (!q.regions.empty()) {
       if (!model_supports(q.thermal->base, ModelCapability::region_limits))
-        throw UsageError(words("evaluate: {region} has limits for the ") +
-                         models_supporting(ModelCapability::region_limits) + words(" model only (got {model} ") +
-                         q.thermal->name() + ")");
+        throw region_limits_refusal("evaluate", q.thermal->name());
       region = resolve_region(q.regions, r.warnings);
       Program positions;
       for (const auto& e : q.thermal_program.positions) positions.positions.push_back(e);
@@ -82,10 +86,7 @@ EvaluateResult evaluate(const EvaluateRequest& q, const Progress& progress) {
   std::vector<std::string> regions = q.regions;
   if (!model_supports(q.model, ModelCapability::region_limits) && !regions.empty()) {
     if (!is_sphere(regions)) {
-      if (!q.regions_from_file)
-        throw UsageError(words("evaluate: {region} has limits for the ") +
-                         models_supporting(ModelCapability::region_limits) + words(" model only (got {model} ") +
-                         std::string(model_name(q.model)) + ")");
+      if (!q.regions_from_file) throw region_limits_refusal("evaluate", model_name(q.model));
       r.warnings.push_back({q.name, "its region line (" + specs_text(regions) +
                                         ") is set aside: region limits exist for the " +
                                         models_supporting(ModelCapability::region_limits) + " model only, so " +

@@ -84,9 +84,7 @@ LimitsResult limits(const LimitsRequest& q, const Progress& progress) {
     LimitsResult r;
     r.model = q.model;
     if (!sphere && !model_supports(q.model, ModelCapability::region_limits))
-      throw UsageError(words("limits: {region} has limits for the ") +
-                       models_supporting(ModelCapability::region_limits) + words(" model only (got {model} ") +
-                       q.thermal->name() + ")");
+      throw region_limits_refusal("limits", q.thermal->name());
     if (!sphere) r.region = resolve_region(q.regions, r.warnings);
     r.thermal = thermal_limits(*q.thermal, *q.temperature, r.region, progress);
     return r;

@@ -52,9 +52,7 @@ std::string nearest_splits(int N, int base_parameters, int points) {
 ThermalOptimizeResult thermal_optimize(const OptimizeRequest& q, const ThermalModel& model,
                                        const TemperatureRange& range, const Progress& progress) {
   if (!q.regions.empty() && !model_supports(model.base, ModelCapability::region_limits))
-    throw UsageError(words("optimize: {region} has limits for the ") +
-                     models_supporting(ModelCapability::region_limits) + words(" model only (got {model} ") +
-                     model.name() + ")");
+    throw region_limits_refusal("optimize", model.name());
   if (!q.from.empty() || q.start)
     throw UsageError(words("optimize: {from} does not apply to a thermal model (the program is a product)"));
   ThermalOptimizeResult r;

@@ -111,9 +111,7 @@ Sweep::Sweep(const SweepRequest& q) : request_(q), limits_(kCriterionCount) {
                      std::to_string(model_parameters(q.model)) + words(" parameters of {model} ") +
                      std::string(model_name(q.model)));
   const bool region_limits = model_supports(q.model, ModelCapability::region_limits);
-  if (!region_limits && !is_sphere(q.regions))
-    throw UsageError(words("sweep: {region} works with the ") + models_supporting(ModelCapability::region_limits) +
-                     words(" model only (got {model} ") + std::string(model_name(q.model)) + ")");
+  if (!region_limits && !is_sphere(q.regions)) throw region_limits_refusal("sweep", model_name(q.model));
   // --region sphere restricts nothing: a model without region limits sweeps the sphere with its stated limits.
   if (!q.regions.empty() && region_limits) region_ = resolve_region(q.regions, warnings_);
   for (const CriterionKind c : q.criteria)

@@ -281,6 +281,17 @@ std::vector<Case> files_written() {
                  },
                  E::error,
                  {"--model cubic12", "paper9, axis6, bias3"}});
+  // A catalogue name under a thermal model was looked for as a file ("cannot open file"): it is a program without
+  // set-points, and the line says what the thermal model takes.
+  out.push_back({"ThermalCatalogueName",
+                 [] { return std::string("evaluate classic18 --model axis6+T1 --temperature 0..40"); },
+                 E::error,
+                 {"classic18 is a catalogue program without temperatures", "--model axis6+T1", "x,y,z,t_c"}});
+  // The region refusal in sweep's words was "works with"; every command now says it in one sentence.
+  out.push_back({"SweepRegionUnderAxis6",
+                 [] { return std::string("sweep --positions 9..10 --model axis6 --region cap:60"); },
+                 E::error,
+                 {"sweep: --region has limits for the paper9 model only (got --model axis6)"}});
   return out;
 }
 
