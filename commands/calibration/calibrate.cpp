@@ -15,6 +15,7 @@
 #include "numeric/calibration/model_choice.hpp"
 #include "numeric/io/input_error.hpp"
 #include "numeric/io/option_words.hpp"
+#include "numeric/model/registry.hpp"
 
 namespace scalcal::commands {
 namespace {
@@ -49,8 +50,9 @@ void choose(const CalibrateRequest& q, const std::vector<PositionSamples>& data,
   if (!q.model) {
     if (!automatic)
       throw InputError(q.file, 0,
-                       std::to_string(data.size()) + " positions carry none of the models paper9, axis6, bias3 (" +
-                           judge_layout(*parse_model("bias3"), layout, gain).why + ")");
+                       std::to_string(data.size()) + " positions carry none of the models " +
+                           models_supporting(ModelCapability::auto_choice) + " (" +
+                           judge_layout(auto_choice_models().back(), layout, gain).why + ")");
     out.model = automatic->model;
     out.model_reason = automatic->reason;
     out.not_identifiable = automatic->not_identifiable;

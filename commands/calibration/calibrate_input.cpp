@@ -11,6 +11,7 @@
 #include "numeric/calibration/measurements_csv.hpp"
 #include "numeric/calibration/model_calibration.hpp"
 #include "numeric/calibration/model_choice.hpp"
+#include "numeric/model/registry.hpp"
 
 #include <Eigen/Dense>
 #include "numeric/io/input_error.hpp"
@@ -271,10 +272,21 @@ namespace {
 
 CalibrationInput input_of(const CalibrationStream& stream, const CalibrateRequest& o) {
   // --model auto takes the richest model the positions carry, down to offsets only.
-  const int needed = o.model ? model_parameters(*o.model) : model_parameters(*parse_model("bias3"));
-  const std::string need = o.model ? words("{model} ") + std::string(model_name(*o.model)) + " needs at least " +
-                                         std::to_string(needed) + " positions"
-                                   : "paper9 needs at least 9 positions (axis6 6, bias3 3)";
+  const std::vector<ModelKind> automatic = auto_choice_models();  // richest first
+  const int needed = model_parameters(o.model ? *o.model : automatic.back());
+  std::string need;
+  if (o.model) {
+    need = words("{model} ") + std::string(model_name(*o.model)) + " needs at least " + std::to_string(needed) +
+           " positions";
+  } else {  // "paper9 needs at least 9 positions (axis6 6, bias3 3)"
+    need = std::string(model_name(automatic[0])) + " needs at least " + std::to_string(model_parameters(automatic[0])) +
+           " positions";
+    std::string others;
+    for (std::size_t k = 1; k < automatic.size(); ++k)
+      others += (others.empty() ? "" : ", ") + std::string(model_name(automatic[k])) + " " +
+                std::to_string(model_parameters(automatic[k]));
+    if (!others.empty()) need += " (" + others + ")";
+  }
   const RawLog& log = stream.log();
   CalibrationInput in;
   in.chunks = stream.chunks();
