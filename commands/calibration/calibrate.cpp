@@ -293,10 +293,11 @@ void fit_with_fallback(const CalibrateRequest& q, CalibrationInput& in, const An
   const CalibrationInput first_in = in;
   const CalibrateResult first_out = out;
   bool below = false;
-  for (const char* name : {"paper9", "axis6", "bias3"}) {
-    below = below || name == model_name(first);
-    if (!below || name == model_name(first)) continue;
-    out.model = *parse_model(name);
+  for (const ModelKind simpler : auto_choice_models()) {  // richest first: those after `first`
+    below = below || simpler == first;
+    if (!below || simpler == first) continue;
+    const std::string name(model_name(simpler));
+    out.model = simpler;
     try {
       fit_model(q, in, ao, out);
     } catch (const InputError&) {

@@ -208,7 +208,7 @@ void choose_for_log(const CalibrateRequest& o, const CalibrationStream& stream, 
   if (o.model)
     models.push_back(*o.model);
   else
-    for (const char* name : {"paper9", "axis6", "bias3"}) models.push_back(*parse_model(name));
+    models = auto_choice_models();  // richest first
   for (const ModelKind model : models) {
     const auto chosen =
         stream.choose([&](const IntervalDetection& d) { return detection_score(stream.log(), d, o, model); });

@@ -8,6 +8,7 @@
 
 #include "numeric/export/formats.hpp"
 #include "numeric/export/target_units.hpp"
+#include "numeric/model/registry.hpp"
 
 namespace scalcal {
 namespace {
@@ -68,7 +69,9 @@ void write(const ExportInput& in, ExportOutput& out) {
   const CalibrationFacts& f = in.facts;
   const std::string P = "SCALCAL_" + prefix + "_";
   const Mat3& C = in.correction.matrix;
-  const int parameters = f.model == "bias3" ? 3 : f.model == "axis6" ? 6 : 9;
+  // The C library's model is its count of parameters (scalcal_model: 3, 6 or 9); a file naming no model is the paper's.
+  const std::optional<ModelKind> kind = parse_model(f.model);
+  const int parameters = kind ? model_parameters(*kind) : model_parameters(ModelKind::paper9);
   std::string s = "/* scalcal calibration: `scalcal export --format c` (" + commented(f.tool) +
                   "). Sensor: " + commented(f.sensor) + ".\n * physical = " + P + "MATRIX (raw - " + P +
                   "OFFSET), the paper's convention (phi_kj = phi_jk). */\n";
