@@ -202,19 +202,28 @@ ExactCriteria exact_criteria(const matrix& M, const ex& N, const std::vector<Par
     eig.insert(eig.end(), ev.begin(), ev.end());
   }
   c.eigenvalues = eig;
-  // The closed forms known here, by the registered criterion's name; any other criterion has none.
+  // Each registered criterion's closed form, as its type states it (numeric/criteria/closed_form_kind.hpp); a
+  // criterion that states none has none here.
   for (CriterionKind k : kCriteria) {
     ExactValue& v = c.values[static_cast<std::size_t>(k.index())];
-    const std::string_view name = criterion_name(k);
-    if (name == "D") v.candidates = {canonical(GiNaC::pow(N, P) / det)};
-    if (name == "A") v.candidates = {canonical(N * trace)};
-    if (name == "E") {
-      if (!eig_symbolic)
-        for (const auto& l : eig) add_distinct(v.candidates, eig_exact ? canonical(N / l) : GiNaC::evalf(N / l));
-      v.exact = eig_exact;
+    switch (criterion_closed_form(k)) {
+      case ClosedFormKind::PowerOverDeterminant:
+        v.candidates = {canonical(GiNaC::pow(N, P) / det)};
+        break;
+      case ClosedFormKind::TraceOfK:
+        v.candidates = {canonical(N * trace)};
+        break;
+      case ClosedFormKind::LargestEigenvalueOfK:
+        if (!eig_symbolic)
+          for (const auto& l : eig) add_distinct(v.candidates, eig_exact ? canonical(N / l) : GiNaC::evalf(N / l));
+        v.exact = eig_exact;
+        break;
+      case ClosedFormKind::LargestDiagonalOfK:
+        for (int r = 0; r < P; ++r) add_distinct(v.candidates, canonical(N * c.K_diagonal[r]));
+        break;
+      case ClosedFormKind::None:
+        break;
     }
-    if (name == "S")
-      for (int r = 0; r < P; ++r) add_distinct(v.candidates, canonical(N * c.K_diagonal[r]));
   }
   ExactValue* theta[4] = {&c.theta_bias, &c.theta_scale, &c.theta_nonorth, &c.theta_cubic};
   for (int r = 0; r < P; ++r)

@@ -4,6 +4,7 @@
 
 #include <Eigen/Cholesky>
 
+#include "numeric/criteria/closed_form_kind.hpp"
 #include "numeric/criteria/criterion.hpp"
 #include "numeric/criteria/dual_kind.hpp"
 #include "numeric/criteria/exchange_path.hpp"
@@ -19,7 +20,8 @@ struct ACriterion {
   static constexpr std::string_view raw_key = "trace_K";
   static constexpr ProgramSymmetry symmetry = ProgramSymmetry::SignedPermutations;
   using Form = SmoothForm;
-  static constexpr DualKind dual = DualKind::DiagonalSum;  // certified limits on regions
+  static constexpr DualKind dual = DualKind::DiagonalSum;                  // certified limits on regions
+  static constexpr ClosedFormKind closed_form = ClosedFormKind::TraceOfK;  // symbolic/criteria.cpp
 
   template <class Model, InverseInformationView View, class Scalar>
   static Scalar value(const View& k, const Scalar& n) {

@@ -5,6 +5,7 @@
 
 #include <Eigen/Cholesky>
 
+#include "numeric/criteria/closed_form_kind.hpp"
 #include "numeric/criteria/criterion.hpp"
 #include "numeric/criteria/dual_kind.hpp"
 #include "numeric/criteria/exchange_path.hpp"
@@ -20,7 +21,8 @@ struct DCriterion {
   static constexpr std::string_view raw_key = "det_K";
   static constexpr ProgramSymmetry symmetry = ProgramSymmetry::Orthogonal;
   using Form = SmoothForm;
-  static constexpr DualKind dual = DualKind::Determinant;  // certified limits on regions
+  static constexpr DualKind dual = DualKind::Determinant;                              // certified limits on regions
+  static constexpr ClosedFormKind closed_form = ClosedFormKind::PowerOverDeterminant;  // symbolic/criteria.cpp
   // Its value is N^P / det M: random search factors four programs side by side and stops early
   // when none can win (synthesis/random_search_kernel.hpp).
   static constexpr bool determinant_only = true;

@@ -1,6 +1,7 @@
 // E: N lambda_max(K) = N / lambda_min(M), the largest variance in any direction of parameter space.
 // Not differentiable where lambda_min(M) is multiple, which is where its optima are.
 #pragma once
+#include "numeric/criteria/closed_form_kind.hpp"
 #include "numeric/criteria/criterion.hpp"
 #include "numeric/criteria/starts.hpp"
 
@@ -14,6 +15,7 @@ struct ECriterion {
   static constexpr std::string_view raw_key = "lambda_max_K";
   static constexpr ProgramSymmetry symmetry = ProgramSymmetry::SignedPermutations;
   using Form = MaxEigenvalueForm;
+  static constexpr ClosedFormKind closed_form = ClosedFormKind::LargestEigenvalueOfK;  // symbolic/criteria.cpp
 
   template <class Model, InverseInformationView View, class Scalar>
   static Scalar value(const View& k, const Scalar& n) {

@@ -12,6 +12,7 @@
 #include <utility>
 
 #include "numeric/criteria/a_criterion.hpp"
+#include "numeric/criteria/closed_form_kind.hpp"
 #include "numeric/criteria/d_criterion.hpp"
 #include "numeric/criteria/e_criterion.hpp"
 #include "numeric/criteria/s_criterion.hpp"
@@ -75,6 +76,11 @@ auto visit_criterion(CriterionKind c, F&& f) {
 
 inline std::string_view criterion_name(CriterionKind c) {
   return visit_criterion(c, [](auto C) { return std::string_view(decltype(C)::name); });
+}
+
+// The closed form of K the criterion's exact value is (closed_form_kind.hpp); None for one that states none.
+inline ClosedFormKind criterion_closed_form(CriterionKind c) {
+  return visit_criterion(c, [](auto C) { return closed_form_kind<decltype(C)>(); });
 }
 
 inline std::string_view criterion_summary(CriterionKind c) {

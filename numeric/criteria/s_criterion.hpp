@@ -2,6 +2,7 @@
 #pragma once
 #include <cmath>
 
+#include "numeric/criteria/closed_form_kind.hpp"
 #include "numeric/criteria/criterion.hpp"
 #include "numeric/criteria/starts.hpp"
 
@@ -15,6 +16,7 @@ struct SCriterion {
   static constexpr std::string_view raw_key = "max_diag_K";
   static constexpr ProgramSymmetry symmetry = ProgramSymmetry::SignedPermutations;
   using Form = MaxDiagonalForm;
+  static constexpr ClosedFormKind closed_form = ClosedFormKind::LargestDiagonalOfK;  // symbolic/criteria.cpp
 
   template <class Model>
   static std::vector<int> rows() {
