@@ -43,7 +43,7 @@ EvaluateRequest evaluate_request(const Values& v) {
     q.regions = v.list("--region");
     // A catalogue name is a program without set-points: say so rather than fail to open a file of that name.
     if (!std::filesystem::exists(q.name) && named_program(q.name))
-      throw UsageError(words("evaluate: ") + q.name + words(" is a catalogue program without temperatures; {model} ") +
+      throw UsageError("evaluate: " + q.name + words(" is a catalogue program without temperatures; {model} ") +
                        q.thermal->name() + " takes a CSV file with columns x,y,z,t_c, as optimize writes for it");
     q.thermal_program = read_thermal_program_csv(q.name);
     return q;
