@@ -364,7 +364,7 @@ void check_calibrate_request(const CalibrateRequest& o) {
   if (const std::string problem = magnitude_problem(o.magnitude); !problem.empty())
     throw UsageError(words("calibrate: {magnitude} ") + problem);
   // A model whose correction is not linear has a cubic term relative to |I| (cubic12).
-  if (o.model && !corrects_linearly(meter_indices(*o.model)) && !o.magnitude)
+  if (o.model && !corrects_linearly(meter_slots(*o.model)) && !o.magnitude)
     throw UsageError(
         words("calibrate: {magnitude auto} does not work with {model cubic12}: its cubic term is relative to "
               "|I|, which would be one more unknown; give |I|"));

@@ -97,7 +97,7 @@ void check_model(const Json& d, const std::string& file, CalibrationFile& c) {
   const auto kind = parse_model(c.model);
   if (!kind)
     throw InputError(file, 0, "model '" + c.model + "' is not a registered model (" + scalcal::model_names(", ") + ")");
-  c.nonlinear = !corrects_linearly(meter_indices(*kind));
+  c.nonlinear = !corrects_linearly(meter_slots(*kind));
   if (!d.contains("parameters")) return;
   const Json& p = d["parameters"];
   if (!p.is_object()) throw InputError(file, 0, "'parameters' must be an object of the model's parameters");

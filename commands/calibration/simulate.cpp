@@ -305,7 +305,7 @@ SimulateResult simulate(const SimulateRequest& q, const Progress& progress) {
   r.request = q;
   const ModelEvaluation ev = evaluate(q.model, q.program);
   try {
-    meter_indices(q.model);
+    meter_slots(q.model);
   } catch (const std::invalid_argument& e) {
     throw UsageError(std::string("simulate: ") + e.what());
   }

@@ -67,13 +67,13 @@ void header(const CalibrateResult& r, std::ostream& t) {
 void parameters(const CalibrateResult& r, std::ostream& t) {
   const auto& a = r.fit;
   const auto& names = r.program.evaluation.parameter_names;
-  const std::vector<int> index = meter_indices(r.model);
+  const MeterSlots slots = meter_slots(r.model);
   const Eigen::VectorXd values = reported_values(a);
   const bool small_dof = a.dof > 0 && a.dof < 5;
   t << std::setprecision(6);
   for (std::size_t k = 0; k < names.size(); ++k) {
     const auto i = static_cast<Eigen::Index>(k);
-    const ParameterGroup group = ModelMeter::kParameters[static_cast<std::size_t>(index[k])].group;
+    const ParameterGroup group = slots[k].parameter.group;
     const double v = values(i);
     const double p = a.predicted_std(i), q = a.achieved_std(i), s = a.standard_error(i);
     t << "  " << std::left << std::setw(11) << names[k] << std::right << std::setw(14) << v;

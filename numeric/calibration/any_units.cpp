@@ -42,14 +42,14 @@ Mat3 block(const Eigen::MatrixXd& cov, const std::vector<int>& at) {
 // A covariance of the estimator's parameters (bias / |I|, dk, gamma, c |I|) as the standard errors
 // of the reported ones: bias in file units through the start (first order: the start is a fixed
 // map), scale deviations relative to their geometric mean when the start set the nominal gain.
-Eigen::VectorXd reported_std(const Eigen::MatrixXd& cov, const std::vector<int>& index, const AnyUnitsCalibration& a) {
+Eigen::VectorXd reported_std(const Eigen::MatrixXd& cov, const MeterSlots& slots, const AnyUnitsCalibration& a) {
   Eigen::VectorXd out = cov.diagonal().cwiseMax(0.0).cwiseSqrt();
-  if (const auto b = meter_group(index, ParameterGroup::bias); !b.empty()) {
+  if (const auto b = meter_group(slots, ParameterGroup::bias); !b.empty()) {
     const Mat3 T_inverse = a.started ? Mat3(a.start.matrix.inverse()) : Mat3::Identity();
     const Mat3 c = a.magnitude * a.magnitude * T_inverse * block(cov, b) * T_inverse.transpose();
     for (int i = 0; i < 3; ++i) out(b[static_cast<std::size_t>(i)]) = std::sqrt(std::max(c(i, i), 0.0));
   }
-  if (const auto s = meter_group(index, ParameterGroup::scale); !s.empty() && a.started) {
+  if (const auto s = meter_group(slots, ParameterGroup::scale); !s.empty() && a.started) {
     const Mat3 P = Mat3::Identity() - Mat3::Constant(1.0 / 3);
     const Mat3 c = P * block(cov, s) * P.transpose();
     for (int i = 0; i < 3; ++i) out(s[static_cast<std::size_t>(i)]) = std::sqrt(std::max(c(i, i), 0.0));
@@ -65,7 +65,7 @@ Eigen::VectorXd dynamic_row(const Vec3& eta) {
 
 // The start, applied to every sample; throws when the data cannot have one.
 std::vector<PositionSamples> started_data(const std::string& file, const std::vector<PositionSamples>& data,
-                                          const AnyUnitsOptions& options, const std::vector<int>& index, double ratio,
+                                          const AnyUnitsOptions& options, const MeterSlots& slots, double ratio,
                                           AnyUnitsCalibration& out) {
   const std::string name(model_name(options.model));
   if (options.modulus == Modulus::projection)
@@ -74,13 +74,13 @@ std::vector<PositionSamples> started_data(const std::string& file, const std::ve
         "the measured modulus is " + std::to_string(ratio) +
             words(" times {magnitude}; the projection modulus needs data in the field's units (use the norm "
                   "modulus, which starts from an ellipsoid fit in any units)"));
-  if (!corrects_linearly(index))
+  if (!corrects_linearly(slots))
     throw InputError(file, 0,
                      "the measured modulus is " + std::to_string(ratio) + words(" times {magnitude}: {model} ") + name +
                          " calibrates data in the field's units only (its cubic term is relative to |I|); the linear "
                          "models start from an ellipsoid fit in any units");
-  const EllipsoidShape shape = has_meter_group(index, ParameterGroup::nonorth) ? EllipsoidShape::general
-                               : has_meter_group(index, ParameterGroup::scale) ? EllipsoidShape::axis_aligned
+  const EllipsoidShape shape = has_meter_group(slots, ParameterGroup::nonorth) ? EllipsoidShape::general
+                               : has_meter_group(slots, ParameterGroup::scale) ? EllipsoidShape::axis_aligned
                                                                                : EllipsoidShape::sphere;
   std::vector<Vec3> means;
   for (const auto& p : data) means.push_back(p.mean());
@@ -111,7 +111,7 @@ void check_layout(const std::string& file, const std::vector<PositionSamples>& y
 
 // The final correction, its gain and the scale deviations relative to it.
 void compose(const std::string& file, AnyUnitsCalibration& out) {
-  const Meter& meter = out.estimate.meter.linear;
+  const Meter& meter = out.estimate.meter.linear();
   const FullCorrection second = correction_of(meter);
   if (!out.started) {
     out.correction = second;
@@ -137,9 +137,9 @@ double larger(double p, double a) { return std::isnan(p) ? a : std::isnan(a) ? p
 // the gains' geometric mean, lose the common part (reported_std's projection). The nominal gain's
 // (the field's strength in file units with magnitude auto) moves with the mean scale deviation:
 // var = 1^T C 1 / 9. Each the larger of the two covariances given (empty: not estimable).
-void gain_errors(AnyUnitsCalibration& out, const std::vector<int>& index, const Eigen::MatrixXd& predicted,
+void gain_errors(AnyUnitsCalibration& out, const MeterSlots& slots, const Eigen::MatrixXd& predicted,
                  const Eigen::MatrixXd& achieved) {
-  const auto sb = meter_group(index, ParameterGroup::scale);
+  const auto sb = meter_group(slots, ParameterGroup::scale);
   if (sb.empty()) return;
   const auto gain_std = [&](const Eigen::MatrixXd& cov) {
     if (cov.size() == 0) return Vec3(Vec3::Constant(NAN));
@@ -157,20 +157,19 @@ void gain_errors(AnyUnitsCalibration& out, const std::vector<int>& index, const 
 
 void assign_errors(AnyUnitsCalibration& out, const Eigen::MatrixXd& predicted, const Eigen::MatrixXd& achieved,
                    const Eigen::MatrixXd& model) {
-  const std::vector<int> index = meter_indices(out.model);
-  const auto P = static_cast<Eigen::Index>(index.size());
+  const MeterSlots slots = meter_slots(out.model);
+  const auto P = static_cast<Eigen::Index>(slots.size());
   const Eigen::VectorXd nan = Eigen::VectorXd::Constant(P, NAN);
-  out.predicted_std = predicted.size() ? reported_std(predicted, index, out) : nan;
-  out.achieved_std = achieved.size() ? reported_std(achieved, index, out) : nan;
-  out.model_std = model.size() ? reported_std(model, index, out) : Eigen::VectorXd();
+  out.predicted_std = predicted.size() ? reported_std(predicted, slots, out) : nan;
+  out.achieved_std = achieved.size() ? reported_std(achieved, slots, out) : nan;
+  out.model_std = model.size() ? reported_std(model, slots, out) : Eigen::VectorXd();
   out.covariance = model.size() ? model : achieved.size() ? achieved : predicted;
   out.noise_covariance = predicted;
   out.standard_error =
       model.size() ? out.model_std
                    : out.predicted_std.binaryExpr(out.achieved_std, [](double p, double a) { return larger(p, a); });
   for (Eigen::Index k = 0; k < P; ++k) {
-    const ModelMeter::Parameter& m =
-        ModelMeter::kParameters[static_cast<std::size_t>(index[static_cast<std::size_t>(k)])];
+    const MeterParameter& m = slots[static_cast<std::size_t>(k)].parameter;
     if (m.group == ParameterGroup::bias)
       out.bias_std(m.axis) = out.standard_error(k);
     else if (m.group == ParameterGroup::scale)
@@ -179,16 +178,16 @@ void assign_errors(AnyUnitsCalibration& out, const Eigen::MatrixXd& predicted, c
       out.nonorthogonality_std(m.axis) = out.standard_error(k);
   }
   if (model.size())
-    gain_errors(out, index, model, Eigen::MatrixXd());
+    gain_errors(out, slots, model, Eigen::MatrixXd());
   else
-    gain_errors(out, index, predicted, achieved);
+    gain_errors(out, slots, predicted, achieved);
 }
 
 Eigen::VectorXd reported_values(const AnyUnitsCalibration& a) {
-  const std::vector<int> index = meter_indices(a.model);
-  Eigen::VectorXd v(static_cast<Eigen::Index>(index.size()));
-  for (std::size_t k = 0; k < index.size(); ++k) {
-    const ModelMeter::Parameter& m = ModelMeter::kParameters[static_cast<std::size_t>(index[k])];
+  const MeterSlots slots = meter_slots(a.model);
+  Eigen::VectorXd v(static_cast<Eigen::Index>(slots.size()));
+  for (std::size_t k = 0; k < slots.size(); ++k) {
+    const MeterParameter& m = slots[k].parameter;
     const auto i = static_cast<Eigen::Index>(k);
     v(i) = m.group == ParameterGroup::bias      ? a.correction.offset(m.axis)
            : m.group == ParameterGroup::scale   ? a.scale_deviation(m.axis)
@@ -204,8 +203,8 @@ AnyUnitsCalibration calibrate_any_units(const std::string& file, const std::vect
   out.model = options.model;
   out.magnitude = options.magnitude_auto ? 1.0 : options.magnitude;
   const double M = out.magnitude;
-  const std::vector<int> index = meter_indices(options.model);
-  const int P = static_cast<int>(index.size());
+  const MeterSlots slots = meter_slots(options.model);
+  const int P = static_cast<int>(slots.size());
   const int n = static_cast<int>(data.size());
   if (n < P)
     throw InputError(file, 0,
@@ -213,7 +212,7 @@ AnyUnitsCalibration calibrate_any_units(const std::string& file, const std::vect
                          words(" parameters of {model} ") + std::string(model_name(options.model)));
   const double ratio = median_modulus_ratio(data, M);
   out.started = options.magnitude_auto || std::abs(ratio - 1) > kInUnits;
-  const std::vector<PositionSamples> y = out.started ? started_data(file, data, options, index, ratio, out) : data;
+  const std::vector<PositionSamples> y = out.started ? started_data(file, data, options, slots, ratio, out) : data;
   check_layout(file, y, options, M);
   CalibrationOptions co;
   co.modulus = options.modulus;
@@ -221,7 +220,7 @@ AnyUnitsCalibration calibrate_any_units(const std::string& file, const std::vect
   co.weight_by_samples = options.weight_by_samples;
   out.estimate = calibrate_model(options.model, y, co);
   const ModelCalibration& r = out.estimate;
-  out.linear = corrects_linearly(index);
+  out.linear = corrects_linearly(slots);
   compose(file, out);
   if (!options.sample_noise.isZero()) {
     const Mat3 S = out.started ? Mat3(out.start.matrix * options.sample_noise * out.start.matrix.transpose())

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <type_traits>
 
 #include <Eigen/Cholesky>
 
@@ -12,63 +13,43 @@
 
 namespace scalcal {
 
-using Vec12 = Eigen::Matrix<double, 12, 1>;
-
-Vec3 ModelMeter::measure(const Vec3& I) const {
-  const Vec3 a = linear.phi() * I;
-  Vec3 y;
-  for (int i = 0; i < 3; ++i) y(i) = linear.bias(i) + (1 + linear.scale_deviation(i)) * a(i) + cubic(i) * a(i) * a(i);
-  return y;
-}
-
-Vec3 ModelMeter::compensate(const Vec3& measured) const {
-  Vec3 a;
-  for (int i = 0; i < 3; ++i) {
-    const double r = measured(i) - linear.bias(i), g = 1 + linear.scale_deviation(i);
-    const double disc = g * g + 4 * cubic(i) * r;
-    // g a + c a^2 = r, the root that tends to r / g as c -> 0, in the form free of cancellation.
-    a(i) = disc >= 0 ? 2 * r / (g + std::sqrt(disc)) : std::numeric_limits<double>::quiet_NaN();
-  }
-  return linear.phi().inverse() * a;
-}
-
-Vec12 ModelMeter::parameters(double magnitude) const {
-  Vec12 X;
-  X << linear.parameters(magnitude), cubic * magnitude;
-  return X;
-}
-
-ModelMeter ModelMeter::from_parameters(const Vec12& X, double magnitude) {
-  ModelMeter m;
-  m.linear = Meter::from_parameters(X.head<9>(), magnitude);
-  m.cubic = X.tail<3>() / magnitude;
-  return m;
-}
-
-std::vector<int> meter_indices(ModelKind model) {
-  return visit_model(model, [&](auto M) {
-    constexpr auto index = meter_index_of<decltype(M)>();
-    return std::vector<int>(index.begin(), index.end());
+MeterSlots meter_slots(ModelKind model) {
+  return visit_model(model, [](auto M) {
+    using Model = decltype(M);
+    using MeterType = typename Model::meter;
+    MeterSlots out;
+    for (int m : meter_index_of<Model>()) {
+      const MeterParameter& p = MeterType::kParameters[static_cast<std::size_t>(m)];
+      out.push_back({m, p, MeterType::linear_group(p.group)});
+    }
+    return out;
   });
 }
 
-std::vector<int> meter_group(const std::vector<int>& index, ParameterGroup g) {
+std::vector<int> meter_group(const MeterSlots& slots, ParameterGroup g) {
   std::vector<int> out(3, -1);
-  for (std::size_t k = 0; k < index.size(); ++k) {
-    const ModelMeter::Parameter& p = ModelMeter::kParameters[static_cast<std::size_t>(index[k])];
-    if (p.group == g) out[static_cast<std::size_t>(p.axis)] = static_cast<int>(k);
-  }
+  for (std::size_t k = 0; k < slots.size(); ++k)
+    if (slots[k].parameter.group == g) out[static_cast<std::size_t>(slots[k].parameter.axis)] = static_cast<int>(k);
   return std::count(out.begin(), out.end(), -1) == 0 ? out : std::vector<int>{};
 }
 
-bool has_meter_group(const std::vector<int>& index, ParameterGroup g) {
-  return std::any_of(index.begin(), index.end(),
-                     [g](int m) { return ModelMeter::kParameters[static_cast<std::size_t>(m)].group == g; });
+bool has_meter_group(const MeterSlots& slots, ParameterGroup g) {
+  return std::any_of(slots.begin(), slots.end(), [g](const MeterSlot& s) { return s.parameter.group == g; });
 }
 
-bool corrects_linearly(const std::vector<int>& index) {
-  return std::all_of(index.begin(), index.end(), [](int m) {
-    return ModelMeter::linear_group(ModelMeter::kParameters[static_cast<std::size_t>(m)].group);
+bool corrects_linearly(const MeterSlots& slots) {
+  return std::all_of(slots.begin(), slots.end(), [](const MeterSlot& s) { return s.linear; });
+}
+
+AnyMeter model_meter(ModelKind model, const Eigen::VectorXd& X, double magnitude) {
+  return visit_model(model, [&](auto M) {
+    using Model = decltype(M);
+    using MeterType = typename Model::meter;
+    constexpr auto index = meter_index_of<Model>();
+    Eigen::Matrix<double, static_cast<int>(MeterType::kParameters.size()), 1> full;
+    full.setZero();
+    for (std::size_t k = 0; k < index.size(); ++k) full(index[k]) = X(static_cast<Eigen::Index>(k));
+    return AnyMeter(MeterType::from_parameters(full, magnitude));
   });
 }
 
@@ -90,17 +71,13 @@ namespace {
 struct ModelResiduals {
   const std::vector<PositionSamples>& data;
   const CalibrationOptions& options;
+  ModelKind model;
   RowFunction row;
-  std::vector<int> index;
   std::vector<Vec3> means;
   std::vector<double> weights;
 
-  int parameters() const { return static_cast<int>(index.size()); }
-  ModelMeter meter_of(const Eigen::VectorXd& X) const {
-    Vec12 full = Vec12::Zero();
-    for (int k = 0; k < parameters(); ++k) full(index[static_cast<std::size_t>(k)]) = X(k);
-    return ModelMeter::from_parameters(full, options.magnitude);
-  }
+  int parameters() const { return model_parameters(model); }
+  AnyMeter meter_of(const Eigen::VectorXd& X) const { return model_meter(model, X, options.magnitude); }
   double modulus(const Vec3& c, std::size_t i) const {
     return options.modulus == Modulus::norm ? c.norm() : c.dot(*data[i].nominal);
   }
@@ -108,7 +85,7 @@ struct ModelResiduals {
     return options.modulus == Modulus::norm ? Vec3(c.normalized()) : Vec3(data[i].nominal->normalized());
   }
   Eigen::VectorXd at(const Eigen::VectorXd& X) const {
-    const ModelMeter meter = meter_of(X);
+    const AnyMeter meter = meter_of(X);
     Eigen::VectorXd J(static_cast<Eigen::Index>(means.size()));
     for (std::size_t i = 0; i < means.size(); ++i)
       J(static_cast<Eigen::Index>(i)) = modulus(meter.compensate(means[i]), i) / options.magnitude - 1;
@@ -135,7 +112,7 @@ struct ModelResiduals {
   }
   // The paper's step (eq. 6): J ~ h.(X_true - X), fitted by weighted least squares.
   Eigen::VectorXd paper_step(const Eigen::VectorXd& X, const Eigen::VectorXd& J) const {
-    const ModelMeter meter = meter_of(X);
+    const AnyMeter meter = meter_of(X);
     Eigen::MatrixXd info = Eigen::MatrixXd::Zero(parameters(), parameters());
     Eigen::VectorXd rhs = Eigen::VectorXd::Zero(parameters());
     for (std::size_t i = 0; i < means.size(); ++i) {
@@ -147,7 +124,7 @@ struct ModelResiduals {
   }
   // sum w h h^T at the estimate with the model's rows: the paper's information matrix, whose
   // inverse every criterion judges.
-  Eigen::MatrixXd information(const ModelMeter& meter, bool by_samples) const {
+  Eigen::MatrixXd information(const AnyMeter& meter, bool by_samples) const {
     Eigen::MatrixXd info = Eigen::MatrixXd::Zero(parameters(), parameters());
     for (std::size_t i = 0; i < means.size(); ++i) {
       const Eigen::VectorXd h = row(direction(meter.compensate(means[i]), i));
@@ -237,12 +214,9 @@ Eigen::VectorXd damped_gauss_newton(const ModelResiduals& f, int max_iterations,
 
 ModelCalibration calibrate_model(ModelKind model, const std::vector<PositionSamples>& data,
                                  const CalibrationOptions& options) {
-  ModelResiduals f{data,
-                   options,
-                   visit_model(model, [](auto M) -> RowFunction { return &dynamic_row<decltype(M)>; }),
-                   meter_indices(model),
-                   {},
-                   {}};
+  ModelResiduals f{data,  options,
+                   model, visit_model(model, [](auto M) -> RowFunction { return &dynamic_row<decltype(M)>; }),
+                   {},    {}};
   for (const auto& p : data) {
     f.means.push_back(p.mean());
     f.weights.push_back(options.weight_by_samples ? static_cast<double>(p.samples.size()) : 1.0);
@@ -285,19 +259,22 @@ ModelCalibration calibrate_model(ModelKind model, const std::vector<PositionSamp
   return r;
 }
 
-ModelMeter reference_model_meter(ModelKind model, double size) {
-  ModelMeter full;
-  full.linear = reference_meter(size);
-  full.cubic = size * Vec3(0.9, -0.6, 1.3);
-  const Vec12 X = full.parameters(1.0);
-  Vec12 kept = Vec12::Zero();
-  for (int k : meter_indices(model)) kept(k) = X(k);
-  ModelMeter m = ModelMeter::from_parameters(kept, 1.0);
-  // The rotation part of the reference misalignment stays: invisible to every scalar model.
-  const Mat3 A = full.linear.misalignment;
-  const Mat3 rotation = (A - A.transpose()) / 2;
-  m.linear.misalignment += rotation;
-  return m;
+AnyMeter reference_model_meter(ModelKind model, double size) {
+  return visit_model(model, [size](auto M) {
+    using Model = decltype(M);
+    using MeterType = typename Model::meter;
+    const MeterType full = MeterType::reference(reference_meter(size), size);
+    const auto X = full.parameters(1.0);
+    std::remove_const_t<decltype(X)> kept;
+    kept.setZero();
+    for (int k : meter_index_of<Model>()) kept(k) = X(k);
+    MeterType m = MeterType::from_parameters(kept, 1.0);
+    // The rotation part of the reference misalignment stays: invisible to every scalar model.
+    const Mat3 A = full.linear.misalignment;
+    const Mat3 rotation = (A - A.transpose()) / 2;
+    m.linear.misalignment += rotation;
+    return AnyMeter(m);
+  });
 }
 
 }  // namespace scalcal

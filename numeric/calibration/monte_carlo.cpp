@@ -40,8 +40,8 @@ namespace {
 
 // One data set of any meter with measure() (eq. 2, or a model's meter): each position tipped by
 // the bench error, samples with noise.
-template <class AnyMeter>
-std::vector<PositionSamples> simulate_with(const AnyMeter& meter, const Program& nominal, double noise,
+template <class SomeMeter>
+std::vector<PositionSamples> simulate_with(const SomeMeter& meter, const Program& nominal, double noise,
                                            double bench_error_deg, int samples, GaussianSource& rng) {
   std::vector<PositionSamples> data;
   const double angle = bench_error_deg * M_PI / 180.0;
@@ -74,12 +74,12 @@ MonteCarloResult run_monte_carlo(const MonteCarloOptions& o, const std::function
   MonteCarloResult r;
   const bool paper9 = model_supports(model, ModelCapability::criteria_native);  // the meter is the paper's
   const Meter meter = reference_meter(o.size);
-  const ModelMeter model_meter = paper9 ? ModelMeter{meter, Vec3::Zero()} : reference_model_meter(model, o.size);
-  const std::vector<int> index = meter_indices(model);
+  const AnyMeter model_meter = paper9 ? AnyMeter(LinearMeter{meter}) : reference_model_meter(model, o.size);
+  const MeterSlots slots = meter_slots(model);
   {
-    const Eigen::Matrix<double, 12, 1> all = model_meter.parameters(1.0);
-    r.truth.resize(static_cast<Eigen::Index>(index.size()));
-    for (std::size_t k = 0; k < index.size(); ++k) r.truth(static_cast<Eigen::Index>(k)) = all(index[k]);
+    const Eigen::VectorXd all = model_meter.parameters(1.0);
+    r.truth.resize(static_cast<Eigen::Index>(slots.size()));
+    for (std::size_t k = 0; k < slots.size(); ++k) r.truth(static_cast<Eigen::Index>(k)) = all(slots[k].index);
   }
   GaussianSource rng(o.seed);
   CalibrationOptions co;

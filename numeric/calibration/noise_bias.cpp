@@ -19,7 +19,7 @@ NoiseBias estimate_noise_bias(ModelKind model, const std::vector<PositionSamples
   // paper's fixed point, reached from near it; from far, the iteration ends at the least-squares
   // minimum instead, whose common scale differs by the noise's square). The noise is mapped there by
   // the correction's linear part; X near zero composes with the estimate additively to first order.
-  const Mat3 C = fit.meter.linear.gain().inverse();
+  const Mat3 C = fit.meter.linear().gain().inverse();
   const Mat3 L = C * Mat3(chol.matrixL());
   // Where the fit puts each sample: the corrected vector's direction, at the field's magnitude.
   std::vector<Vec3> truth;
@@ -60,10 +60,7 @@ NoiseBias estimate_noise_bias(ModelKind model, const std::vector<PositionSamples
 void remove_noise_bias(ModelCalibration& fit, const NoiseBias& bias, double magnitude) {
   if (bias.bias.size() != fit.X.size()) return;
   fit.X -= bias.bias;
-  const std::vector<int> index = meter_indices(fit.model);
-  Eigen::Matrix<double, 12, 1> full = Eigen::Matrix<double, 12, 1>::Zero();
-  for (std::size_t k = 0; k < index.size(); ++k) full(index[k]) = fit.X(static_cast<Eigen::Index>(k));
-  fit.meter = ModelMeter::from_parameters(full, magnitude);
+  fit.meter = model_meter(fit.model, fit.X, magnitude);
 }
 
 }  // namespace scalcal

@@ -95,13 +95,13 @@ struct Layout {
 };
 
 Layout layout_of(ModelKind model) {
-  const std::vector<int> index = meter_indices(model);
+  const MeterSlots slots = meter_slots(model);
   Layout L;
   L.name = model_name(model);
-  L.gains = has_meter_group(index, ParameterGroup::scale);
-  L.gammas = has_meter_group(index, ParameterGroup::nonorth);
-  const bool offsets = meter_group(index, ParameterGroup::bias).size() == 3;
-  if (!offsets || !corrects_linearly(index) || (L.gammas && !L.gains))
+  L.gains = has_meter_group(slots, ParameterGroup::scale);
+  L.gammas = has_meter_group(slots, ParameterGroup::nonorth);
+  const bool offsets = meter_group(slots, ParameterGroup::bias).size() == 3;
+  if (!offsets || !corrects_linearly(slots) || (L.gammas && !L.gains))
     throw std::invalid_argument("a gyro's rate table or turns take the models " +
                                 models_supporting(ModelCapability::auto_choice) + ", not " + L.name);
   L.free = 3 + (L.gains ? 3 : 1) + (L.gammas ? 3 : 0);

@@ -2,6 +2,7 @@
 // ellipsoid that ArduPilot and PX4 fit first. trace M = 1 + E[x^4 + y^4 + z^4] <= 2 fixes every
 // limit, and only the six-position test reaches it (proofs/axis6_limits.md).
 #pragma once
+#include "numeric/model/linear_meter.hpp"
 #include "numeric/model/model_limit.hpp"
 #include "numeric/model/monomial_model.hpp"
 
@@ -10,6 +11,7 @@ namespace scalcal {
 struct Axis6Model : MonomialModel<Axis6Model> {
   static constexpr int kParameters = 6;
   static constexpr std::string_view name = "axis6";
+  using meter = LinearMeter;  // its parameters are this meter's, by name
   static constexpr std::string_view summary = "h = (x, y, z, x^2, y^2, z^2): bias and scale factor";
   // What a fit under this model leaves out beyond the rotation no scalar calibration sees (calibrate's report).
   static constexpr std::string_view not_estimated =

@@ -1,6 +1,7 @@
 // Offsets only, h(eta) = (x, y, z): the magnetometer calibration of a vehicle that cannot be turned
 // far (ArduPilot, PX4). trace M = N for unit vectors fixes every limit (proofs/bias3_limits.md).
 #pragma once
+#include "numeric/model/linear_meter.hpp"
 #include "numeric/model/model_limit.hpp"
 #include "numeric/model/monomial_model.hpp"
 
@@ -9,6 +10,7 @@ namespace scalcal {
 struct Bias3Model : MonomialModel<Bias3Model> {
   static constexpr int kParameters = 3;
   static constexpr std::string_view name = "bias3";
+  using meter = LinearMeter;  // its parameters are this meter's, by name
   static constexpr std::string_view summary = "h = (x, y, z): offsets only";
   // What a fit under this model leaves out beyond the rotation no scalar calibration sees (calibrate's report).
   static constexpr std::string_view not_estimated =

@@ -4,6 +4,7 @@
 // only, each unique, with weights that need N = 132k for D, 624k for E, 48k for S and no N at all
 // for A (proofs/cubic12_limits.md).
 #pragma once
+#include "numeric/model/cubic_meter.hpp"
 #include "numeric/model/model_limit.hpp"
 #include "numeric/model/monomial_model.hpp"
 
@@ -12,6 +13,7 @@ namespace scalcal {
 struct Cubic12Model : MonomialModel<Cubic12Model> {
   static constexpr int kParameters = 12;
   static constexpr std::string_view name = "cubic12";
+  using meter = CubicMeter;  // its parameters are this meter's, by name
   static constexpr std::string_view summary = "paper9 plus (x^3, y^3, z^3): a scale factor linear in the input";
   // What a fit under this model leaves out beyond the rotation no scalar calibration sees (calibrate's report).
   static constexpr std::string_view not_estimated =

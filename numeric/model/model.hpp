@@ -28,6 +28,31 @@ using PositionsT = std::vector<Vec3T<Scalar>>;
 enum class ParameterGroup { bias = 0, scale = 1, nonorth = 2, cubic = 3 };
 inline constexpr std::array<std::string_view, 4> kGroupNames = {"bias", "scale", "nonorth", "cubic"};
 
+// A parameter a meter knows, in the estimator's units (bias / |I|, dk, gamma, c |I|): its name, its group and its
+// axis (a non-orthogonality's first axis: xy 0, yz 1, zx 2).
+struct MeterParameter {
+  std::string_view name;
+  ParameterGroup group;
+  int axis;
+};
+
+// What a model's meter must give (numeric/model/linear_meter.hpp is one): its parameters, the vector it measures
+// of an input and the input it compensates a measurement back to, its parameters' values and the meter they
+// stand for, whether a group keeps the correction physical = matrix (raw - offset), and its linear part (eq. 2)
+// as `linear`, and the reference meter of a size that `simulate --model` draws. A model states its meter as
+// `using meter = ...`.
+template <class T>
+concept CalibrationMeter = requires(const T& m, const Vec3T<double>& v, double magnitude) {
+  { T::kParameters[0] } -> std::convertible_to<MeterParameter>;
+  { m.measure(v) } -> std::same_as<Vec3T<double>>;
+  { m.compensate(v) } -> std::same_as<Vec3T<double>>;
+  { m.parameters(magnitude) } -> std::same_as<Eigen::Matrix<double, int(T::kParameters.size()), 1>>;
+  { T::from_parameters(m.parameters(magnitude), magnitude) } -> std::same_as<T>;
+  { T::linear_group(ParameterGroup::bias) } -> std::same_as<bool>;
+  { m.linear.gain() } -> std::same_as<Mat3T<double>>;
+  { T::reference(m.linear, magnitude) } -> std::same_as<T>;  // the meter `simulate --model` draws, of a size
+};
+
 template <class Model, class Scalar>
 using RowT = Eigen::Matrix<Scalar, Model::kParameters, 1>;
 template <class Model, class Scalar>
@@ -40,8 +65,10 @@ using InformationT = Eigen::Matrix<Scalar, Model::kParameters, Model::kParameter
 //   jacobian(eta)   dh/d eta, P x 3
 //   curvature(w, eta)  sum_a w_a d^2 h_a / d eta^2 at eta, 3 x 3 (the second derivatives the Newton
 //                      step needs; constant for the quadratic models, not for cubic12)
+//   meter           the meter whose parameters the model's are (a CalibrationMeter; each name among its own)
 template <class M>
-concept CalibrationModel = requires(const Vec3T<double>& eta, const RowT<M, double>& w) {
+concept CalibrationModel = CalibrationMeter<typename M::meter> &&
+    requires(const Vec3T<double>& eta, const RowT<M, double>& w) {
   { M::kParameters } -> std::convertible_to<int>;
   { M::name } -> std::convertible_to<std::string_view>;
   { M::parameter_names[0] } -> std::convertible_to<std::string_view>;

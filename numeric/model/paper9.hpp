@@ -1,6 +1,7 @@
 // The paper's model (eq. 5): nine parameters X = (bias, scale-factor deviation, non-orthogonality),
 // h(eta) = (x, y, z, x^2, y^2, z^2, xy, yz, zx). The model every command uses by default.
 #pragma once
+#include "numeric/model/linear_meter.hpp"
 #include "numeric/model/model.hpp"
 
 namespace scalcal {
@@ -8,6 +9,7 @@ namespace scalcal {
 struct Paper9Model {
   static constexpr int kParameters = 9;
   static constexpr std::string_view name = "paper9";
+  using meter = LinearMeter;  // its parameters are this meter's, by name
   static constexpr std::string_view summary = "h = (x, y, z, x^2, y^2, z^2, xy, yz, zx): the paper's model";
   // Its limits come from the criteria and symbolic/limits.hpp, proven here:
   static constexpr std::string_view proof = "proofs/d_limit.md, proofs/aes_limits.md";
@@ -56,8 +58,6 @@ static_assert(CalibrationModel<Paper9Model>);
 inline constexpr int kParameters = Paper9Model::kParameters;
 inline constexpr auto kParameterNames = Paper9Model::parameter_names;
 
-template <class Scalar>
-using Vec9T = RowT<Paper9Model, Scalar>;
 template <class Scalar>
 using Mat9T = InformationT<Paper9Model, Scalar>;
 using Vec9 = Vec9T<double>;

@@ -1,6 +1,6 @@
-// Compiled, not run, by tests/model/meter_index_compile.sh: a model's parameter is found among the meter's when
-// the model is compiled (meter_index_of), so a name the meter does not know stops the build. SCALCAL_NAME is the
-// second parameter's name; SCALCAL_EXPECTED its index among ModelMeter::kParameters.
+// Compiled, not run, by tests/model/meter_index_compile.sh: a model's parameter is found among its meter's when
+// the model is compiled (meter_index_of), so a name its meter does not know stops the build. SCALCAL_NAME is the
+// second parameter's name; SCALCAL_EXPECTED its index among SCALCAL_METER::kParameters.
 #include <array>
 #include <string_view>
 
@@ -8,6 +8,7 @@
 
 struct TwoParameterModel {
   static constexpr int kParameters = 2;
+  using meter = scalcal::SCALCAL_METER;
   static constexpr std::array<std::string_view, 2> parameter_names = {"bias_y", SCALCAL_NAME};
 };
 

@@ -15,6 +15,7 @@ namespace {
 struct Paper9AsMonomials : MonomialModel<Paper9AsMonomials> {
   static constexpr int kParameters = 9;
   static constexpr std::string_view name = "paper9-monomials";
+  using meter = Paper9Model::meter;
   static constexpr auto parameter_names = Paper9Model::parameter_names;
   static constexpr auto parameter_groups = Paper9Model::parameter_groups;
   static constexpr std::array<Exponents, 9> exponents = {
