@@ -77,15 +77,12 @@ void check_work(const std::string& what, const WorkEstimate& e, const std::strin
 // determinant only, in batches), A 0.47 us, S 0.67 us, E 5.2 us (9 x 9 eigenvalues); each position adds
 // 7.5 ns (N = 1000: D 7.5 us). Another model's programs are scored one by one: 13 us for cubic12's D at
 // N = 12. A position's cost grows as the parameters squared (moments), a program's as their cube.
-WorkEstimate random_search_work(long long count, int positions, int parameters, std::string_view criterion) {
+WorkEstimate random_search_work(long long count, int positions, int parameters, double scoring_seconds) {
   const double p = parameters / 9.0;
-  // Measured on a Zen 4 (issue 50's prices were 1.6-3.4x over there; tests/robustness/work_estimates_test.cpp
-  // wants every command within 3x on every machine it runs on, slower ones too): 0.6 of those prices.
-  const double price = parameters != 9    ? 3.6e-6 * p * p * p
-                       : criterion == "D" ? 0.6e-7
-                       : criterion == "A" ? 3e-7
-                       : criterion == "S" ? 4.2e-7
-                                          : 3.3e-6;  // E, and any other criterion at E's price
+  // The criteria's prices (their types' scoring_seconds) were measured on a Zen 4 (issue 50's prices were 1.6-3.4x
+  // over there; tests/robustness/work_estimates_test.cpp wants every command within 3x on every machine it runs on,
+  // slower ones too): 0.6 of those prices.
+  const double price = parameters != 9 ? 3.6e-6 * p * p * p : scoring_seconds;
   const double per_program = positions * 4.8e-9 * p * p + price;
   return {static_cast<double>(count) * per_program, 2e7 + 64.0 * positions};
 }

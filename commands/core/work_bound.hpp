@@ -26,8 +26,9 @@ double available_memory_bytes();
 void check_work(const std::string& what, const WorkEstimate& estimate, const std::string& advice);
 
 // The estimates, one per kind of work whose cost grows faster than its input.
-// random: `count` programs of N positions for a model with `parameters` parameters, by `criterion`.
-WorkEstimate random_search_work(long long count, int positions, int parameters, std::string_view criterion);
+// random: `count` programs of N positions for a model with `parameters` parameters, by a criterion whose price of
+// one program of the paper's model is `scoring_seconds` (criterion_scoring_seconds, numeric/criteria/registry.hpp).
+WorkEstimate random_search_work(long long count, int positions, int parameters, double scoring_seconds);
 // polish (and optimize --digits): Newton in MPFR at `digits` digits on N positions (a dense Jacobian
 // of ~3N x 3N numbers and its orthogonal decomposition).
 WorkEstimate polish_work(int positions, int digits);

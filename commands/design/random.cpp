@@ -6,6 +6,7 @@
 #include "commands/core/region_request.hpp"
 #include "commands/core/usage_error.hpp"
 #include "commands/core/work_bound.hpp"
+#include "numeric/criteria/registry.hpp"
 #include "numeric/io/option_words.hpp"
 #include "numeric/region/region_sampler.hpp"
 
@@ -44,9 +45,10 @@ RandomResult random_programs(const RandomRequest& q, const Progress&) {
     throw UsageError(words("random: {positions} ") + std::to_string(q.positions) + " is below the " +
                      std::to_string(model_parameters(q.model)) + words(" parameters of {model} ") +
                      std::string(model_name(q.model)));
-  check_work(words("{count} ") + std::to_string(q.count) + words(" at {positions} ") + std::to_string(q.positions),
-             random_search_work(q.count, q.positions, model_parameters(q.model), criterion_name(q.criterion)),
-             words("lower {count} or {positions}, or run several seeds one after another"));
+  check_work(
+      words("{count} ") + std::to_string(q.count) + words(" at {positions} ") + std::to_string(q.positions),
+      random_search_work(q.count, q.positions, model_parameters(q.model), criterion_scoring_seconds(q.criterion)),
+      words("lower {count} or {positions}, or run several seeds one after another"));
   RandomResult r;
   r.request = q;
   PositionSampler sampler;

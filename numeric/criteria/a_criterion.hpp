@@ -22,6 +22,7 @@ struct ACriterion {
   using Form = SmoothForm;
   static constexpr DualKind dual = DualKind::DiagonalSum;                  // certified limits on regions
   static constexpr ClosedFormKind closed_form = ClosedFormKind::TraceOfK;  // symbolic/criteria.cpp
+  static constexpr double scoring_seconds = 3e-7;  // CPU per program, paper9 at N = 12 (commands/core/work_bound)
 
   template <class Model, InverseInformationView View, class Scalar>
   static Scalar value(const View& k, const Scalar& n) {

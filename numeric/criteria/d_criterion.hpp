@@ -23,6 +23,7 @@ struct DCriterion {
   using Form = SmoothForm;
   static constexpr DualKind dual = DualKind::Determinant;                              // certified limits on regions
   static constexpr ClosedFormKind closed_form = ClosedFormKind::PowerOverDeterminant;  // symbolic/criteria.cpp
+  static constexpr double scoring_seconds = 0.6e-7;  // CPU per program, paper9 at N = 12 (commands/core/work_bound)
   // Its value is N^P / det M: random search factors four programs side by side and stops early
   // when none can win (synthesis/random_search_kernel.hpp).
   static constexpr bool determinant_only = true;

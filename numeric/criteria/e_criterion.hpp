@@ -16,6 +16,7 @@ struct ECriterion {
   static constexpr ProgramSymmetry symmetry = ProgramSymmetry::SignedPermutations;
   using Form = MaxEigenvalueForm;
   static constexpr ClosedFormKind closed_form = ClosedFormKind::LargestEigenvalueOfK;  // symbolic/criteria.cpp
+  static constexpr double scoring_seconds = 3.3e-6;  // CPU per program, paper9 at N = 12 (commands/core/work_bound)
 
   template <class Model, InverseInformationView View, class Scalar>
   static Scalar value(const View& k, const Scalar& n) {

@@ -2,6 +2,7 @@
 // (an index into that list) for the CLI and for results; visit_criterion() turns it back into the
 // criterion's type, the one place where a runtime choice meets the templated solvers.
 #pragma once
+#include <algorithm>
 #include <array>
 #include <compare>
 #include <optional>
@@ -81,6 +82,22 @@ inline std::string_view criterion_name(CriterionKind c) {
 // The closed form of K the criterion's exact value is (closed_form_kind.hpp); None for one that states none.
 inline ClosedFormKind criterion_closed_form(CriterionKind c) {
   return visit_criterion(c, [](auto C) { return closed_form_kind<decltype(C)>(); });
+}
+
+// What scoring one program of the paper's model at N = 12 costs the criterion in CPU seconds, as its type states
+// (`scoring_seconds`, measured; commands/core/work_bound prices random search with it). One that states none is
+// priced as the dearest that do, so a work bound never undercounts it.
+inline double criterion_scoring_seconds(CriterionKind c) {
+  const auto stated = [](CriterionKind k) {
+    return visit_criterion(k, [](auto C) {
+      if constexpr (requires { decltype(C)::scoring_seconds; }) return double(decltype(C)::scoring_seconds);
+      return -1.0;
+    });
+  };
+  if (const double s = stated(c); s >= 0) return s;
+  double dearest = 0;
+  for (int i = 0; i < kCriterionCount; ++i) dearest = std::max(dearest, stated(CriterionKind(i)));
+  return dearest;
 }
 
 inline std::string_view criterion_summary(CriterionKind c) {

@@ -17,6 +17,7 @@ struct SCriterion {
   static constexpr ProgramSymmetry symmetry = ProgramSymmetry::SignedPermutations;
   using Form = MaxDiagonalForm;
   static constexpr ClosedFormKind closed_form = ClosedFormKind::LargestDiagonalOfK;  // symbolic/criteria.cpp
+  static constexpr double scoring_seconds = 4.2e-7;  // CPU per program, paper9 at N = 12 (commands/core/work_bound)
 
   template <class Model>
   static std::vector<int> rows() {

@@ -20,6 +20,7 @@
 #include "commands/calibration/rehearsal.hpp"
 #include "commands/core/work_bound.hpp"
 #include "numeric/bench/registry.hpp"
+#include "numeric/criteria/registry.hpp"
 #include "numeric/program/catalogue.hpp"
 #include "tests/common/bad_input.hpp"
 
@@ -73,11 +74,13 @@ TEST(WorkEstimates, Random) {
            {1000, 30000, "D"}, {12, 3000000, "D"}, {12, 1000000, "A"}, {12, 200000, "E"}, {12, 600000, "S"}}) {
     const std::string args = "random --positions " + std::to_string(positions) + " --count " + std::to_string(count) +
                              " --criterion " + criterion + " --threads 1";
-    expect_within_three_times(commands::random_search_work(count, positions, 9, criterion).cpu_seconds, cli_cpu(args),
+    const double price = criterion_scoring_seconds(*parse_criterion(criterion));
+    expect_within_three_times(commands::random_search_work(count, positions, 9, price).cpu_seconds, cli_cpu(args),
                               args);
   }
-  expect_within_three_times(commands::random_search_work(100000, 12, 12, "D").cpu_seconds,
-                            cli_cpu("random --positions 12 --count 100000 --model cubic12 --threads 1"), "cubic12");
+  expect_within_three_times(
+      commands::random_search_work(100000, 12, 12, criterion_scoring_seconds(*parse_criterion("D"))).cpu_seconds,
+      cli_cpu("random --positions 12 --count 100000 --model cubic12 --threads 1"), "cubic12");
 }
 
 // The polish's estimate is for five Newton iterations: scaled to the iterations the run made.
