@@ -8,6 +8,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <system_error>
 #include <vector>
 
 namespace scalcal::testing {
@@ -24,13 +25,32 @@ inline std::string slurp(const std::string& path) {
   return s.str();
 }
 
+// The test process's own folder for the files its runs read and write, removed when the process ends (ctest runs
+// each test as a process of its own: left behind, they were thousands of folders in /tmp per run). Only the process
+// that made it removes it: a forked child that exited normally must not take it from its parent.
+class ScratchDir {
+ public:
+  ScratchDir()
+      : owner_(getpid()),
+        path_(std::filesystem::temp_directory_path() / ("scalcal_cli_test_" + std::to_string(owner_))) {
+    std::filesystem::create_directories(path_);
+  }
+  ~ScratchDir() {
+    std::error_code ignored;  // a folder already gone, or a file still open elsewhere: nothing to report
+    if (getpid() == owner_) std::filesystem::remove_all(path_, ignored);
+  }
+  ScratchDir(const ScratchDir&) = delete;
+  ScratchDir& operator=(const ScratchDir&) = delete;
+  const std::filesystem::path& path() const { return path_; }
+
+ private:
+  pid_t owner_;
+  std::filesystem::path path_;
+};
+
 inline std::filesystem::path scratch_dir() {
-  static const std::filesystem::path dir = [] {
-    auto d = std::filesystem::temp_directory_path() / ("scalcal_cli_test_" + std::to_string(getpid()));
-    std::filesystem::create_directories(d);
-    return d;
-  }();
-  return dir;
+  static const ScratchDir dir;
+  return dir.path();
 }
 
 inline std::string write_file(const std::string& name, const std::string& content) {
