@@ -5,6 +5,7 @@
 
 #include <Eigen/Core>
 
+#include "numeric/model/linear_meter.hpp"
 #include "numeric/model/meter.hpp"
 #include "numeric/model/model.hpp"
 
@@ -14,18 +15,15 @@ struct CubicMeter {
   Meter linear;
   Vec3 cubic = Vec3::Zero();  // c_i, in 1 / (units of I)
 
-  static constexpr std::array<MeterParameter, 12> kParameters = {{{"bias_x", ParameterGroup::bias, 0},
-                                                                  {"bias_y", ParameterGroup::bias, 1},
-                                                                  {"bias_z", ParameterGroup::bias, 2},
-                                                                  {"scale_x", ParameterGroup::scale, 0},
-                                                                  {"scale_y", ParameterGroup::scale, 1},
-                                                                  {"scale_z", ParameterGroup::scale, 2},
-                                                                  {"nonorth_xy", ParameterGroup::nonorth, 0},
-                                                                  {"nonorth_yz", ParameterGroup::nonorth, 1},
-                                                                  {"nonorth_zx", ParameterGroup::nonorth, 2},
-                                                                  {"cubic_x", ParameterGroup::cubic, 0},
-                                                                  {"cubic_y", ParameterGroup::cubic, 1},
-                                                                  {"cubic_z", ParameterGroup::cubic, 2}}};
+  // The linear meter's nine, then cubic_x, cubic_y, cubic_z.
+  static constexpr std::array<MeterParameter, 12> kParameters = [] {
+    std::array<MeterParameter, 12> out{};
+    for (std::size_t k = 0; k < LinearMeter::kParameters.size(); ++k) out[k] = LinearMeter::kParameters[k];
+    out[9] = {"cubic_x", ParameterGroup::cubic, 0};
+    out[10] = {"cubic_y", ParameterGroup::cubic, 1};
+    out[11] = {"cubic_z", ParameterGroup::cubic, 2};
+    return out;
+  }();
   // All groups but the cubic terms keep the correction physical = matrix (raw - offset); those make each axis'
   // output a quadratic in its input.
   static constexpr bool linear_group(ParameterGroup g) { return g != ParameterGroup::cubic; }
