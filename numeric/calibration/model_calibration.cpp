@@ -5,7 +5,6 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
-#include <type_traits>
 
 #include <Eigen/Cholesky>
 
@@ -260,20 +259,20 @@ ModelCalibration calibrate_model(ModelKind model, const std::vector<PositionSamp
 }
 
 AnyMeter reference_model_meter(ModelKind model, double size) {
-  return visit_model(model, [size](auto M) {
+  return visit_model(model, [model, size](auto M) {
     using Model = decltype(M);
     using MeterType = typename Model::meter;
     const MeterType full = MeterType::reference(reference_meter(size), size);
-    const auto X = full.parameters(1.0);
-    std::remove_const_t<decltype(X)> kept;
-    kept.setZero();
-    for (int k : meter_index_of<Model>()) kept(k) = X(k);
-    MeterType m = MeterType::from_parameters(kept, 1.0);
+    const auto all = full.parameters(1.0);
+    constexpr auto index = meter_index_of<Model>();
+    Eigen::VectorXd X(static_cast<Eigen::Index>(index.size()));
+    for (std::size_t k = 0; k < index.size(); ++k) X(static_cast<Eigen::Index>(k)) = all(index[k]);
+    AnyMeter m = model_meter(model, X, 1.0);  // the model's parameters of it, its meter's others zero
     // The rotation part of the reference misalignment stays: invisible to every scalar model.
     const Mat3 A = full.linear.misalignment;
     const Mat3 rotation = (A - A.transpose()) / 2;
-    m.linear.misalignment += rotation;
-    return AnyMeter(m);
+    m.as<MeterType>()->linear.misalignment += rotation;
+    return m;
   });
 }
 
