@@ -34,7 +34,7 @@ struct Interval {
   double celsius = NAN;  // a thermal calibration's pose: its mean temperature
 };
 
-// A thermal calibration's poses (calibrate --model paper9+Tk --out): t_c, start_s, stop_s, mean, samples and
+// A thermal calibration's poses (calibrate --model BASE+Tk --out): t_c, start_s, stop_s, mean, samples and
 // residual (|corrected| / |I| - 1, drawn as |I| times it).
 std::vector<Interval> poses_of(const Json& j, const std::string& file, double magnitude) {
   std::vector<Interval> out;

@@ -60,11 +60,13 @@ namespace {
 
 // --model: auto, a registered model, or a thermal model BASE+Tk (numeric/thermal/thermal_model.hpp).
 Option calibrate_model_option() {
-  Option model = choice_option("--model", model_choices(),
-                               "the calibration model: auto (the richest of paper9, axis6, bias3 that the positions "
-                               "identify), or one of the registered models, or a thermal model paper9+Tk / "
-                               "paper9+bias:Tk (a log with a temperature column: temp, temperature or t_c)",
-                               "auto");
+  Option model =
+      choice_option("--model", model_choices(),
+                    "the calibration model: auto (the richest of paper9, axis6, bias3 that the positions "
+                    "identify), or one of the registered models, or a thermal model BASE+Tk / BASE+bias:Tk over "
+                    "a base with the thermal capability (paper9+T2, bias3+T3; a log with a temperature "
+                    "column: temp, temperature or t_c)",
+                    "auto");
   model.value_name = "auto|NAME";
   model.kind = OptionKind::text;
   model.why_bad = [choices = model.choices](const std::string& text) -> std::string {
@@ -260,7 +262,8 @@ CalibrateRequest calibrate_request(const Values& v) {
   if (q.thermal) {
     if (!model_supports(q.thermal->base, ModelCapability::thermal_base))
       throw UsageError(words("{model} ") + q.thermal->name() +
-                       ": a thermal log is fitted under paper9+Tk or paper9+bias:Tk");
+                       ": a thermal log is fitted under BASE+Tk or BASE+bias:Tk with BASE one of " +
+                       models_supporting(ModelCapability::thermal_base));
     return q;
   }
   if (v.text("--model") != "auto") q.model = *parse_model(v.text("--model"));

@@ -51,7 +51,7 @@ int format_version_of(const Json& d, const std::string& file) {
   return static_cast<int>(n);
 }
 
-// A thermal calibration (calibrate --model paper9+Tk --out): its range, |I| and every coefficient's value.
+// A thermal calibration (calibrate --model BASE+Tk --out): its range, |I| and every coefficient's value.
 void read_thermal(const Json& d, const std::string& file, const ThermalModel& model, CalibrationFile& c) {
   ThermalCorrection t;
   t.model = model;

@@ -41,7 +41,7 @@ struct CalibrationFile {
   CalibrationUnits units;
   double sample_rate = NAN;  // Hz, of a raw log
   double noise = NAN;        // one sample's noise in physical units
-  // A thermal model's calibration (calibrate --model paper9+Tk --out): the correction at each
+  // A thermal model's calibration (calibrate --model BASE+Tk --out): the correction at each
   // temperature; `correction` then holds the one at the range's middle (for messages and checks only).
   std::optional<ThermalCorrection> thermal;
 };

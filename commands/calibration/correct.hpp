@@ -1,5 +1,5 @@
 // `scalcal correct` as a library function: a calibration file written by `calibrate --out` applied
-// to raw data, physical = matrix (raw - offset), row by row; a thermal one (paper9+Tk) at each row's
+// to raw data, physical = matrix (raw - offset), row by row; a thermal one (BASE+Tk) at each row's
 // temperature (a column temp, temperature or t_c), held at its range's ends outside it as PX4 and
 // ArduPilot hold theirs (a warning counts those rows). A calibration that cannot be trusted is
 // refused (InputError naming the reason): a fit that did not converge, a matrix that is singular or

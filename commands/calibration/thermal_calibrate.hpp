@@ -1,4 +1,4 @@
-// `scalcal calibrate --measurements LOG --model paper9+Tk --magnitude M [--temperature T1..T2]`: a
+// `scalcal calibrate --measurements LOG --model BASE+Tk --magnitude M [--temperature T1..T2]`: a
 // thermal log (a raw log with a temperature column: temp, temperature or t_c, any case) calibrated
 // under a thermal model: still poses found as for any log, each with its mean temperature, then
 // numeric/thermal/thermal_calibration.hpp's fit. Each coefficient with its standard error, in tau's

@@ -1,4 +1,4 @@
-// `scalcal simulate --program THERMAL.csv --model paper9+Tk --temperature T1..T2 --log FILE [--truth FILE]`:
+// `scalcal simulate --program THERMAL.csv --model BASE+Tk --temperature T1..T2 --log FILE [--truth FILE]`:
 // a thermal rehearsal (numeric/thermal/thermal_rehearsal.hpp) as the CLI and the Python module write it:
 // the raw log with columns t,ix,iy,iz,temp and the truth in calibrate's thermal JSON keys.
 #pragma once

@@ -5,7 +5,7 @@
 // (AP_Compass_Backend::correct_field): OFS = -offset, M = the symmetric factor of C, DIA its
 // diagonal and ODI (M01, M02, M12); instances COMPASS_OFS, OFS2, OFS3; OFS -400 .. 400
 // (AP_Compass.cpp), DIA 0.2 .. 5 and |ODI| < 1 (CompassCalibrator::fit_acceptable). Gyroscope
-// (rad/s): gyro -= GYROFFS, offsets only. A thermal fit (paper9+Tk, k <= 3) adds the accelerometer's
+// (rad/s): gyro -= GYROFFS, offsets only. A thermal fit (BASE+Tk, k <= 3) adds the accelerometer's
 // INS_TCALn_ACC1..3 (10^-6 units, about a fixed 35 degC, no constant term, zero at INS_ACCn_CALTEMP:
 // AP_InertialSensor_tempcal.cpp, docs/thermal_export_sources.md).
 #include <algorithm>

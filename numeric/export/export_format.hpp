@@ -61,7 +61,7 @@ struct ExportInput {
   std::vector<std::pair<std::string, std::string>> kept;
   CalibrationFacts facts;  // for the c format
   std::string name;        // the c format's prefix (an identifier; "" : CAL)
-  // A thermal fit (paper9+Tk): correction is then the one at the range's middle; only formats that carry
+  // A thermal fit (BASE+Tk): correction is then the one at the range's middle; only formats that carry
   // temperature drift (ExportFormat::thermal) take it.
   std::optional<ThermalCorrection> thermal;
 };

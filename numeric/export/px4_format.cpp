@@ -3,7 +3,7 @@
 // dropped. Magnetometer (gauss): corrected = S (v - OFF) with S symmetric (Magnetometer::Correct):
 // S = the symmetric factor of C = Q S, diagonal SCALE, ODIAG (S01, S02, S12); Q is dropped.
 // Gyroscope (rad/s): OFF only. Four instances of each (CAL_ACC0 .. CAL_ACC3). Ranges from PX4's
-// parameter metadata: SCALE 0.1 .. 3.0. A thermal fit (paper9+Tk, k <= 3) adds the accelerometer's
+// parameter metadata: SCALE 0.1 .. 3.0. A thermal fit (BASE+Tk, k <= 3) adds the accelerometer's
 // TC_A{n} offset polynomial about TREF (TemperatureCompensation::calc_thermal_offsets_3D, subtracted before
 // CAL_ACC{n}_?OFF by Accelerometer::Correct; docs/thermal_export_sources.md).
 #include "numeric/export/formats.hpp"

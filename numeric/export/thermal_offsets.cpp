@@ -22,7 +22,8 @@ ThermalTarget thermal_in_target_units(const ExportInput& in, ExportOutput& out, 
     throw InputError(in.file, 0,
                      "its offsets are polynomials of degree " + std::to_string(th.model.degree) + " (" +
                          th.model.name() + "); " + name + " stores degree " + std::to_string(max_degree) +
-                         " at most: calibrate with paper9+T3 or paper9+bias:T3");
+                         " at most: calibrate with " + std::string(model_name(th.model.base)) + "+T3 or " +
+                         std::string(model_name(th.model.base)) + "+bias:T3");
   ExportInput at = in;
   at.correction = th.at(constant_at);
   ThermalTarget t;

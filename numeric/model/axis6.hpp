@@ -24,7 +24,8 @@ struct Axis6Model : MonomialModel<Axis6Model> {
   static constexpr std::array<Exponents, 6> exponents = {
       {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {2, 0, 0}, {0, 2, 0}, {0, 0, 2}}};
 
-  static constexpr bool auto_choice = true;  // --model auto may choose it
+  static constexpr bool auto_choice = true;   // --model auto may choose it
+  static constexpr bool thermal_base = true;  // axis6+Tk: bias and scale factor drift with temperature
   static constexpr std::string_view proof = "proofs/axis6_limits.md";
   static constexpr std::string_view six = "the six axis directions +-x, +-y, +-z, each N/6 times";
   static constexpr std::string_view only = "exactly N = 6k, by the six axis directions k times each (proven)";

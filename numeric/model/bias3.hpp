@@ -21,7 +21,8 @@ struct Bias3Model : MonomialModel<Bias3Model> {
                                                                      ParameterGroup::bias};
   static constexpr std::array<Exponents, 3> exponents = {{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
 
-  static constexpr bool auto_choice = true;  // --model auto may choose it
+  static constexpr bool auto_choice = true;   // --model auto may choose it
+  static constexpr bool thermal_base = true;  // bias3+Tk: the offsets drift (what PX4 and ArduPilot fit)
   static constexpr std::string_view proof = "proofs/bias3_limits.md";
   static constexpr std::string_view tight = "sum eta eta^T = (N/3) I (a unit-norm tight frame): every N >= 3 (proven)";
   static constexpr std::array<ModelLimit, 4> limits = {{

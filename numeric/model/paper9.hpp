@@ -14,7 +14,7 @@ struct Paper9Model {
   // Its limits come from the criteria and symbolic/limits.hpp, proven here:
   static constexpr std::string_view proof = "proofs/d_limit.md, proofs/aes_limits.md";
   // Capabilities (registry.hpp, model_supports): the criteria's exact limits and kernels, the region machinery,
-  // the MPFR polish and the thermal models are written for the paper's rows and its meter (eq. 2).
+  // the MPFR polish are written for the paper's rows; thermal models drift its meter (eq. 2), as axis6's and bias3's.
   static constexpr bool criteria_native = true;
   static constexpr bool region_limits = true;
   static constexpr bool polish_digits = true;

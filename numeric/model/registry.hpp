@@ -100,7 +100,8 @@ inline constexpr bool is_default_model(ModelKind m) { return m.index() == 0; }
 // What a model supports beyond the CalibrationModel concept: a static constexpr bool of that name on its type,
 // absent meaning no. criteria_native: the criteria's own kernels and exact sphere limits (symbolic/limits.hpp)
 // are its (the paper's rows); region_limits: limits and synthesis on a region; polish_digits: the MPFR polish
-// (optimize --digits); thermal_base: the base of a thermal model BASE+Tk (its meter drifts, numeric/thermal/);
+// (optimize --digits); thermal_base: a thermal model BASE+Tk is calibrated, rehearsed, applied and exported over
+// it (its meter drifts with temperature and must correct as a matrix and an offset, checked in numeric/thermal/);
 // auto_choice: one of the linear models `--model auto` chooses among, the richest the positions carry.
 enum class ModelCapability { criteria_native, region_limits, polish_digits, thermal_base, auto_choice };
 

@@ -17,8 +17,7 @@ namespace {
 Eigen::VectorXd residuals(const std::vector<ThermalPose>& poses, const ThermalFit& f, const Eigen::VectorXd& theta) {
   Eigen::VectorXd r(static_cast<Eigen::Index>(poses.size()));
   for (std::size_t i = 0; i < poses.size(); ++i) {
-    const Meter meter =
-        Meter::from_parameters(f.model.base_parameters_at(theta, f.range.tau(poses[i].celsius)), f.magnitude);
+    const Meter meter = f.model.meter_at(theta, f.range.tau(poses[i].celsius), f.magnitude);
     r(static_cast<Eigen::Index>(i)) = meter.compensate(poses[i].mean).norm() / f.magnitude - 1;
   }
   return r;
@@ -55,7 +54,8 @@ std::string identifiability(const std::vector<ThermalPose>& poses, const Thermal
 ThermalFit fit_thermal(const std::vector<ThermalPose>& poses, const ThermalModel& model, const TemperatureRange& range,
                        double magnitude) {
   if (!model_supports(model.base, ModelCapability::thermal_base))
-    throw std::invalid_argument("a thermal log is fitted under paper9+Tk or paper9+bias:Tk (got " + model.name() + ")");
+    throw std::invalid_argument("a thermal log is fitted under BASE+Tk or BASE+bias:Tk with BASE one of " +
+                                models_supporting(ModelCapability::thermal_base) + " (got " + model.name() + ")");
   ThermalFit f;
   f.model = model;
   f.range = range;

@@ -3,7 +3,27 @@
 
 #include <stdexcept>
 
+#include "numeric/calibration/model_calibration.hpp"
+
 namespace scalcal {
+namespace {
+
+// A thermal calibration is written, applied and exported as a matrix and an offset at each temperature: a model
+// may be a thermal base only if each of its parameters lies in a linear group of its meter.
+template <class Model>
+constexpr bool corrects_as_matrix_and_offset() {
+  for (ParameterGroup g : Model::parameter_groups)
+    if (!Model::meter::linear_group(g)) return false;
+  return true;
+}
+template <class... Models>
+constexpr bool thermal_bases_correct_linearly(TypeList<Models...>) {
+  return ((!model_supports<Models>(ModelCapability::thermal_base) || corrects_as_matrix_and_offset<Models>()) && ...);
+}
+static_assert(thermal_bases_correct_linearly(RegisteredModels{}),
+              "a model with thermal_base must correct as a matrix and an offset (its meter's linear groups only)");
+
+}  // namespace
 
 std::string ThermalModel::name() const {
   return std::string(model_name(base)) + (bias_only ? "+bias:T" : "+T") + std::to_string(degree);
@@ -59,6 +79,10 @@ Eigen::VectorXd ThermalModel::base_parameters_at(const Eigen::VectorXd& theta, d
     for (int r : d) X(r) += theta(at++) * power;
   }
   return X;
+}
+
+Meter ThermalModel::meter_at(const Eigen::VectorXd& theta, double tau, double magnitude) const {
+  return model_meter(base, base_parameters_at(theta, tau), magnitude).linear();
 }
 
 std::optional<ThermalModel> parse_thermal_model(const std::string& text) {

@@ -10,6 +10,7 @@
 
 #include <Eigen/Core>
 
+#include "numeric/model/meter.hpp"
 #include "numeric/model/registry.hpp"
 
 namespace scalcal {
@@ -32,6 +33,10 @@ struct ThermalModel {
   // The base model's parameters at a normalised temperature from coefficients theta (parameter_names()
   // order): X(tau) = X_0 + sum_j X_j tau^j for the drifting ones.
   Eigen::VectorXd base_parameters_at(const Eigen::VectorXd& theta, double tau) const;
+  // The base model's meter at tau, as eq. (2) (the base's parameters placed among its meter's, the others zero):
+  // what the fit compensates with, the rehearsal measures with and the correction applies. Bases with the
+  // thermal_base capability only, whose meters correct as a matrix and an offset.
+  Meter meter_at(const Eigen::VectorXd& theta, double tau, double magnitude) const;
 };
 
 // A thermal name when `text` is one ("BASE+Tk" or "BASE+bias:Tk" with a registered base); nullopt when

@@ -39,8 +39,8 @@ double thermal_rehearsal_samples(const ThermalRehearsalRequest& q) {
 
 ThermalRehearsal rehearse_thermal(const ThermalRehearsalRequest& q) {
   if (!model_supports(q.model.base, ModelCapability::thermal_base))
-    throw std::invalid_argument("a thermal rehearsal simulates paper9+Tk or paper9+bias:Tk (got " + q.model.name() +
-                                ")");
+    throw std::invalid_argument("a thermal rehearsal simulates BASE+Tk or BASE+bias:Tk with BASE one of " +
+                                models_supporting(ModelCapability::thermal_base) + " (got " + q.model.name() + ")");
   if (!(q.rate_hz >= 1e-3 && q.rate_hz <= 1e6)) throw std::invalid_argument("the rate must be within 1e-3..1e6 Hz");
   const bool ramp = q.ramp_c_per_min > 0;
   if (thermal_rehearsal_samples(q) > kMaxThermalRehearsalSamples)
@@ -49,13 +49,13 @@ ThermalRehearsal rehearse_thermal(const ThermalRehearsalRequest& q) {
   ThermalRehearsal r;
   GaussianSource gauss(q.seed);
   r.truth.resize(q.model.parameters());
-  for (Eigen::Index i = 0; i < r.truth.size(); ++i) r.truth(i) = (i < 9 ? q.size : q.drift) * gauss();
+  for (Eigen::Index i = 0; i < r.truth.size(); ++i)
+    r.truth(i) = (i < q.model.base_parameters() ? q.size : q.drift) * gauss();
   auto emit = [&](const Eigen::Vector3d& eta, double planned, int row) {
     const double celsius =
         ramp ? std::min(q.range.high, q.range.low + q.ramp_c_per_min * static_cast<double>(r.t.size()) / q.rate_hz / 60)
              : planned;
-    const Eigen::Matrix<double, 9, 1> X = q.model.base_parameters_at(r.truth, q.range.tau(celsius));
-    const Meter meter = Meter::from_parameters(X, q.magnitude);
+    const Meter meter = q.model.meter_at(r.truth, q.range.tau(celsius), q.magnitude);
     Eigen::Vector3d w = meter.measure(q.magnitude * eta);
     for (int c = 0; c < 3; ++c) w(c) += q.noise * q.magnitude * gauss();
     r.t.push_back(static_cast<double>(r.t.size()) / q.rate_hz);

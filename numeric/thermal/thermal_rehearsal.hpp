@@ -1,4 +1,4 @@
-// A thermal rehearsal (simulate --model paper9+Tk --temperature T1..T2 --log FILE): the raw log a meter
+// A thermal rehearsal (simulate --model BASE+Tk --temperature T1..T2 --log FILE): the raw log a meter
 // whose nine parameters drift as polynomials in temperature would write on a thermal program run in its
 // order, with the truth. The meter rests --dwell seconds at each row's position and temperature, and
 // moves between rows along the great circle (cosine profile, 45 degrees per second, at least one
