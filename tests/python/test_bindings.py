@@ -291,21 +291,23 @@ def test_stubs_state_what_the_functions_take():
     assert "= '0'" not in stubs
 
 
-def test_thermal_workflow_is_the_cli_s(tmp_path):
+@pytest.mark.parametrize("model, positions", [("paper9+bias:T3", "48"), ("bias3+T3", "24")])
+def test_thermal_workflow_is_the_cli_s(tmp_path, model, positions):
     # Issue 53 end to end in both front ends: the product program, its plan with soaks, a rehearsal, the thermal
-    # calibration, its correction at each row's temperature and the autopilots' thermal parameters.
+    # calibration, its correction at each row's temperature and the autopilots' thermal parameters; over the paper's
+    # meter and the offsets-only base.
     program = tmp_path / "thermal.csv"
-    cli("optimize", "--model", "paper9+bias:T3", "--temperature", "-20..60", "--criterion", "D", "--positions", "48",
+    cli("optimize", "--model", model, "--temperature", "-20..60", "--criterion", "D", "--positions", positions,
         "--seed", "1", "--out", str(program))
     same(scalcal.plan(program=str(program), bench="gimbal:x,y", soak=20),
          cli_json("plan", str(program), "--bench", "gimbal:x,y", "--soak", "20"))
     log = tmp_path / "oven.csv"
-    cli("simulate", "--program", str(program), "--model", "paper9+bias:T3", "--temperature", "-20..60", "--log", str(log),
+    cli("simulate", "--program", str(program), "--model", model, "--temperature", "-20..60", "--log", str(log),
         "--noise", "1e-3", "--size", "3e-3", "--seed", "7", "--rate", "50")
-    args = ("--measurements", str(log), "--model", "paper9+bias:T3", "--magnitude", "1", "--instrument", "accel",
+    args = ("--measurements", str(log), "--model", model, "--magnitude", "1", "--instrument", "accel",
             "--temperature", "-20..60")
     cal = cli_calibration(tmp_path, *args)
-    c = scalcal.calibrate(measurements=str(log), model="paper9+bias:T3", magnitude=1, instrument="accel",
+    c = scalcal.calibrate(measurements=str(log), model=model, magnitude=1, instrument="accel",
                           temperature="-20..60")
     assert plain(c)["parameters"] == cal["parameters"]
     cal_path = tmp_path / "cli_cal.json"
