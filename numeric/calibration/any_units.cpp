@@ -77,8 +77,9 @@ std::vector<PositionSamples> started_data(const std::string& file, const std::ve
   if (!corrects_linearly(slots))
     throw InputError(file, 0,
                      "the measured modulus is " + std::to_string(ratio) + words(" times {magnitude}: {model} ") + name +
-                         " calibrates data in the field's units only (its cubic term is relative to |I|); the linear "
-                         "models start from an ellipsoid fit in any units");
+                         " calibrates data in the field's units only (" +
+                         std::string(meter_units_bound(options.model)) +
+                         "); the linear models start from an ellipsoid fit in any units");
   const EllipsoidShape shape = has_meter_group(slots, ParameterGroup::nonorth) ? EllipsoidShape::general
                                : has_meter_group(slots, ParameterGroup::scale) ? EllipsoidShape::axis_aligned
                                                                                : EllipsoidShape::sphere;

@@ -40,6 +40,14 @@ bool corrects_linearly(const MeterSlots& slots) {
   return std::all_of(slots.begin(), slots.end(), [](const MeterSlot& s) { return s.linear; });
 }
 
+std::string_view meter_units_bound(ModelKind model) {
+  return visit_model(model, [](auto M) -> std::string_view {
+    using ModelMeter = typename decltype(M)::meter;
+    if constexpr (requires { ModelMeter::units_bound; }) return ModelMeter::units_bound;
+    return "its correction is not a matrix and an offset";
+  });
+}
+
 AnyMeter model_meter(ModelKind model, const Eigen::VectorXd& X, double magnitude) {
   return visit_model(model, [&](auto M) {
     using Model = decltype(M);

@@ -51,6 +51,9 @@ bool has_meter_group(const MeterSlots& slots, ParameterGroup g);
 // Whether the model's correction is physical = matrix (raw - offset): each of its parameters in a linear group of
 // its meter.
 bool corrects_linearly(const MeterSlots& slots);
+// Why a model that does not correct linearly calibrates data in the field's units only: its meter's `units_bound`
+// sentence ("its cubic term is relative to |I|"), or a general one when the meter states none.
+std::string_view meter_units_bound(ModelKind model);
 
 // The meter that the model's parameters X (estimator units, at the field's magnitude) stand for; its meter's
 // parameters outside the model are zero.

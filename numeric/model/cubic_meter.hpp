@@ -2,6 +2,7 @@
 // linear in the input), whose modulus term is c_i |I| eta_i^3; so at one magnitude c_i |I| is what is identified.
 #pragma once
 #include <array>
+#include <string_view>
 
 #include <Eigen/Core>
 
@@ -27,6 +28,8 @@ struct CubicMeter {
   // All groups but the cubic terms keep the correction physical = matrix (raw - offset); those make each axis'
   // output a quadratic in its input.
   static constexpr bool linear_group(ParameterGroup g) { return g != ParameterGroup::cubic; }
+  // Why a fit of those needs data in the field's units (calibrate's refusal of data in other units).
+  static constexpr std::string_view units_bound = "its cubic term is relative to |I|";
 
   Vec3 measure(const Vec3& I) const;
   // The I that would have produced `measured` (each axis' quadratic solved for its root near the linear one);
