@@ -261,9 +261,8 @@ CalibrateRequest calibrate_request(const Values& v) {
   }
   if (q.thermal) {
     if (!model_supports(q.thermal->base, ModelCapability::thermal_base))
-      throw UsageError(words("{model} ") + q.thermal->name() +
-                       ": a thermal log is fitted under BASE+Tk or BASE+bias:Tk with BASE one of " +
-                       models_supporting(ModelCapability::thermal_base));
+      throw UsageError(words("{model} ") + q.thermal->name() + ": a thermal log is fitted under " +
+                       calibrated_thermal_models());
     return q;
   }
   if (v.text("--model") != "auto") q.model = *parse_model(v.text("--model"));

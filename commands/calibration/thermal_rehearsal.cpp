@@ -23,8 +23,8 @@ std::optional<ThermalRehearsalRequest> thermal_rehearsal_request(const Values& v
     return std::nullopt;
   }
   if (!model_supports(model->base, ModelCapability::thermal_base))
-    throw UsageError("simulate: a thermal rehearsal simulates BASE+Tk or BASE+bias:Tk with BASE one of " +
-                     models_supporting(ModelCapability::thermal_base) + words(" (got {model} ") + model->name() + ")");
+    throw UsageError("simulate: a thermal rehearsal simulates " + calibrated_thermal_models() +
+                     words(" (got {model} ") + model->name() + ")");
   if (!v.given("--log"))
     throw UsageError(words("simulate: {model} ") + model->name() + words(" writes a thermal log: give {log FILE}"));
   if (!v.given("--temperature"))

@@ -54,8 +54,8 @@ std::string identifiability(const std::vector<ThermalPose>& poses, const Thermal
 ThermalFit fit_thermal(const std::vector<ThermalPose>& poses, const ThermalModel& model, const TemperatureRange& range,
                        double magnitude) {
   if (!model_supports(model.base, ModelCapability::thermal_base))
-    throw std::invalid_argument("a thermal log is fitted under BASE+Tk or BASE+bias:Tk with BASE one of " +
-                                models_supporting(ModelCapability::thermal_base) + " (got " + model.name() + ")");
+    throw std::invalid_argument("a thermal log is fitted under " + calibrated_thermal_models() + " (got " +
+                                model.name() + ")");
   ThermalFit f;
   f.model = model;
   f.range = range;

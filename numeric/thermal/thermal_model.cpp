@@ -81,6 +81,10 @@ Eigen::VectorXd ThermalModel::base_parameters_at(const Eigen::VectorXd& theta, d
   return X;
 }
 
+std::string calibrated_thermal_models() {
+  return "BASE+Tk or BASE+bias:Tk with BASE one of " + models_supporting(ModelCapability::thermal_base);
+}
+
 Meter ThermalModel::meter_at(const Eigen::VectorXd& theta, double tau, double magnitude) const {
   return model_meter(base, base_parameters_at(theta, tau), magnitude).linear();
 }

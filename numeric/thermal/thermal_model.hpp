@@ -43,4 +43,8 @@ struct ThermalModel {
 // it has no '+'; throws std::invalid_argument with the reason for a malformed one.
 std::optional<ThermalModel> parse_thermal_model(const std::string& text);
 
+// "BASE+Tk or BASE+bias:Tk with BASE one of paper9, axis6, bias3": the thermal models a log is fitted and rehearsed
+// under (the bases with the thermal_base capability), for refusals.
+std::string calibrated_thermal_models();
+
 }  // namespace scalcal

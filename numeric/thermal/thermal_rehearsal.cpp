@@ -39,8 +39,8 @@ double thermal_rehearsal_samples(const ThermalRehearsalRequest& q) {
 
 ThermalRehearsal rehearse_thermal(const ThermalRehearsalRequest& q) {
   if (!model_supports(q.model.base, ModelCapability::thermal_base))
-    throw std::invalid_argument("a thermal rehearsal simulates BASE+Tk or BASE+bias:Tk with BASE one of " +
-                                models_supporting(ModelCapability::thermal_base) + " (got " + q.model.name() + ")");
+    throw std::invalid_argument("a thermal rehearsal simulates " + calibrated_thermal_models() + " (got " +
+                                q.model.name() + ")");
   if (!(q.rate_hz >= 1e-3 && q.rate_hz <= 1e6)) throw std::invalid_argument("the rate must be within 1e-3..1e6 Hz");
   const bool ramp = q.ramp_c_per_min > 0;
   if (thermal_rehearsal_samples(q) > kMaxThermalRehearsalSamples)
